@@ -1,0 +1,20 @@
+import type {
+  Stroke, StrokeOptions, StrokeResult, ParseSvgOptions, SvgImport, Classification, ClassifyOptions,
+} from './patternsynth.js';
+
+export interface CallOptions {
+  signal?: AbortSignal;
+  /** Called with the fraction done, in [0, 1]. */
+  onProgress?: (fraction: number) => void;
+}
+
+/** Runs patternsynth in a module Web Worker; every call takes an AbortSignal. */
+export class PatternSynthClient {
+  constructor(workerUrl?: URL | string);
+  parseSvg(svg: string, opts?: ParseSvgOptions, options?: CallOptions): Promise<Stroke[]>;
+  parseSvgReport(svg: string, opts?: ParseSvgOptions, options?: CallOptions): Promise<SvgImport>;
+  classifyStrokes(strokes: Stroke[], opts?: ClassifyOptions, options?: CallOptions): Promise<Classification>;
+  synthesizeStrokes(strokes: Stroke[], opts: StrokeOptions, options?: CallOptions): Promise<StrokeResult>;
+  version(): Promise<string>;
+  terminate(): void;
+}

@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Builds the npm package into pkg/ (and a copy for the playground in www/pkg/).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/setup.sh
+
+cargo build --release --target wasm32-unknown-unknown --lib
+rm -rf pkg && mkdir -p pkg
+wasm-bindgen --target web --out-dir pkg --out-name patternsynth \
+  target/wasm32-unknown-unknown/release/patternsynth.wasm
+# npm's binaryen (Debian's wasm-opt 108 emits modules that fail to load).
+node_modules/.bin/wasm-opt -Oz --enable-bulk-memory --enable-nontrapping-float-to-int --enable-sign-ext \
+  --enable-mutable-globals --enable-reference-types --enable-multivalue \
+  pkg/patternsynth_bg.wasm -o pkg/patternsynth_bg.wasm
+cp js/pkg/* pkg/
+rm -f pkg/.gitignore
+rm -rf www/pkg && cp -r pkg www/pkg
+raw=$(stat -c %s pkg/patternsynth_bg.wasm)
+gz=$(gzip -9 -c pkg/patternsynth_bg.wasm | wc -c)
+echo "pkg/patternsynth_bg.wasm: $raw bytes raw, $gz bytes gzip"

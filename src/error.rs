@@ -1,0 +1,39 @@
+//! The one error type every engine returns. Messages are written for the person using the
+//! page: they say what was wrong and what to do, never a Rust type name.
+
+use std::fmt;
+
+#[derive(Debug, Clone, PartialEq)]
+pub enum Error {
+    /// The caller's input cannot be used as given (empty, NaN, out of range...).
+    InvalidInput(String),
+    /// The request would need more memory or time than the documented caps allow.
+    TooLarge(String),
+    /// The SVG could not be read.
+    Svg(String),
+    /// An image could not be decoded or encoded.
+    Image(String),
+    /// The progress callback asked to stop.
+    Cancelled,
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Error::InvalidInput(m) => write!(f, "{m}"),
+            Error::TooLarge(m) => write!(f, "{m}"),
+            Error::Svg(m) => write!(f, "Could not read the SVG: {m}"),
+            Error::Image(m) => write!(f, "Could not read the image: {m}"),
+            Error::Cancelled => write!(f, "Cancelled"),
+        }
+    }
+}
+
+impl std::error::Error for Error {}
+
+pub type Result<T> = std::result::Result<T, Error>;
+
+/// Shorthand for an `InvalidInput` error.
+pub(crate) fn invalid<T>(msg: impl Into<String>) -> Result<T> {
+    Err(Error::InvalidInput(msg.into()))
+}

@@ -1,0 +1,214 @@
+//! Greedy classification of strokes into classes of similar ones (SPEC 1.1), and an
+//! automatic proposal of the three tolerances from the data (beyond the paper).
+
+use super::color::paint_distance;
+use super::frechet::Shape;
+use super::stroke::Stroke;
+use serde::{Deserialize, Serialize};
+
+/// The three tolerances of `Match`: Fréchet distance of the centred paths (e1), stroke
+/// width difference (e2) and Euclidean RGB distance of stroke and of fill colour (e3).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "camelCase")]
+pub struct Tolerances {
+    pub path: f64,
+    pub width: f64,
+    pub color: f64,
+}
+
+/// Strokes prepared for comparison: shapes resampled once, at a common spacing.
+pub struct Prepared<'a> {
+    strokes: &'a [Stroke],
+    shapes: Vec<Shape>,
+}
+
+impl<'a> Prepared<'a> {
+    /// `spacing` is the arc-length step of the resampled shapes; it bounds the error of
+    /// the discrete distance, so keep it well under the path tolerance.
+    pub fn new(strokes: &'a [Stroke], spacing: f64) -> Self {
+        let shapes = strokes.iter().map(|s| Shape::new(&s.points, spacing)).collect();
+        Prepared { strokes, shapes }
+    }
+
+    /// `Match(Si, Sj)` of the spec, cheapest tests first.
+    pub fn matches(&self, i: usize, j: usize, tol: &Tolerances) -> bool {
+        let (a, b) = (&self.strokes[i], &self.strokes[j]);
+        (a.width - b.width).abs() < tol.width
+            && paint_distance(a.stroke, b.stroke) < tol.color
+            && paint_distance(a.fill, b.fill) < tol.color
+            && self.shapes[i].within(&self.shapes[j], tol.path)
+    }
+}
+
+/// The median bounding-box diagonal: the scale against which shape distances are read.
+pub fn typical_size(strokes: &[Stroke]) -> f64 {
+    let mut d: Vec<f64> = strokes
+        .iter()
+        .map(|s| {
+            let b = s.bounds();
+            b.width().hypot(b.height())
+        })
+        .collect();
+    median(&mut d).max(1e-6)
+}
+
+/// Resampling step for classification with path tolerance `path_tol`.
+pub fn sample_spacing(strokes: &[Stroke], path_tol: f64) -> f64 {
+    let size = typical_size(strokes);
+    (path_tol * 0.25).min(size / 32.0).max(size * 1e-4)
+}
+
+pub(crate) fn median(v: &mut [f64]) -> f64 {
+    if v.is_empty() {
+        return 0.0;
+    }
+    v.sort_by(|a, b| a.total_cmp(b));
+    v[v.len() / 2]
+}
+
+/// Greedy clustering: pop the first stroke left into a new class, then sweep the rest,
+/// adding any stroke that matches any member, until a sweep adds nothing. Each pair is
+/// compared at most once (a stroke remembers how many members it was checked against).
+/// Returns the class of each stroke, numbered in order of first appearance.
+pub fn classify(strokes: &[Stroke], tol: &Tolerances) -> Vec<u32> {
+    let prepared = Prepared::new(strokes, sample_spacing(strokes, tol.path));
+    let mut class = vec![u32::MAX; strokes.len()];
+    let mut left: Vec<usize> = (0..strokes.len()).collect();
+    let mut checked = vec![0usize; strokes.len()];
+    let mut next = 0u32;
+    while !left.is_empty() {
+        let seed = left.remove(0);
+        class[seed] = next;
+        let mut members = vec![seed];
+        loop {
+            let before = members.len();
+            left.retain(|&s| {
+                let hit = members[checked[s]..].iter().any(|&m| prepared.matches(s, m, tol));
+                checked[s] = members.len();
+                if hit {
+                    class[s] = next;
+                    members.push(s);
+                }
+                !hit
+            });
+            if members.len() == before {
+                break;
+            }
+        }
+        left.iter().for_each(|&s| checked[s] = 0);
+        next += 1;
+    }
+    class
+}
+
+/// At most this many strokes are sampled to propose tolerances (pairs grow quadratically).
+const PROPOSAL_SAMPLE: usize = 120;
+
+/// Proposes tolerances from the data: for each attribute, the sorted pairwise
+/// distances are split at their largest relative gap, if that gap is clear; otherwise
+/// the tolerance admits all of them (one class by that attribute).
+pub fn propose_tolerances(strokes: &[Stroke]) -> Tolerances {
+    let step = strokes.len().div_ceil(PROPOSAL_SAMPLE).max(1);
+    let sample: Vec<Stroke> = strokes.iter().step_by(step).cloned().collect();
+    let size = typical_size(&sample);
+    let prepared = Prepared::new(&sample, size / 32.0);
+    let (mut paths, mut widths, mut colors) = (Vec::new(), Vec::new(), Vec::new());
+    for i in 0..sample.len() {
+        for j in i + 1..sample.len() {
+            let (a, b) = (&sample[i], &sample[j]);
+            paths.push(prepared.shapes[i].distance(&prepared.shapes[j]));
+            widths.push((a.width - b.width).abs());
+            for d in [paint_distance(a.stroke, b.stroke), paint_distance(a.fill, b.fill)] {
+                if d.is_finite() {
+                    colors.push(d);
+                }
+            }
+        }
+    }
+    let mut w: Vec<f64> = sample.iter().map(|s| s.width).collect();
+    let typical_width = median(&mut w).max(0.5);
+    Tolerances {
+        path: split_at_gap(paths, size),
+        width: split_at_gap(widths, typical_width),
+        color: split_at_gap(colors, 100.0),
+    }
+}
+
+/// The threshold between "same" and "different" in a set of distances measured on
+/// the scale `unit`: the geometric middle of the largest ratio gap, when that gap is at
+/// least 2.5x and its upper side is at least a tenth of `unit`.
+fn split_at_gap(mut d: Vec<f64>, unit: f64) -> f64 {
+    d.retain(|v| v.is_finite());
+    d.sort_by(|a, b| a.total_cmp(b));
+    let floor = 0.02 * unit;
+    let mut best: Option<(f64, f64)> = None;
+    let mut best_ratio = 2.5;
+    for w in d.windows(2) {
+        let (a, b) = (w[0] + floor, w[1] + floor);
+        if w[1] >= 0.1 * unit && b / a > best_ratio {
+            best_ratio = b / a;
+            best = Some((w[0], w[1]));
+        }
+    }
+    match best {
+        Some((lo, hi)) => ((lo + floor) * (hi + floor)).sqrt() - floor,
+        None => d.last().copied().unwrap_or(0.0) * 1.25 + 0.1 * unit,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::color::Rgb;
+    use super::*;
+
+    fn seg(x: f64, y: f64, dx: f64, dy: f64, w: f64, c: [u8; 3]) -> Stroke {
+        Stroke::new(vec![[x, y], [x + dx, y + dy]], w, Some(Rgb(c)))
+    }
+
+    #[test]
+    fn separates_by_shape_width_and_colour() {
+        let strokes = vec![
+            seg(0.0, 0.0, 10.0, 0.0, 2.0, [0, 0, 0]),
+            seg(20.0, 0.0, 0.0, 10.0, 2.0, [0, 0, 0]),   // rotated: other class
+            seg(40.0, 0.0, 10.2, 0.1, 2.0, [0, 0, 0]),   // same as 0
+            seg(60.0, 0.0, 10.0, 0.0, 6.0, [0, 0, 0]),   // wider
+            seg(80.0, 0.0, 10.0, 0.0, 2.0, [250, 0, 0]), // red
+            seg(0.0, 30.0, 0.1, 9.9, 2.0, [0, 0, 0]),    // same as 1
+        ];
+        let tol = Tolerances { path: 1.0, width: 1.0, color: 30.0 };
+        assert_eq!(classify(&strokes, &tol), vec![0, 1, 0, 2, 3, 1]);
+    }
+
+    #[test]
+    fn chains_join_one_class() {
+        // Each neighbour is within tolerance of the previous one: greedy clustering
+        // adds by "matches any member", so the chain ends up in one class.
+        let strokes: Vec<Stroke> =
+            (0..5).map(|i| seg(i as f64 * 30.0, 0.0, 10.0 + i as f64 * 0.8, 0.0, 1.0, [0; 3])).collect();
+        let tol = Tolerances { path: 0.5, width: 1.0, color: 1.0 };
+        assert_eq!(classify(&strokes, &tol), vec![0; 5]);
+    }
+
+    #[test]
+    fn proposal_separates_clear_groups() {
+        let mut strokes = Vec::new();
+        for i in 0..12 {
+            let j = (i % 3) as f64 * 0.1;
+            strokes.push(seg(i as f64 * 20.0, 0.0, 10.0 + j, j, 1.0, [0, 0, 0]));
+            strokes.push(seg(i as f64 * 20.0, 40.0, j, 10.0 + j, 1.0, [0, 0, 0]));
+            strokes.push(seg(i as f64 * 20.0, 80.0, 10.0 + j, j, 1.0, [200, 30, 30]));
+        }
+        let tol = propose_tolerances(&strokes);
+        let classes = classify(&strokes, &tol);
+        let count = *classes.iter().max().unwrap() + 1;
+        assert_eq!(count, 3, "tolerances {tol:?}");
+        assert!(tol.path > 0.3 && tol.path < 7.0, "{tol:?}");
+    }
+
+    #[test]
+    fn proposal_keeps_identical_strokes_together() {
+        let strokes: Vec<Stroke> = (0..10).map(|i| seg(i as f64 * 20.0, 0.0, 10.0, 0.0, 1.0, [0; 3])).collect();
+        let tol = propose_tolerances(&strokes);
+        assert!(classify(&strokes, &tol).iter().all(|&c| c == 0), "{tol:?}");
+    }
+}

@@ -1,0 +1,213 @@
+//! Discrete Fréchet distance between stroke shapes (SPEC 1.1).
+//!
+//! A shape is a stroke's path translated so that its reference point (bounding-box
+//! centre) is the origin, then resampled by arc length to a common spacing. Translation
+//! is thus ignored; rotation and scale are not. Drawing direction is ignored too
+//! (a line drawn right-to-left is the same line), by taking the smaller of the two
+//! directions. The discrete distance over-estimates the continuous one by at most the
+//! sample spacing, which is chosen small against the tolerances in use.
+
+use kurbo::{Point, Vec2};
+
+/// A stroke's path centred on its reference point and resampled.
+#[derive(Clone, Debug)]
+pub struct Shape {
+    pub points: Vec<Point>,
+    /// Half the bounding-box extents: a lower bound on the distance comes from them.
+    pub half_extent: Vec2,
+}
+
+/// At most this many samples per shape: keeps one comparison at a few thousand steps.
+pub const MAX_SAMPLES: usize = 64;
+
+impl Shape {
+    /// Centres `points` on their bounding-box centre and resamples every `spacing`
+    /// of arc length (coarser for long paths, so at most `MAX_SAMPLES`).
+    pub fn new(points: &[[f64; 2]], spacing: f64) -> Shape {
+        let pts: Vec<Point> = points.iter().map(|&[x, y]| Point::new(x, y)).collect();
+        let (lo, hi) =
+            pts.iter().fold((Point::new(f64::MAX, f64::MAX), Point::new(f64::MIN, f64::MIN)), |(lo, hi), p| {
+                (Point::new(lo.x.min(p.x), lo.y.min(p.y)), Point::new(hi.x.max(p.x), hi.y.max(p.y)))
+            });
+        let centre = lo.midpoint(hi);
+        let rel: Vec<Point> = pts.iter().map(|p| (*p - centre).to_point()).collect();
+        Shape { points: resample(&rel, spacing), half_extent: (hi - lo) * 0.5 }
+    }
+
+    /// A lower bound on the Fréchet distance: the extreme points in each direction must
+    /// be matched within it, and both shapes are centred on their bounding boxes.
+    pub fn extent_bound(&self, other: &Shape) -> f64 {
+        let d = self.half_extent - other.half_extent;
+        d.x.abs().max(d.y.abs())
+    }
+
+    /// Whether the discrete Fréchet distance to `other` is below `eps` (either direction).
+    pub fn within(&self, other: &Shape, eps: f64) -> bool {
+        if self.extent_bound(other) >= eps {
+            return false;
+        }
+        decide(&self.points, &other.points, eps, false) || decide(&self.points, &other.points, eps, true)
+    }
+
+    /// The discrete Fréchet distance (smaller of the two directions).
+    pub fn distance(&self, other: &Shape) -> f64 {
+        value(&self.points, &other.points, false).min(value(&self.points, &other.points, true))
+    }
+}
+
+/// Resamples a polyline at equal arc-length steps, keeping both ends.
+fn resample(pts: &[Point], spacing: f64) -> Vec<Point> {
+    if pts.len() < 2 {
+        return pts.to_vec();
+    }
+    let len: f64 = pts.windows(2).map(|w| w[0].distance(w[1])).sum();
+    if len <= 0.0 {
+        return vec![pts[0]];
+    }
+    let n = ((len / spacing.max(1e-12)).ceil() as usize).clamp(1, MAX_SAMPLES - 1);
+    let step = len / n as f64;
+    let mut out = Vec::with_capacity(n + 1);
+    out.push(pts[0]);
+    let (mut seg, mut seg_start, mut next) = (0usize, 0.0f64, step);
+    while out.len() < n {
+        let seg_len = pts[seg].distance(pts[seg + 1]);
+        if seg_start + seg_len >= next {
+            let t = if seg_len > 0.0 { (next - seg_start) / seg_len } else { 0.0 };
+            out.push(pts[seg].lerp(pts[seg + 1], t));
+            next += step;
+        } else {
+            seg_start += seg_len;
+            seg += 1;
+            if seg + 1 >= pts.len() {
+                break;
+            }
+        }
+    }
+    out.push(pts[pts.len() - 1]);
+    out
+}
+
+#[inline]
+fn at(q: &[Point], j: usize, reversed: bool) -> Point {
+    if reversed {
+        q[q.len() - 1 - j]
+    } else {
+        q[j]
+    }
+}
+
+/// Decision form: is there a coupling with every pair closer than `eps`? Row by row
+/// dynamic programming that stops as soon as a row has no reachable cell.
+fn decide(p: &[Point], q: &[Point], eps: f64, reversed: bool) -> bool {
+    let (n, m) = (p.len(), q.len());
+    if n == 0 || m == 0 {
+        return n == m;
+    }
+    let e2 = eps * eps;
+    let close = |i: usize, j: usize| (p[i] - at(q, j, reversed)).hypot2() < e2;
+    if !close(0, 0) || !close(n - 1, m - 1) {
+        return false;
+    }
+    let mut prev = vec![false; m];
+    let mut cur = vec![false; m];
+    for i in 0..n {
+        let mut any = false;
+        for j in 0..m {
+            let reach = if i == 0 && j == 0 {
+                true
+            } else {
+                (i > 0 && prev[j]) || (j > 0 && cur[j - 1]) || (i > 0 && j > 0 && prev[j - 1])
+            };
+            cur[j] = reach && close(i, j);
+            any |= cur[j];
+        }
+        if !any {
+            return false;
+        }
+        std::mem::swap(&mut prev, &mut cur);
+    }
+    prev[m - 1]
+}
+
+/// The discrete Fréchet distance by the classic O(nm) recurrence.
+fn value(p: &[Point], q: &[Point], reversed: bool) -> f64 {
+    let (n, m) = (p.len(), q.len());
+    if n == 0 || m == 0 {
+        return if n == m { 0.0 } else { f64::INFINITY };
+    }
+    let mut prev = vec![0.0f64; m];
+    let mut cur = vec![0.0f64; m];
+    for (i, pi) in p.iter().enumerate() {
+        for j in 0..m {
+            let d = pi.distance(at(q, j, reversed));
+            let best = match (i, j) {
+                (0, 0) => 0.0,
+                (0, _) => cur[j - 1],
+                (_, 0) => prev[0],
+                _ => prev[j].min(cur[j - 1]).min(prev[j - 1]),
+            };
+            cur[j] = d.max(best);
+        }
+        std::mem::swap(&mut prev, &mut cur);
+    }
+    prev[m - 1]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn line(x0: f64, y0: f64, x1: f64, y1: f64) -> Vec<[f64; 2]> {
+        vec![[x0, y0], [x1, y1]]
+    }
+
+    #[test]
+    fn translation_is_ignored() {
+        let a = Shape::new(&line(0.0, 0.0, 10.0, 0.0), 0.5);
+        let b = Shape::new(&line(100.0, 50.0, 110.0, 50.0), 0.5);
+        assert!(a.distance(&b) < 1e-9);
+        assert!(a.within(&b, 0.1));
+    }
+
+    #[test]
+    fn rotation_and_scale_are_not() {
+        let a = Shape::new(&line(0.0, 0.0, 10.0, 0.0), 0.5);
+        let rotated = Shape::new(&line(0.0, 0.0, 0.0, 10.0), 0.5);
+        let longer = Shape::new(&line(0.0, 0.0, 20.0, 0.0), 0.5);
+        assert!((a.distance(&rotated) - 50f64.sqrt()).abs() < 1e-6);
+        assert!((a.distance(&longer) - 5.0).abs() < 1e-6);
+        assert!(!a.within(&rotated, 7.0));
+        assert!(a.within(&rotated, 7.1));
+    }
+
+    #[test]
+    fn direction_is_ignored() {
+        let a = Shape::new(&[[0.0, 0.0], [5.0, 3.0], [10.0, 0.0]], 0.5);
+        let b = Shape::new(&[[10.0, 0.0], [5.0, 3.0], [0.0, 0.0]], 0.5);
+        assert!(a.distance(&b) < 1e-9);
+    }
+
+    #[test]
+    fn decision_agrees_with_value() {
+        let a = Shape::new(&[[0.0, 0.0], [3.0, 4.0], [6.0, 0.0], [9.0, 4.0]], 0.3);
+        let b = Shape::new(&[[0.0, 1.0], [3.0, 3.0], [6.0, 1.5], [9.0, 5.0]], 0.3);
+        let d = a.distance(&b);
+        assert!(d > 0.5);
+        assert!(a.within(&b, d + 1e-6));
+        assert!(!a.within(&b, d - 1e-6));
+    }
+
+    #[test]
+    fn dot_against_path() {
+        let dot = Shape::new(&[[5.0, 5.0]], 0.5);
+        let seg = Shape::new(&line(0.0, 0.0, 4.0, 0.0), 0.5);
+        assert!((dot.distance(&seg) - 2.0).abs() < 1e-9);
+        assert_eq!(dot.points.len(), 1);
+    }
+
+    #[test]
+    fn resampling_caps_samples() {
+        let long = Shape::new(&line(0.0, 0.0, 1e6, 0.0), 0.1);
+        assert!(long.points.len() <= MAX_SAMPLES);
+    }
+}

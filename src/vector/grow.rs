@@ -1,0 +1,486 @@
+//! Reference/target growth (SPEC 1.2-1.3): the heart of the vector engine.
+//!
+//! The reference pattern is a set of point elements (class, position). The target starts
+//! as one copy of the reference at the centre of the output area and grows outward: at
+//! each growing point `g`, every same-class reference element `r` proposes the
+//! translation `t = g - r`; under `t` the reference is paired with the target, `t` is
+//! refined by least squares (the mean pair offset), and the best-supported candidate that
+//! adds something is stamped.
+//!
+//! Two departures from a literal reading keep the cost near-linear in the number of
+//! output elements:
+//! - a candidate is judged on a *window* of the reference (its neighbours within a
+//!   few spacings of `r`), found through precomputed neighbour lists and a uniform grid
+//!   over the target, and only that window is stamped;
+//! - growth runs along the frontier: a target element whose source is interior to the
+//!   reference and whose reference neighbourhood is already present is passed over
+//!   without evaluating candidates (it would add nothing).
+
+use super::classify::median;
+use super::spatial::Grid;
+use crate::error::{invalid, Error, Result};
+use crate::progress::Throttle;
+use kurbo::{Point, Rect, Vec2};
+use std::cmp::Reverse;
+use std::collections::BinaryHeap;
+
+/// A point element of the reference: its class and reference point.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Element {
+    pub pos: Point,
+    pub class: u32,
+}
+
+/// An element of the grown target: where it is and which reference element it copies.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Placed {
+    pub pos: Point,
+    pub class: u32,
+    pub source: u32,
+}
+
+#[derive(Clone, Debug)]
+pub struct GrowOptions {
+    pub width: f64,
+    pub height: f64,
+    /// A candidate is eligible when its pair count is at least this fraction of the
+    /// largest pair count at the growing point (SPEC 1.3 Choice: 0.6).
+    pub support: f64,
+    /// Pairing radius as a fraction of the median same-class nearest-neighbour distance.
+    pub pair_radius: f64,
+    /// Refuse outputs estimated to hold more elements than this.
+    pub max_elements: usize,
+    /// Pass over growing points whose neighbourhood is already full.
+    pub frontier_first: bool,
+}
+
+impl Default for GrowOptions {
+    fn default() -> Self {
+        GrowOptions {
+            width: 1000.0,
+            height: 1000.0,
+            support: 0.6,
+            pair_radius: 0.5,
+            max_elements: 500_000,
+            frontier_first: true,
+        }
+    }
+}
+
+/// Counters that tell how growth went (reported to the page and the benchmark).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct GrowStats {
+    pub growing_points: usize,
+    pub skipped_full: usize,
+    pub passed_over: usize,
+    pub candidates: usize,
+}
+
+/// Neighbours of a reference element within some radius: index and offset.
+type Neighbourhood = Vec<(u32, Vec2)>;
+
+/// Everything about the reference that growth reads, computed once.
+struct Reference<'a> {
+    elems: &'a [Element],
+    by_class: Vec<Vec<u32>>,
+    /// Pairing radius per class.
+    pair_radius: Vec<f64>,
+    /// Radius within which an element of another class blocks stamping.
+    cross_radius: f64,
+    /// Window neighbours of each element (itself included), nearest first.
+    window: Vec<Neighbourhood>,
+    /// Near neighbours used to decide whether a target element's neighbourhood is full.
+    near: Vec<Neighbourhood>,
+    /// Whether an element's near neighbourhood is complete in the reference itself.
+    interior: Vec<bool>,
+    /// Median distance between neighbouring elements (any class).
+    spacing: f64,
+}
+
+fn nearest_distances(elems: &[Element], same_class: bool, skip_coincident: bool, grid: &Grid, scale: f64) -> Vec<f64> {
+    let eps = scale * 1e-9;
+    elems
+        .iter()
+        .enumerate()
+        .map(|(i, e)| {
+            let mut radius = scale;
+            loop {
+                let mut best = f64::INFINITY;
+                grid.for_each_near(e.pos, radius, |j| {
+                    let o = &elems[j as usize];
+                    if j as usize == i || (same_class && o.class != e.class) {
+                        return;
+                    }
+                    let d = o.pos.distance(e.pos);
+                    if (!skip_coincident || d > eps) && d < best {
+                        best = d;
+                    }
+                });
+                if best <= radius || radius > scale * 1e6 {
+                    return best;
+                }
+                radius *= 4.0;
+            }
+        })
+        .collect()
+}
+
+impl<'a> Reference<'a> {
+    fn new(elems: &'a [Element]) -> Result<Self> {
+        let n = elems.len();
+        if n < 2 {
+            return invalid("Draw at least two strokes: a pattern needs a spacing to repeat.");
+        }
+        let bounds = elems.iter().fold(Rect::from_points(elems[0].pos, elems[0].pos), |r, e| r.union_pt(e.pos));
+        let extent = bounds.width().max(bounds.height());
+        if extent <= 0.0 {
+            return invalid("All strokes are centred on the same point: there is no spacing to repeat.");
+        }
+        // A first grid for neighbour searches in the reference.
+        let rough = extent / (n as f64).sqrt().max(1.0);
+        let mut grid = Grid::new(bounds, rough, 4 * n + 16);
+        for (i, e) in elems.iter().enumerate() {
+            grid.insert(i as u32, e.pos);
+        }
+        let mut any = nearest_distances(elems, false, true, &grid, rough);
+        let spacing = median(&mut any);
+        if !spacing.is_finite() || spacing <= 0.0 {
+            return invalid("All strokes are centred on the same point: there is no spacing to repeat.");
+        }
+        let mut with_coincident = nearest_distances(elems, false, false, &grid, rough);
+        let cross_radius = 0.5 * median(&mut with_coincident);
+
+        let classes = elems.iter().map(|e| e.class as usize + 1).max().unwrap_or(0);
+        let mut by_class = vec![Vec::new(); classes];
+        for (i, e) in elems.iter().enumerate() {
+            by_class[e.class as usize].push(i as u32);
+        }
+        let same = nearest_distances(elems, true, true, &grid, rough);
+        let pair_radius = (0..classes)
+            .map(|c| {
+                let mut d: Vec<f64> = by_class[c].iter().map(|&i| same[i as usize]).filter(|d| d.is_finite()).collect();
+                let m = median(&mut d);
+                0.5 * if m > 0.0 { m } else { spacing }
+            })
+            .collect();
+
+        let k_window = (n - 1).min(48);
+        let k_near = (n - 1).min(8);
+        let kth = |k: usize| {
+            let mut radius = spacing * 2.0;
+            let mut d: Vec<f64> = elems
+                .iter()
+                .enumerate()
+                .map(|(i, e)| loop {
+                    let mut ds = Vec::new();
+                    grid.for_each_near(e.pos, radius, |j| {
+                        if j as usize != i {
+                            ds.push(elems[j as usize].pos.distance(e.pos));
+                        }
+                    });
+                    ds.retain(|&x| x <= radius);
+                    if ds.len() >= k || radius > extent * 4.0 {
+                        ds.sort_by(|a, b| a.total_cmp(b));
+                        return ds.get(k - 1).copied().unwrap_or(radius);
+                    }
+                    radius *= 2.0;
+                })
+                .collect();
+            median(&mut d)
+        };
+        let window_radius = (3.0 * spacing).max(kth(k_window)) * 1.05;
+        let near_radius = kth(k_near) * 1.15;
+        let neighbourhood = |radius: f64| -> Vec<Neighbourhood> {
+            elems
+                .iter()
+                .map(|e| {
+                    let mut nb = Vec::new();
+                    grid.for_each_near(e.pos, radius, |j| {
+                        let off = elems[j as usize].pos - e.pos;
+                        if off.hypot() <= radius {
+                            nb.push((j, off));
+                        }
+                    });
+                    nb.sort_by(|a, b| a.1.hypot2().total_cmp(&b.1.hypot2()).then(a.0.cmp(&b.0)));
+                    nb
+                })
+                .collect()
+        };
+        let window = neighbourhood(window_radius);
+        let near = neighbourhood(near_radius);
+        let mut interior = vec![false; n];
+        for c in &by_class {
+            let full = c.iter().map(|&i| near[i as usize].len()).max().unwrap_or(0);
+            for &i in c {
+                interior[i as usize] = near[i as usize].len() >= full;
+            }
+        }
+        Ok(Reference { elems, by_class, pair_radius, cross_radius, window, near, interior, spacing })
+    }
+
+    fn density(&self) -> f64 {
+        let b =
+            self.elems.iter().fold(Rect::from_points(self.elems[0].pos, self.elems[0].pos), |r, e| r.union_pt(e.pos));
+        let area = (b.width() + self.spacing) * (b.height() + self.spacing);
+        self.elems.len() as f64 / area.max(1e-12)
+    }
+}
+
+/// One evaluated candidate translation.
+#[derive(Clone, Copy, Debug)]
+struct Candidate {
+    source: u32,
+    delta: Vec2,
+    pairs: usize,
+    error: f64,
+    adds: usize,
+}
+
+/// The growing target: its elements, a grid over them, and scratch buffers.
+struct Target<'r, 'a> {
+    reference: &'r Reference<'a>,
+    area: Rect,
+    placed: Vec<Placed>,
+    grid: Grid,
+    used: Vec<u32>,
+    stamp: u32,
+    pairs: Vec<(u32, u32)>,
+    previous: Vec<(u32, u32)>,
+}
+
+const MAX_REFINEMENTS: usize = 4;
+
+impl<'r, 'a> Target<'r, 'a> {
+    fn inside(&self, p: Point) -> bool {
+        p.x >= self.area.x0 && p.x <= self.area.x1 && p.y >= self.area.y0 && p.y <= self.area.y1
+    }
+
+    fn add(&mut self, pos: Point, source: u32) {
+        let class = self.reference.elems[source as usize].class;
+        self.grid.insert(self.placed.len() as u32, pos);
+        self.placed.push(Placed { pos, class, source });
+        self.used.push(0);
+    }
+
+    /// The nearest target element of `class` within its pairing radius of `p` not
+    /// already paired in this pass.
+    fn nearest_unpaired(&self, p: Point, class: u32) -> Option<(u32, f64)> {
+        let d = self.reference.pair_radius[class as usize];
+        let mut best: Option<(u32, f64)> = None;
+        let mut best_d2 = d * d;
+        self.grid.for_each_near(p, d, |id| {
+            let e = &self.placed[id as usize];
+            if e.class == class && self.used[id as usize] != self.stamp {
+                let d2 = (e.pos - p).hypot2();
+                if d2 < best_d2 {
+                    best_d2 = d2;
+                    best = Some((id, d2));
+                }
+            }
+        });
+        best
+    }
+
+    /// Whether something already in the target sits where an element of `class` at `p`
+    /// would be stacked on it.
+    fn occupied(&self, p: Point, class: u32) -> bool {
+        let same = self.reference.pair_radius[class as usize];
+        let cross = self.reference.cross_radius;
+        let mut hit = false;
+        self.grid.for_each_near(p, same.max(cross), |id| {
+            let e = &self.placed[id as usize];
+            let r = if e.class == class { same } else { cross };
+            hit |= (e.pos - p).hypot2() < r * r;
+        });
+        hit
+    }
+
+    /// Pairs the window of reference element `r`, placed so that `r` lands at `at`.
+    /// Fills `self.pairs` (window index, target id); returns the squared-error sum and
+    /// the sum of pair offsets.
+    fn pair(&mut self, r: u32, at: Point) -> (f64, Vec2) {
+        self.stamp = self.stamp.wrapping_add(1);
+        if self.stamp == 0 {
+            self.used.iter_mut().for_each(|u| *u = 0);
+            self.stamp = 1;
+        }
+        self.pairs.clear();
+        let (mut err, mut sum) = (0.0, Vec2::ZERO);
+        let window = &self.reference.window[r as usize];
+        for (k, &(j, off)) in window.iter().enumerate() {
+            let p = at + off;
+            let class = self.reference.elems[j as usize].class;
+            if let Some((t, d2)) = self.nearest_unpaired(p, class) {
+                self.used[t as usize] = self.stamp;
+                self.pairs.push((k as u32, t));
+                err += d2;
+                sum += self.placed[t as usize].pos - p;
+            }
+        }
+        (err, sum)
+    }
+
+    /// Pairs, refines `t` by least squares until the pairing is stable, and counts what
+    /// the candidate would add.
+    fn evaluate(&mut self, g: Point, r: u32) -> Candidate {
+        let base = g - self.reference.elems[r as usize].pos;
+        let mut delta = Vec2::ZERO;
+        let mut error = 0.0;
+        for iteration in 0..MAX_REFINEMENTS {
+            let (err, sum) = self.pair(r, self.reference.elems[r as usize].pos + base + delta);
+            error = err;
+            if self.pairs.is_empty() || (iteration > 0 && self.pairs == self.previous) {
+                break;
+            }
+            std::mem::swap(&mut self.pairs, &mut self.previous);
+            delta += sum / self.previous.len() as f64;
+            if iteration + 1 == MAX_REFINEMENTS {
+                let (err, _) = self.pair(r, self.reference.elems[r as usize].pos + base + delta);
+                error = err;
+            }
+        }
+        let at = self.reference.elems[r as usize].pos + base + delta;
+        let adds = self.unpaired(r, at).count();
+        let pairs = self.pairs.len();
+        Candidate {
+            source: r,
+            delta: base + delta,
+            pairs,
+            error: if pairs > 0 { error / pairs as f64 } else { f64::INFINITY },
+            adds,
+        }
+    }
+
+    /// Window elements left unpaired by the last `pair` call that would land inside the
+    /// area on free ground: (reference index, position).
+    fn unpaired(&self, r: u32, at: Point) -> impl Iterator<Item = (u32, Point)> + '_ {
+        let window = &self.reference.window[r as usize];
+        let mut paired = vec![false; window.len()];
+        for &(k, _) in &self.pairs {
+            paired[k as usize] = true;
+        }
+        window.iter().zip(paired).filter_map(move |(&(j, off), was)| {
+            let p = at + off;
+            let class = self.reference.elems[j as usize].class;
+            (!was && self.inside(p) && !self.occupied(p, class)).then_some((j, p))
+        })
+    }
+
+    /// Whether the near neighbourhood of target element `e` is already complete.
+    fn full(&self, e: usize) -> bool {
+        let Placed { pos, source, .. } = self.placed[e];
+        if !self.reference.interior[source as usize] {
+            return false;
+        }
+        self.reference.near[source as usize].iter().all(|&(j, off)| {
+            let p = pos + off;
+            let class = self.reference.elems[j as usize].class;
+            !self.inside(p) || self.occupied(p, class)
+        })
+    }
+
+    /// Applies candidate `c` at growing point `g`: adds every free window element.
+    fn stamp_candidate(&mut self, c: &Candidate) -> usize {
+        let r = c.source;
+        let at = self.reference.elems[r as usize].pos + c.delta;
+        self.pair(r, at);
+        let adds: Vec<(u32, Point)> = self.unpaired(r, at).collect();
+        let mut added = 0;
+        for (j, p) in adds {
+            // Re-check: two window elements may land on each other.
+            if !self.occupied(p, self.reference.elems[j as usize].class) {
+                self.add(p, j);
+                added += 1;
+            }
+        }
+        added
+    }
+}
+
+/// Grows the reference `elems` over a `width x height` area.
+pub fn grow(elems: &[Element], opts: &GrowOptions, progress: &mut Throttle) -> Result<(Vec<Placed>, GrowStats)> {
+    if !(opts.width.is_finite() && opts.height.is_finite() && opts.width > 0.0 && opts.height > 0.0) {
+        return invalid("Output width and height must be positive numbers.");
+    }
+    if let Some(i) = elems.iter().position(|e| !(e.pos.x.is_finite() && e.pos.y.is_finite())) {
+        return invalid(format!("Element {i} has a position that is not a finite number."));
+    }
+    let reference = Reference::new(elems)?;
+    let area = Rect::new(0.0, 0.0, opts.width, opts.height);
+    let estimate = reference.density() * area.area();
+    if estimate > opts.max_elements as f64 {
+        return Err(Error::TooLarge(format!(
+            "This output would hold about {:.0} elements; the limit is {}. Use a smaller output or larger strokes.",
+            estimate, opts.max_elements
+        )));
+    }
+    let max_radius = reference.pair_radius.iter().copied().fold(reference.cross_radius, f64::max);
+    let cap = opts.max_elements;
+    let mut target = Target {
+        reference: &reference,
+        area,
+        placed: Vec::new(),
+        grid: Grid::new(area, max_radius.max(reference.spacing * 0.5), (estimate as usize).saturating_mul(4) + 64),
+        used: Vec::new(),
+        stamp: 0,
+        pairs: Vec::new(),
+        previous: Vec::new(),
+    };
+    let bounds = elems.iter().fold(Rect::from_points(elems[0].pos, elems[0].pos), |r, e| r.union_pt(e.pos));
+    let shift = area.center() - bounds.center();
+    for (i, e) in elems.iter().enumerate() {
+        let p = e.pos + shift;
+        if target.inside(p) && !target.occupied(p, e.class) {
+            target.add(p, i as u32);
+        }
+    }
+
+    let centre = area.center();
+    let key = |p: Point| (p - centre).hypot2().to_bits();
+    let mut queue: BinaryHeap<Reverse<(u64, u32)>> =
+        target.placed.iter().enumerate().map(|(i, e)| Reverse((key(e.pos), i as u32))).collect();
+    let mut stats = GrowStats::default();
+    let mut processed = 0usize;
+    let mut candidates: Vec<Candidate> = Vec::new();
+    while let Some(Reverse((_, gi))) = queue.pop() {
+        processed += 1;
+        progress.tick(processed as f64 / estimate.max(target.placed.len() as f64).max(1.0))?;
+        let g = target.placed[gi as usize];
+        if opts.frontier_first && target.full(gi as usize) {
+            stats.skipped_full += 1;
+            continue;
+        }
+        stats.growing_points += 1;
+        candidates.clear();
+        let mut most_pairs = 0;
+        for &r in &reference.by_class[g.class as usize] {
+            let c = target.evaluate(g.pos, r);
+            most_pairs = most_pairs.max(c.pairs);
+            if c.adds > 0 {
+                candidates.push(c);
+            }
+        }
+        stats.candidates += reference.by_class[g.class as usize].len();
+        let need = (opts.support * most_pairs as f64).ceil() as usize;
+        let tiny = reference.pair_radius[g.class as usize].powi(2) * 1e-9;
+        let best = candidates.iter().filter(|c| c.pairs >= need.max(1)).min_by(|a, b| {
+            let ea = (a.error / tiny.max(1e-300)).floor();
+            let eb = (b.error / tiny.max(1e-300)).floor();
+            ea.total_cmp(&eb).then(b.pairs.cmp(&a.pairs)).then(b.adds.cmp(&a.adds))
+        });
+        let Some(best) = best.copied() else {
+            stats.passed_over += 1;
+            continue;
+        };
+        let before = target.placed.len();
+        target.stamp_candidate(&best);
+        for i in before..target.placed.len() {
+            queue.push(Reverse((key(target.placed[i].pos), i as u32)));
+        }
+        if target.placed.len() > cap {
+            return Err(Error::TooLarge(format!("Growth passed the limit of {cap} elements.")));
+        }
+    }
+    progress.tick(1.0)?;
+    Ok((target.placed, stats))
+}

@@ -1,0 +1,19 @@
+//! Engine 1: near-regular vector pattern synthesis from example strokes (SPEC section 1).
+
+pub mod classify;
+pub mod color;
+pub mod exemplar;
+pub mod frechet;
+pub mod grow;
+pub mod regularity;
+pub mod spatial;
+pub mod stroke;
+pub mod svg_export;
+pub mod svg_import;
+pub mod synthesize;
+
+pub use classify::Tolerances;
+pub use color::Rgb;
+pub use stroke::Stroke;
+pub use svg_import::{parse_svg, Import, ImportOptions};
+pub use synthesize::{classify_strokes, synthesize_strokes, Classification, StrokeOptions, StrokeResult};

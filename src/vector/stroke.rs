@@ -1,0 +1,120 @@
+//! The stroke: the unit the vector engine classifies, places and draws.
+
+use super::color::Rgb;
+use crate::error::{invalid, Result};
+use kurbo::{Point, Rect};
+use serde::{Deserialize, Serialize};
+
+fn one() -> f64 {
+    1.0
+}
+
+/// A polyline with its paint. Curves are flattened before they get here.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "camelCase")]
+pub struct Stroke {
+    pub points: Vec<[f64; 2]>,
+    #[serde(default)]
+    pub width: f64,
+    #[serde(default)]
+    pub stroke: Option<Rgb>,
+    #[serde(default)]
+    pub fill: Option<Rgb>,
+    /// Opacity of the whole element (group opacities folded in).
+    #[serde(default = "one")]
+    pub opacity: f64,
+    #[serde(default = "one")]
+    pub stroke_opacity: f64,
+    #[serde(default = "one")]
+    pub fill_opacity: f64,
+    /// A closed outline (`Z`): matters for fills and for drawing the last segment.
+    #[serde(default)]
+    pub closed: bool,
+    /// For a compound path kept whole: indices into `points` where a new subpath
+    /// starts (after the first). Empty for an ordinary polyline.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub breaks: Vec<usize>,
+}
+
+impl Stroke {
+    pub fn new(points: Vec<[f64; 2]>, width: f64, stroke: Option<Rgb>) -> Self {
+        Stroke {
+            points,
+            width,
+            stroke,
+            fill: None,
+            opacity: 1.0,
+            stroke_opacity: 1.0,
+            fill_opacity: 1.0,
+            closed: false,
+            breaks: Vec::new(),
+        }
+    }
+
+    /// Bounding box of the path (not of the painted area).
+    pub fn bounds(&self) -> Rect {
+        let mut it = self.points.iter();
+        let Some(&[x, y]) = it.next() else {
+            return Rect::ZERO;
+        };
+        it.fold(Rect::new(x, y, x, y), |r, &[x, y]| r.union_pt(Point::new(x, y)))
+    }
+
+    /// The reference point (SPEC 1.2, Choice): the centre of the bounding box.
+    pub fn reference_point(&self) -> Point {
+        self.bounds().center()
+    }
+
+    /// The same stroke moved by `(dx, dy)`.
+    pub fn translated(&self, dx: f64, dy: f64) -> Stroke {
+        let mut s = self.clone();
+        for p in &mut s.points {
+            p[0] += dx;
+            p[1] += dy;
+        }
+        s
+    }
+
+    /// Rejects what the engines cannot use, with the stroke's index in the message.
+    pub fn validate(&self, index: usize) -> Result<()> {
+        if self.points.is_empty() {
+            return invalid(format!("Stroke {index} has no points."));
+        }
+        if self.points.iter().flatten().any(|v| !v.is_finite()) {
+            return invalid(format!("Stroke {index} has a coordinate that is not a finite number."));
+        }
+        if self.breaks.iter().any(|&b| b == 0 || b >= self.points.len()) {
+            return invalid(format!("Stroke {index} has a subpath break outside its points."));
+        }
+        if !self.width.is_finite() || self.width < 0.0 {
+            return invalid(format!("Stroke {index} has a width that is negative or not a number."));
+        }
+        for (name, v) in
+            [("opacity", self.opacity), ("strokeOpacity", self.stroke_opacity), ("fillOpacity", self.fill_opacity)]
+        {
+            if !(0.0..=1.0).contains(&v) {
+                return invalid(format!("Stroke {index} has {name} {v}; it must be in [0, 1]."));
+            }
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn reference_point_is_bbox_centre() {
+        let s = Stroke::new(vec![[0.0, 0.0], [4.0, 2.0], [1.0, 6.0]], 1.0, None);
+        assert_eq!(s.reference_point(), Point::new(2.0, 3.0));
+    }
+
+    #[test]
+    fn validate_rejects_nan_and_empty() {
+        assert!(Stroke::new(vec![], 1.0, None).validate(0).is_err());
+        assert!(Stroke::new(vec![[f64::NAN, 0.0]], 1.0, None).validate(0).is_err());
+        assert!(Stroke::new(vec![[0.0, 0.0]], -1.0, None).validate(0).is_err());
+        assert!(Stroke::new(vec![[0.0, 0.0]], 1.0, None).validate(0).is_ok());
+    }
+}

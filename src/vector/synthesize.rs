@@ -1,0 +1,168 @@
+//! The vector engine end to end: classify, grow, dress the grown elements with strokes,
+//! write SVG. This is the entry point the wasm layer and the tests call.
+
+use super::classify::{classify, propose_tolerances, Tolerances};
+use super::grow::{grow, Element, GrowOptions, GrowStats};
+use super::stroke::Stroke;
+use super::svg_export::to_svg;
+use crate::error::{invalid, Result};
+use crate::progress::{Progress, Throttle};
+use crate::rng::Rng;
+use serde::{Deserialize, Serialize};
+
+/// Options of `synthesize_strokes`; every tolerance left out is proposed from the data.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(rename_all = "camelCase", default)]
+pub struct StrokeOptions {
+    pub width: f64,
+    pub height: f64,
+    /// e1: Fréchet distance between centred paths.
+    pub path_tolerance: Option<f64>,
+    /// e2: stroke width difference.
+    pub width_tolerance: Option<f64>,
+    /// e3: RGB distance of stroke and of fill colours.
+    pub color_tolerance: Option<f64>,
+    /// Each output element takes a random member of its class (else its own stroke).
+    pub variation: bool,
+    pub seed: u64,
+    /// Support ratio of the growth rule (SPEC 1.3).
+    pub support: f64,
+    /// Refuse outputs with more elements than this.
+    pub max_elements: usize,
+}
+
+impl Default for StrokeOptions {
+    fn default() -> Self {
+        let g = GrowOptions::default();
+        StrokeOptions {
+            width: g.width,
+            height: g.height,
+            path_tolerance: None,
+            width_tolerance: None,
+            color_tolerance: None,
+            variation: true,
+            seed: 1,
+            support: g.support,
+            max_elements: g.max_elements,
+        }
+    }
+}
+
+/// How the input was classified.
+#[derive(Clone, Debug, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct Classification {
+    /// Class of each input stroke, numbered by first appearance.
+    pub classes: Vec<u32>,
+    pub count: u32,
+    /// The tolerances used (the proposal where the caller gave none).
+    pub tolerances: Tolerances,
+    /// The automatic proposal, to show as a starting point.
+    pub proposed: Tolerances,
+}
+
+#[derive(Clone, Debug, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct StrokeResult {
+    pub strokes: Vec<Stroke>,
+    /// Class of each output stroke.
+    pub classes: Vec<u32>,
+    /// Index of the input stroke each output stroke's position copies.
+    pub sources: Vec<u32>,
+    pub classification: Classification,
+    pub svg: String,
+    pub growing_points: usize,
+    pub skipped_full: usize,
+    pub passed_over: usize,
+}
+
+fn check_strokes(strokes: &[Stroke]) -> Result<()> {
+    if strokes.is_empty() {
+        return invalid("There are no strokes: draw some or import an SVG first.");
+    }
+    strokes.iter().enumerate().try_for_each(|(i, s)| s.validate(i))
+}
+
+/// Classifies `strokes`, filling in any tolerance left out with the proposal.
+pub fn classify_strokes(
+    strokes: &[Stroke],
+    path: Option<f64>,
+    width: Option<f64>,
+    color: Option<f64>,
+) -> Result<Classification> {
+    check_strokes(strokes)?;
+    for (name, v) in [("path", path), ("width", width), ("colour", color)] {
+        if v.is_some_and(|v| !v.is_finite() || v < 0.0) {
+            return invalid(format!("The {name} tolerance must be a number of at least 0."));
+        }
+    }
+    let proposed = propose_tolerances(strokes);
+    let tolerances = Tolerances {
+        path: path.unwrap_or(proposed.path),
+        width: width.unwrap_or(proposed.width),
+        color: color.unwrap_or(proposed.color),
+    };
+    let classes = classify(strokes, &tolerances);
+    let count = classes.iter().max().map_or(0, |m| m + 1);
+    Ok(Classification { classes, count, tolerances, proposed })
+}
+
+/// Synthesizes a `width x height` pattern from the example `strokes`.
+pub fn synthesize_strokes(
+    strokes: &[Stroke],
+    opts: &StrokeOptions,
+    progress: &mut dyn Progress,
+) -> Result<StrokeResult> {
+    if !(opts.support.is_finite() && opts.support > 0.0 && opts.support <= 1.0) {
+        return invalid("The support ratio must be in (0, 1].");
+    }
+    let classification = classify_strokes(strokes, opts.path_tolerance, opts.width_tolerance, opts.color_tolerance)?;
+    Throttle::new(progress).tick(0.02)?;
+    let elements: Vec<Element> = strokes
+        .iter()
+        .zip(&classification.classes)
+        .map(|(s, &class)| Element { pos: s.reference_point(), class })
+        .collect();
+    let grow_opts = GrowOptions {
+        width: opts.width,
+        height: opts.height,
+        support: opts.support,
+        max_elements: opts.max_elements,
+        ..GrowOptions::default()
+    };
+    let (placed, stats): (_, GrowStats) = grow(&elements, &grow_opts, &mut Throttle::with_range(progress, 0.02, 0.98))?;
+
+    let mut members = vec![Vec::new(); classification.count as usize];
+    for (i, &c) in classification.classes.iter().enumerate() {
+        members[c as usize].push(i);
+    }
+    let mut rng = Rng::new(opts.seed);
+    let mut order: Vec<usize> = (0..placed.len()).collect();
+    // Layering follows the example: by the drawing order of the copied stroke.
+    order.sort_by_key(|&i| placed[i].source);
+    let mut out = Vec::with_capacity(placed.len());
+    let mut classes = Vec::with_capacity(placed.len());
+    let mut sources = Vec::with_capacity(placed.len());
+    for i in order {
+        let e = placed[i];
+        let class_members = &members[e.class as usize];
+        let pick = if opts.variation { class_members[rng.below(class_members.len())] } else { e.source as usize };
+        let s = &strokes[pick];
+        let r = s.reference_point();
+        out.push(s.translated(e.pos.x - r.x, e.pos.y - r.y));
+        classes.push(e.class);
+        sources.push(e.source);
+    }
+    let svg = to_svg(&out, opts.width, opts.height);
+    Throttle::new(progress).tick(1.0)?;
+    Ok(StrokeResult {
+        strokes: out,
+        classes,
+        sources,
+        classification,
+        svg,
+        growing_points: stats.growing_points,
+        skipped_full: stats.skipped_full,
+        passed_over: stats.passed_over,
+    })
+}

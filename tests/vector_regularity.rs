@@ -1,0 +1,49 @@
+//! The vector engine against generated exemplars with a known lattice (SPEC 1.5):
+//! coverage of ideal sites, strays, stacked duplicates and residual, per family.
+
+use kurbo::{Rect, Vec2};
+use patternsynth::vector::exemplar::{families, Exemplar};
+use patternsynth::vector::regularity::{measure, Regularity};
+use patternsynth::vector::{synthesize_strokes, StrokeOptions};
+use patternsynth::Silent;
+
+fn run(ex: &Exemplar, width: f64, height: f64) -> (Regularity, usize, u32) {
+    let opts = StrokeOptions { width, height, seed: 7, ..Default::default() };
+    let res = synthesize_strokes(&ex.strokes, &opts, &mut Silent).expect(ex.name);
+    let bounds = ex
+        .strokes
+        .iter()
+        .map(|s| s.reference_point())
+        .fold(None::<Rect>, |r, p| Some(r.map_or(Rect::from_points(p, p), |r| r.union_pt(p))));
+    let area = Rect::new(0.0, 0.0, width, height);
+    let shift: Vec2 = area.center() - bounds.unwrap().center();
+    let out: Vec<_> =
+        res.strokes.iter().zip(&res.sources).map(|(s, &src)| (s.reference_point(), ex.classes[src as usize])).collect();
+    (measure(&ex.lattice, shift, &out, area), res.strokes.len(), res.classification.count)
+}
+
+#[test]
+fn every_family_grows_to_its_lattice() {
+    let mut failures = Vec::new();
+    for ex in families(0.02, 11) {
+        let expected_classes = ex.classes.iter().max().unwrap() + 1;
+        let (r, n, classes) = run(&ex, 480.0, 400.0);
+        println!(
+            "{:<18} out {:>4} sites {:>4} coverage {:>6.2}% stray {:>3} stacked {:>3} median {:.3} p95 {:.3} classes {}",
+            ex.name,
+            n,
+            r.sites,
+            r.coverage * 100.0,
+            r.stray,
+            r.stacked,
+            r.median_residual,
+            r.p95_residual,
+            classes
+        );
+        if classes != expected_classes || r.coverage < 0.99 || r.stray > 0 || r.stacked > 0 || r.median_residual >= 0.05
+        {
+            failures.push(format!("{}: {:?} classes {}", ex.name, r, classes));
+        }
+    }
+    assert!(failures.is_empty(), "{failures:#?}");
+}
