@@ -89,10 +89,11 @@ struct Reference<'a> {
     cross_radius: f64,
     /// Window neighbours of each element (itself included), nearest first.
     window: Vec<Neighbourhood>,
-    /// Near neighbours used to decide whether a target element's neighbourhood is full.
-    near: Vec<Neighbourhood>,
-    /// Whether an element's near neighbourhood is complete in the reference itself.
-    interior: Vec<bool>,
+    /// Radius of the disc whose population tells whether a neighbourhood is full.
+    near_radius: f64,
+    /// Per class: elements of any class within `near_radius` of a deep-interior reference
+    /// element of that class (median); `None` when the reference has no deep interior.
+    full_count: Vec<Option<usize>>,
     /// Median distance between neighbouring elements (any class).
     spacing: f64,
 }
@@ -123,6 +124,25 @@ fn nearest_distances(elems: &[Element], same_class: bool, skip_coincident: bool,
             }
         })
         .collect()
+}
+
+/// Moves `radius` into the widest gap of the neighbour distances between 0.8x and 1.6x
+/// of it, so that jitter does not move elements in and out of discs of that radius.
+fn between_shells(elems: &[Element], grid: &Grid, radius: f64) -> f64 {
+    let (lo, hi) = (0.8 * radius, 1.6 * radius);
+    let mut d = vec![lo, hi];
+    for e in elems {
+        grid.for_each_near(e.pos, hi, |j| {
+            let x = elems[j as usize].pos.distance(e.pos);
+            if x > lo && x < hi {
+                d.push(x);
+            }
+        });
+    }
+    d.sort_by(|a, b| a.total_cmp(b));
+    let (a, b) =
+        d.windows(2).map(|w| (w[0], w[1])).max_by(|x, y| (x.1 - x.0).total_cmp(&(y.1 - y.0))).unwrap_or((lo, hi));
+    0.5 * (a + b)
 }
 
 impl<'a> Reference<'a> {
@@ -166,7 +186,8 @@ impl<'a> Reference<'a> {
 
         let k_window = (n - 1).min(48);
         let k_near = (n - 1).min(8);
-        let kth = |k: usize| {
+        // The k-th neighbour distance at quantile `q` over the elements.
+        let kth = |k: usize, q: f64| {
             let mut radius = spacing * 2.0;
             let mut d: Vec<f64> = elems
                 .iter()
@@ -186,10 +207,12 @@ impl<'a> Reference<'a> {
                     radius *= 2.0;
                 })
                 .collect();
-            median(&mut d)
+            d.sort_by(|a, b| a.total_cmp(b));
+            d[((d.len() - 1) as f64 * q) as usize]
         };
-        let window_radius = (3.0 * spacing).max(kth(k_window)) * 1.05;
-        let near_radius = kth(k_near) * 1.15;
+        let window_radius = (3.0 * spacing).max(kth(k_window, 0.5)) * 1.05;
+        // A low quantile: the interior elements' radius, not the border's.
+        let near_radius = between_shells(elems, &grid, kth(k_near, 0.1));
         let neighbourhood = |radius: f64| -> Vec<Neighbourhood> {
             elems
                 .iter()
@@ -208,14 +231,26 @@ impl<'a> Reference<'a> {
         };
         let window = neighbourhood(window_radius);
         let near = neighbourhood(near_radius);
-        let mut interior = vec![false; n];
-        for c in &by_class {
-            let full = c.iter().map(|&i| near[i as usize].len()).max().unwrap_or(0);
-            for &i in c {
-                interior[i as usize] = near[i as usize].len() >= full;
-            }
-        }
-        Ok(Reference { elems, by_class, pair_radius, cross_radius, window, near, interior, spacing })
+        // Deep interior: the near disc lies inside the reference's extent along every axis
+        // the reference spans (a row spans one).
+        let deep = |p: Point| {
+            let fits = |lo: f64, hi: f64, v: f64| {
+                hi - lo < 2.0 * near_radius || (v - lo >= near_radius && hi - v >= near_radius)
+            };
+            fits(bounds.x0, bounds.x1, p.x) && fits(bounds.y0, bounds.y1, p.y)
+        };
+        let full_count = by_class
+            .iter()
+            .map(|members| {
+                let mut counts: Vec<f64> = members
+                    .iter()
+                    .filter(|&&i| deep(elems[i as usize].pos))
+                    .map(|&i| near[i as usize].len() as f64)
+                    .collect();
+                (!counts.is_empty()).then(|| median(&mut counts) as usize)
+            })
+            .collect();
+        Ok(Reference { elems, by_class, pair_radius, cross_radius, window, near_radius, full_count, spacing })
     }
 
     fn density(&self) -> f64 {
@@ -249,6 +284,11 @@ struct Target<'r, 'a> {
 }
 
 const MAX_REFINEMENTS: usize = 4;
+
+/// A candidate whose first pairing reaches less than this fraction of the best pair
+/// count so far is dropped before refinement: refinement moves `t` by under a pairing
+/// radius, which cannot lift it to the support ratio (0.6).
+const PRUNE: f64 = 0.45;
 
 impl<'r, 'a> Target<'r, 'a> {
     fn inside(&self, p: Point) -> bool {
@@ -297,8 +337,9 @@ impl<'r, 'a> Target<'r, 'a> {
 
     /// Pairs the window of reference element `r`, placed so that `r` lands at `at`.
     /// Fills `self.pairs` (window index, target id); returns the squared-error sum and
-    /// the sum of pair offsets.
-    fn pair(&mut self, r: u32, at: Point) -> (f64, Vec2) {
+    /// the sum of pair offsets. Stops early (returning `None`) once fewer than `need`
+    /// pairs are still possible.
+    fn pair(&mut self, r: u32, at: Point, need: usize) -> Option<(f64, Vec2)> {
         self.stamp = self.stamp.wrapping_add(1);
         if self.stamp == 0 {
             self.used.iter_mut().for_each(|u| *u = 0);
@@ -308,6 +349,9 @@ impl<'r, 'a> Target<'r, 'a> {
         let (mut err, mut sum) = (0.0, Vec2::ZERO);
         let window = &self.reference.window[r as usize];
         for (k, &(j, off)) in window.iter().enumerate() {
+            if self.pairs.len() + (window.len() - k) < need {
+                return None;
+            }
             let p = at + off;
             let class = self.reference.elems[j as usize].class;
             if let Some((t, d2)) = self.nearest_unpaired(p, class) {
@@ -317,73 +361,75 @@ impl<'r, 'a> Target<'r, 'a> {
                 sum += self.placed[t as usize].pos - p;
             }
         }
-        (err, sum)
+        Some((err, sum))
     }
 
     /// Pairs, refines `t` by least squares until the pairing is stable, and counts what
-    /// the candidate would add.
-    fn evaluate(&mut self, g: Point, r: u32) -> Candidate {
-        let base = g - self.reference.elems[r as usize].pos;
+    /// the candidate would add. `None` when the first pairing already falls short of
+    /// `need` pairs (such a candidate could not be well supported).
+    fn evaluate(&mut self, g: Point, r: u32, need: usize, eligible: usize) -> Option<Candidate> {
+        let origin = self.reference.elems[r as usize].pos;
+        let base = g - origin;
+        let settle = 0.1 * self.reference.pair_radius[self.reference.elems[r as usize].class as usize];
         let mut delta = Vec2::ZERO;
-        let mut error = 0.0;
+        let mut error = f64::INFINITY;
         for iteration in 0..MAX_REFINEMENTS {
-            let (err, sum) = self.pair(r, self.reference.elems[r as usize].pos + base + delta);
-            error = err;
-            if self.pairs.is_empty() || (iteration > 0 && self.pairs == self.previous) {
+            let (err, sum) = self.pair(r, origin + base + delta, if iteration == 0 { need } else { 0 })?;
+            let n = self.pairs.len();
+            if n == 0 || (iteration > 0 && self.pairs == self.previous) {
+                break;
+            }
+            // Least squares: moving by the mean offset lowers the squared sum by n|mean|^2,
+            // so the refined error needs no second pass unless the pairing may change.
+            let mean = sum / n as f64;
+            delta += mean;
+            error = (err - n as f64 * mean.hypot2()).max(0.0) / n as f64;
+            if mean.hypot() < settle {
                 break;
             }
             std::mem::swap(&mut self.pairs, &mut self.previous);
-            delta += sum / self.previous.len() as f64;
-            if iteration + 1 == MAX_REFINEMENTS {
-                let (err, _) = self.pair(r, self.reference.elems[r as usize].pos + base + delta);
-                error = err;
-            }
         }
-        let at = self.reference.elems[r as usize].pos + base + delta;
-        let adds = self.unpaired(r, at).count();
         let pairs = self.pairs.len();
-        Candidate {
-            source: r,
-            delta: base + delta,
-            pairs,
-            error: if pairs > 0 { error / pairs as f64 } else { f64::INFINITY },
-            adds,
-        }
+        // A candidate short of the support ratio so far can never be chosen: skip counting.
+        let adds = if pairs >= eligible.max(1) { self.unpaired(r, origin + base + delta).count() } else { 0 };
+        Some(Candidate { source: r, delta: base + delta, pairs, error, adds })
     }
 
     /// Window elements left unpaired by the last `pair` call that would land inside the
     /// area on free ground: (reference index, position).
     fn unpaired(&self, r: u32, at: Point) -> impl Iterator<Item = (u32, Point)> + '_ {
-        let window = &self.reference.window[r as usize];
-        let mut paired = vec![false; window.len()];
-        for &(k, _) in &self.pairs {
-            paired[k as usize] = true;
-        }
-        window.iter().zip(paired).filter_map(move |(&(j, off), was)| {
+        // `pairs` is in window order, so one cursor tells which entries were paired.
+        let mut paired = self.pairs.iter().map(|&(k, _)| k as usize).peekable();
+        self.reference.window[r as usize].iter().enumerate().filter_map(move |(k, &(j, off))| {
+            if paired.next_if_eq(&k).is_some() {
+                return None;
+            }
             let p = at + off;
             let class = self.reference.elems[j as usize].class;
-            (!was && self.inside(p) && !self.occupied(p, class)).then_some((j, p))
+            (self.inside(p) && !self.occupied(p, class)).then_some((j, p))
         })
     }
 
-    /// Whether the near neighbourhood of target element `e` is already complete.
+    /// Whether the neighbourhood of target element `e` is already as populated as a
+    /// deep-interior neighbourhood of the reference: then it is no frontier point.
     fn full(&self, e: usize) -> bool {
-        let Placed { pos, source, .. } = self.placed[e];
-        if !self.reference.interior[source as usize] {
+        let Placed { pos, class, .. } = self.placed[e];
+        let Some(want) = self.reference.full_count[class as usize] else {
             return false;
-        }
-        self.reference.near[source as usize].iter().all(|&(j, off)| {
-            let p = pos + off;
-            let class = self.reference.elems[j as usize].class;
-            !self.inside(p) || self.occupied(p, class)
-        })
+        };
+        let r2 = self.reference.near_radius.powi(2);
+        let mut count = 0;
+        self.grid.for_each_near(pos, self.reference.near_radius, |id| {
+            count += ((self.placed[id as usize].pos - pos).hypot2() <= r2) as usize;
+        });
+        count >= want
     }
 
     /// Applies candidate `c` at growing point `g`: adds every free window element.
     fn stamp_candidate(&mut self, c: &Candidate) -> usize {
         let r = c.source;
         let at = self.reference.elems[r as usize].pos + c.delta;
-        self.pair(r, at);
+        self.pair(r, at, 0);
         let adds: Vec<(u32, Point)> = self.unpaired(r, at).collect();
         let mut added = 0;
         for (j, p) in adds {
@@ -420,7 +466,11 @@ pub fn grow(elems: &[Element], opts: &GrowOptions, progress: &mut Throttle) -> R
         reference: &reference,
         area,
         placed: Vec::new(),
-        grid: Grid::new(area, max_radius.max(reference.spacing * 0.5), (estimate as usize).saturating_mul(4) + 64),
+        grid: Grid::new(
+            area,
+            2.0 * max_radius.max(reference.spacing * 0.5),
+            (estimate as usize).saturating_mul(4) + 64,
+        ),
         used: Vec::new(),
         stamp: 0,
         pairs: Vec::new(),
@@ -453,8 +503,14 @@ pub fn grow(elems: &[Element], opts: &GrowOptions, progress: &mut Throttle) -> R
         stats.growing_points += 1;
         candidates.clear();
         let mut most_pairs = 0;
-        for &r in &reference.by_class[g.class as usize] {
-            let c = target.evaluate(g.pos, r);
+        // The growing point's own source first: it usually pairs the most, which lets
+        // the weak candidates after it be dropped early.
+        let own = std::iter::once(g.source);
+        let others = reference.by_class[g.class as usize].iter().copied().filter(|&r| r != g.source);
+        for r in own.chain(others) {
+            let need = (PRUNE * most_pairs as f64).ceil() as usize;
+            let eligible = (opts.support * most_pairs as f64).ceil() as usize;
+            let Some(c) = target.evaluate(g.pos, r, need, eligible) else { continue };
             most_pairs = most_pairs.max(c.pairs);
             if c.adds > 0 {
                 candidates.push(c);
