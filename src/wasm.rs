@@ -110,7 +110,7 @@ fn strokes_from_js(v: JsValue) -> Result<Vec<vector::Stroke>, JsValue> {
 }
 
 #[derive(serde::Deserialize, Default)]
-#[serde(rename_all = "camelCase", default)]
+#[serde(rename_all = "camelCase", default, deny_unknown_fields)]
 struct ClassifyOptions {
     path_tolerance: Option<f64>,
     width_tolerance: Option<f64>,

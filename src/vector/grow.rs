@@ -96,6 +96,8 @@ struct Reference<'a> {
     full_count: Vec<Option<usize>>,
     /// Median distance between neighbouring elements (any class).
     spacing: f64,
+    /// Radius of the windows.
+    window_radius: f64,
 }
 
 fn nearest_distances(elems: &[Element], same_class: bool, skip_coincident: bool, grid: &Grid, scale: f64) -> Vec<f64> {
@@ -250,7 +252,25 @@ impl<'a> Reference<'a> {
                 (!counts.is_empty()).then(|| median(&mut counts) as usize)
             })
             .collect();
-        Ok(Reference { elems, by_class, pair_radius, cross_radius, window, near_radius, full_count, spacing })
+        Ok(Reference {
+            elems,
+            by_class,
+            pair_radius,
+            cross_radius,
+            window,
+            near_radius,
+            full_count,
+            spacing,
+            window_radius,
+        })
+    }
+
+    /// Whether the example is one row of elements (no extent across it): a row grows
+    /// only along itself, so the area beside it is no hole to fill.
+    fn is_row(&self) -> bool {
+        let b =
+            self.elems.iter().fold(Rect::from_points(self.elems[0].pos, self.elems[0].pos), |r, e| r.union_pt(e.pos));
+        b.width().min(b.height()) < self.spacing
     }
 
     fn density(&self) -> f64 {
@@ -281,6 +301,15 @@ struct Target<'r, 'a> {
     stamp: u32,
     pairs: Vec<(u32, u32)>,
     previous: Vec<(u32, u32)>,
+    /// Element counts on a coarse grid (cells a window across): empty cells are holes.
+    cover: Vec<u32>,
+    /// Columns, rows, and cell width and height: cells tile the area exactly.
+    cover_dims: (usize, usize, f64, f64),
+    /// Second phase: stamp only into holes.
+    fill_holes: bool,
+    /// Filling holes adds to cells with fewer elements than this (0.9 of the example's
+    /// density); a cell with less than half of it is a hole that starts the filling.
+    hole_below: u32,
 }
 
 const MAX_REFINEMENTS: usize = 4;
@@ -297,6 +326,9 @@ impl<'r, 'a> Target<'r, 'a> {
 
     fn add(&mut self, pos: Point, source: u32) {
         let class = self.reference.elems[source as usize].class;
+        if let Some(c) = self.cover_cell(pos) {
+            self.cover[c] += 1;
+        }
         self.grid.insert(self.placed.len() as u32, pos);
         self.placed.push(Placed { pos, class, source });
         self.used.push(0);
@@ -406,7 +438,10 @@ impl<'r, 'a> Target<'r, 'a> {
             }
             let p = at + off;
             let class = self.reference.elems[j as usize].class;
-            (self.inside(p) && !self.occupied(p, class)).then_some((j, p))
+            let free = self.inside(p) && !self.occupied(p, class);
+            // Filling holes adds only inside them, never among regular elements.
+            let wanted = !self.fill_holes || self.cover_cell(p).is_some_and(|c| self.cover[c] < self.hole_below);
+            (free && wanted).then_some((j, p))
         })
     }
 
@@ -425,6 +460,106 @@ impl<'r, 'a> Target<'r, 'a> {
         count >= want
     }
 
+    /// Grows from the elements `start` (and all they add), nearest the centre first.
+    /// `relaxed`: only around holes, taking the candidate that adds the most.
+    fn run(
+        &mut self,
+        start: &[u32],
+        opts: &GrowOptions,
+        relaxed: bool,
+        estimate: f64,
+        progress: &mut Throttle,
+        stats: &mut GrowStats,
+    ) -> Result<()> {
+        let reference = self.reference;
+        self.fill_holes = relaxed;
+        let centre = self.area.center();
+        let key = |p: Point| (p - centre).hypot2().to_bits();
+        let mut queue: BinaryHeap<Reverse<(u64, u32)>> =
+            start.iter().map(|&i| Reverse((key(self.placed[i as usize].pos), i))).collect();
+        let mut candidates: Vec<Candidate> = Vec::new();
+        let mut processed = 0usize;
+        while let Some(Reverse((_, gi))) = queue.pop() {
+            processed += 1;
+            if !relaxed {
+                progress.tick(processed as f64 / estimate.max(self.placed.len() as f64).max(1.0))?;
+            }
+            let g = self.placed[gi as usize];
+            if relaxed && !self.near_hole(g.pos) {
+                continue;
+            }
+            if !relaxed && opts.frontier_first && self.full(gi as usize) {
+                stats.skipped_full += 1;
+                continue;
+            }
+            stats.growing_points += 1;
+            candidates.clear();
+            let mut most_pairs = 0;
+            // The growing point's own source first: it usually pairs the most, which lets
+            // the weak candidates after it be dropped early.
+            let own = std::iter::once(g.source);
+            let others = reference.by_class[g.class as usize].iter().copied().filter(|&r| r != g.source);
+            for r in own.chain(others) {
+                let factor = if relaxed { (0.0, 0.0) } else { (PRUNE, opts.support) };
+                let need = (factor.0 * most_pairs as f64).ceil() as usize;
+                let eligible = (factor.1 * most_pairs as f64).ceil() as usize;
+                let Some(c) = self.evaluate(g.pos, r, need, eligible) else { continue };
+                most_pairs = most_pairs.max(c.pairs);
+                if c.adds > 0 {
+                    candidates.push(c);
+                }
+            }
+            stats.candidates += reference.by_class[g.class as usize].len();
+            let need = if relaxed { 1 } else { ((opts.support * most_pairs as f64).ceil() as usize).max(1) };
+            let tiny = (reference.pair_radius[g.class as usize].powi(2) * 1e-9).max(1e-300);
+            let best = candidates.iter().filter(|c| c.pairs >= need).min_by(|a, b| {
+                let (ea, eb) = ((a.error / tiny).floor(), (b.error / tiny).floor());
+                if relaxed {
+                    b.adds.cmp(&a.adds).then(ea.total_cmp(&eb))
+                } else {
+                    ea.total_cmp(&eb).then(b.pairs.cmp(&a.pairs)).then(b.adds.cmp(&a.adds))
+                }
+            });
+            let Some(best) = best.copied() else {
+                stats.passed_over += 1;
+                continue;
+            };
+            let before = self.placed.len();
+            self.stamp_candidate(&best);
+            for i in before..self.placed.len() {
+                queue.push(Reverse((key(self.placed[i].pos), i as u32)));
+            }
+            if self.placed.len() > opts.max_elements {
+                return Err(Error::TooLarge(format!("Growth passed the limit of {} elements.", opts.max_elements)));
+            }
+        }
+        Ok(())
+    }
+
+    fn cover_cell(&self, p: Point) -> Option<usize> {
+        let (cols, rows, sx, sy) = self.cover_dims;
+        let cx = ((p.x - self.area.x0) / sx).floor().min(cols as f64 - 1.0);
+        let cy = ((p.y - self.area.y0) / sy).floor().min(rows as f64 - 1.0);
+        (cx >= 0.0 && cy >= 0.0 && (cx as usize) < cols && (cy as usize) < rows)
+            .then(|| cy as usize * cols + cx as usize)
+    }
+
+    /// Coverage cells (a window across) that hold no element.
+    fn holes(&self) -> usize {
+        self.cover.iter().filter(|&&c| c < self.hole_below.div_ceil(2)).count()
+    }
+
+    /// Whether an empty coverage cell touches the window around `p`.
+    fn near_hole(&self, p: Point) -> bool {
+        let r = self.reference.window_radius;
+        let (cols, rows, sx, sy) = self.cover_dims;
+        let x0 = ((p.x - r - self.area.x0) / sx).floor().max(0.0) as usize;
+        let y0 = ((p.y - r - self.area.y0) / sy).floor().max(0.0) as usize;
+        let x1 = (((p.x + r - self.area.x0) / sx).floor().max(0.0) as usize).min(cols - 1);
+        let y1 = (((p.y + r - self.area.y0) / sy).floor().max(0.0) as usize).min(rows - 1);
+        (y0..=y1).any(|y| (x0..=x1).any(|x| self.cover[y * cols + x] < self.hole_below))
+    }
+
     /// Applies candidate `c` at growing point `g`: adds every free window element.
     fn stamp_candidate(&mut self, c: &Candidate) -> usize {
         let r = c.source;
@@ -434,7 +569,8 @@ impl<'r, 'a> Target<'r, 'a> {
         let mut added = 0;
         for (j, p) in adds {
             // Re-check: two window elements may land on each other.
-            if !self.occupied(p, self.reference.elems[j as usize].class) {
+            let hole = !self.fill_holes || self.cover_cell(p).is_some_and(|c| self.cover[c] < self.hole_below);
+            if !self.occupied(p, self.reference.elems[j as usize].class) && (hole || !self.fill_holes) {
                 self.add(p, j);
                 added += 1;
             }
@@ -461,7 +597,15 @@ pub fn grow(elems: &[Element], opts: &GrowOptions, progress: &mut Throttle) -> R
         )));
     }
     let max_radius = reference.pair_radius.iter().copied().fold(reference.cross_radius, f64::max);
-    let cap = opts.max_elements;
+    // Coverage cells about half a window across (wider than any gap of a regular
+    // pattern, so only irregular input leaves holes), tiling the area exactly.
+    let cover_size = (0.5 * reference.window_radius).max(3.0 * reference.spacing);
+    let cols = (area.width() / cover_size).round().max(1.0);
+    let rows = (area.height() / cover_size).round().max(1.0);
+    let cover_dims = (cols as usize, rows as usize, area.width() / cols, area.height() / rows);
+    if (cover_dims.0 as f64) * (cover_dims.1 as f64) > 4.0 * opts.max_elements as f64 {
+        return Err(Error::TooLarge("The output is too large for the spacing of these strokes.".into()));
+    }
     let mut target = Target {
         reference: &reference,
         area,
@@ -475,6 +619,10 @@ pub fn grow(elems: &[Element], opts: &GrowOptions, progress: &mut Throttle) -> R
         stamp: 0,
         pairs: Vec::new(),
         previous: Vec::new(),
+        cover: vec![0; cover_dims.0 * cover_dims.1],
+        cover_dims,
+        fill_holes: false,
+        hole_below: (0.9 * reference.density() * cover_dims.2 * cover_dims.3).max(1.0) as u32,
     };
     let bounds = elems.iter().fold(Rect::from_points(elems[0].pos, elems[0].pos), |r, e| r.union_pt(e.pos));
     let shift = area.center() - bounds.center();
@@ -485,57 +633,15 @@ pub fn grow(elems: &[Element], opts: &GrowOptions, progress: &mut Throttle) -> R
         }
     }
 
-    let centre = area.center();
-    let key = |p: Point| (p - centre).hypot2().to_bits();
-    let mut queue: BinaryHeap<Reverse<(u64, u32)>> =
-        target.placed.iter().enumerate().map(|(i, e)| Reverse((key(e.pos), i as u32))).collect();
     let mut stats = GrowStats::default();
-    let mut processed = 0usize;
-    let mut candidates: Vec<Candidate> = Vec::new();
-    while let Some(Reverse((_, gi))) = queue.pop() {
-        processed += 1;
-        progress.tick(processed as f64 / estimate.max(target.placed.len() as f64).max(1.0))?;
-        let g = target.placed[gi as usize];
-        if opts.frontier_first && target.full(gi as usize) {
-            stats.skipped_full += 1;
-            continue;
-        }
-        stats.growing_points += 1;
-        candidates.clear();
-        let mut most_pairs = 0;
-        // The growing point's own source first: it usually pairs the most, which lets
-        // the weak candidates after it be dropped early.
-        let own = std::iter::once(g.source);
-        let others = reference.by_class[g.class as usize].iter().copied().filter(|&r| r != g.source);
-        for r in own.chain(others) {
-            let need = (PRUNE * most_pairs as f64).ceil() as usize;
-            let eligible = (opts.support * most_pairs as f64).ceil() as usize;
-            let Some(c) = target.evaluate(g.pos, r, need, eligible) else { continue };
-            most_pairs = most_pairs.max(c.pairs);
-            if c.adds > 0 {
-                candidates.push(c);
-            }
-        }
-        stats.candidates += reference.by_class[g.class as usize].len();
-        let need = (opts.support * most_pairs as f64).ceil() as usize;
-        let tiny = reference.pair_radius[g.class as usize].powi(2) * 1e-9;
-        let best = candidates.iter().filter(|c| c.pairs >= need.max(1)).min_by(|a, b| {
-            let ea = (a.error / tiny.max(1e-300)).floor();
-            let eb = (b.error / tiny.max(1e-300)).floor();
-            ea.total_cmp(&eb).then(b.pairs.cmp(&a.pairs)).then(b.adds.cmp(&a.adds))
-        });
-        let Some(best) = best.copied() else {
-            stats.passed_over += 1;
-            continue;
-        };
-        let before = target.placed.len();
-        target.stamp_candidate(&best);
-        for i in before..target.placed.len() {
-            queue.push(Reverse((key(target.placed[i].pos), i as u32)));
-        }
-        if target.placed.len() > cap {
-            return Err(Error::TooLarge(format!("Growth passed the limit of {cap} elements.")));
-        }
+    let all: Vec<u32> = (0..target.placed.len() as u32).collect();
+    target.run(&all, opts, false, estimate, progress, &mut stats)?;
+    // Irregular input leaves the area partly empty (no candidate is well supported):
+    // fill what is left with the candidates that add the most, so the output is
+    // still covered, as a person would expect, with the example's local arrangement.
+    if !reference.is_row() && target.holes() > 0 {
+        let all: Vec<u32> = (0..target.placed.len() as u32).collect();
+        target.run(&all, opts, true, estimate, progress, &mut stats)?;
     }
     progress.tick(1.0)?;
     Ok((target.placed, stats))

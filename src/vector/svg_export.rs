@@ -55,25 +55,25 @@ pub fn path_element(s: &Stroke) -> String {
     let mut e = format!("<path d=\"{}\"", path_data(s));
     match s.fill {
         Some(c) => {
-            let _ = writeln!(e, " fill=\"{}\"", c.to_hex());
+            let _ = write!(e, " fill=\"{}\"", c.to_hex());
             if s.fill_opacity < 1.0 {
-                let _ = writeln!(e, " fill-opacity=\"{}\"", num(s.fill_opacity));
+                let _ = write!(e, " fill-opacity=\"{}\"", num(s.fill_opacity));
             }
         }
         None => e.push_str(" fill=\"none\""),
     }
     match s.stroke {
         Some(c) => {
-            let _ = writeln!(e, " stroke=\"{}\" stroke-width=\"{}\"", c.to_hex(), num(s.width));
+            let _ = write!(e, " stroke=\"{}\" stroke-width=\"{}\"", c.to_hex(), num(s.width));
             e.push_str(" stroke-linecap=\"round\" stroke-linejoin=\"round\"");
             if s.stroke_opacity < 1.0 {
-                let _ = writeln!(e, " stroke-opacity=\"{}\"", num(s.stroke_opacity));
+                let _ = write!(e, " stroke-opacity=\"{}\"", num(s.stroke_opacity));
             }
         }
         None => e.push_str(" stroke=\"none\""),
     }
     if s.opacity < 1.0 {
-        let _ = writeln!(e, " opacity=\"{}\"", num(s.opacity));
+        let _ = write!(e, " opacity=\"{}\"", num(s.opacity));
     }
     e.push_str("/>");
     e

@@ -12,7 +12,7 @@ use serde::{Deserialize, Serialize};
 use usvg::tiny_skia_path::PathSegment;
 
 #[derive(Clone, Debug, Deserialize)]
-#[serde(rename_all = "camelCase", default)]
+#[serde(rename_all = "camelCase", default, deny_unknown_fields)]
 pub struct ImportOptions {
     /// Maximum distance between a curve and its flattened polyline, in user units.
     pub tolerance: f64,

@@ -1,0 +1,33 @@
+//! Writes the synthesized SVG of every exemplar family (and an irregular example) to
+//! out/, to look at: `cargo run --release --example export_svgs`.
+use patternsynth::vector::exemplar::families;
+use patternsynth::vector::svg_export::to_svg;
+use patternsynth::vector::{synthesize_strokes, Rgb, Stroke, StrokeOptions};
+use patternsynth::Silent;
+
+fn main() -> std::io::Result<()> {
+    std::fs::create_dir_all("out")?;
+    let mut sets: Vec<(String, Vec<Stroke>)> =
+        families(0.02, 11).into_iter().map(|e| (e.name.to_string(), e.strokes)).collect();
+    let mut rng = patternsynth::rng::Rng::new(5);
+    sets.push((
+        "irregular".into(),
+        (0..40)
+            .map(|_| {
+                let (x, y) = (rng.next_f64() * 150.0, rng.next_f64() * 150.0);
+                Stroke::new(vec![[x, y], [x + 6.0, y + 6.0]], 1.5, Some(Rgb([30, 30, 30])))
+            })
+            .collect(),
+    ));
+    for (name, strokes) in sets {
+        let r = synthesize_strokes(
+            &strokes,
+            &StrokeOptions { width: 480.0, height: 400.0, ..Default::default() },
+            &mut Silent,
+        )
+        .expect("synthesis");
+        std::fs::write(format!("out/{name}.svg"), &r.svg)?;
+        std::fs::write(format!("out/{name}-example.svg"), to_svg(&strokes, 480.0, 400.0))?;
+    }
+    Ok(())
+}

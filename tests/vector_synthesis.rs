@@ -1,0 +1,203 @@
+//! The vector engine's contract beyond regularity: bad input, caps, determinism,
+//! variation, draw order, irregular input, progress and cancellation.
+
+use patternsynth::vector::exemplar::families;
+use patternsynth::vector::{synthesize_strokes, Rgb, Stroke, StrokeOptions};
+use patternsynth::{Error, Silent};
+
+fn grid() -> Vec<Stroke> {
+    families(0.02, 3).into_iter().find(|e| e.name == "grid").unwrap().strokes
+}
+
+fn opts(w: f64, h: f64) -> StrokeOptions {
+    StrokeOptions { width: w, height: h, ..Default::default() }
+}
+
+#[test]
+fn bad_input_is_a_clear_error() {
+    let g = grid();
+    let cases: Vec<(Vec<Stroke>, StrokeOptions, &str)> = vec![
+        (vec![], opts(100.0, 100.0), "no strokes"),
+        (vec![Stroke::new(vec![[f64::NAN, 1.0]], 1.0, None)], opts(100.0, 100.0), "finite"),
+        (vec![Stroke::new(vec![], 1.0, None)], opts(100.0, 100.0), "no points"),
+        (g[..1].to_vec(), opts(100.0, 100.0), "at least two"),
+        (vec![g[0].clone(), g[0].clone()], opts(100.0, 100.0), "same point"),
+        (g.clone(), opts(f64::NAN, 100.0), "positive"),
+        (g.clone(), opts(-5.0, 100.0), "positive"),
+        (g.clone(), opts(1e7, 1e7), "limit"),
+        (g.clone(), StrokeOptions { path_tolerance: Some(-1.0), ..opts(100.0, 100.0) }, "tolerance"),
+        (g.clone(), StrokeOptions { support: 0.0, ..opts(100.0, 100.0) }, "support"),
+    ];
+    for (strokes, o, want) in cases {
+        let e = synthesize_strokes(&strokes, &o, &mut Silent).expect_err(want).to_string();
+        assert!(e.contains(want), "expected '{want}' in '{e}'");
+    }
+}
+
+/// Two classes by colour; members of a class differ slightly in length.
+fn varied_row() -> Vec<Stroke> {
+    let mut strokes = Vec::new();
+    for i in 0..8 {
+        let len = 10.0 + (i % 4) as f64 * 0.3;
+        let color = if i % 2 == 0 { [200, 0, 0] } else { [0, 0, 200] };
+        strokes.push(Stroke::new(
+            vec![[20.0 + i as f64 * 20.0, 20.0], [20.0 + i as f64 * 20.0, 20.0 + len]],
+            2.0,
+            Some(Rgb(color)),
+        ));
+    }
+    strokes
+}
+
+#[test]
+fn same_seed_same_output_and_seed_changes_variation() {
+    let row = varied_row();
+    let a = synthesize_strokes(&row, &opts(400.0, 60.0), &mut Silent).unwrap();
+    let b = synthesize_strokes(&row, &opts(400.0, 60.0), &mut Silent).unwrap();
+    assert!(a.svg == b.svg, "same seed, same SVG");
+    let c = synthesize_strokes(&row, &StrokeOptions { seed: 99, ..opts(400.0, 60.0) }, &mut Silent).unwrap();
+    assert_eq!(a.sources, c.sources, "the seed changes attributes, not positions");
+    assert!(a.svg != c.svg, "variation draws other class members under another seed");
+}
+
+#[test]
+fn variation_off_keeps_the_copied_stroke_and_on_uses_class_members() {
+    let strokes = varied_row();
+    let off =
+        synthesize_strokes(&strokes, &StrokeOptions { variation: false, ..opts(400.0, 60.0) }, &mut Silent).unwrap();
+    for (s, &src) in off.strokes.iter().zip(&off.sources) {
+        let src = &strokes[src as usize];
+        assert_eq!(s.stroke, src.stroke);
+        assert!((s.bounds().height() - src.bounds().height()).abs() < 1e-9);
+    }
+    let on = synthesize_strokes(&strokes, &opts(400.0, 60.0), &mut Silent).unwrap();
+    let mut lengths: Vec<u64> = on.strokes.iter().map(|s| (s.bounds().height() * 10.0).round() as u64).collect();
+    lengths.sort();
+    lengths.dedup();
+    assert!(lengths.len() >= 3, "members of each class are drawn: {lengths:?}");
+    for (s, &src) in on.strokes.iter().zip(&on.sources) {
+        assert_eq!(s.stroke, strokes[src as usize].stroke, "variation stays within the class");
+    }
+}
+
+#[test]
+fn draw_order_follows_the_example() {
+    // A filled disc drawn first, a dash drawn over it, repeated on a grid.
+    let mut strokes = Vec::new();
+    for i in 0..4 {
+        for j in 0..4 {
+            let (x, y) = (20.0 + i as f64 * 30.0, 20.0 + j as f64 * 30.0);
+            let mut disc = Stroke::new(
+                (0..12)
+                    .map(|k| {
+                        let a = k as f64 * std::f64::consts::TAU / 12.0;
+                        [x + 8.0 * a.cos(), y + 8.0 * a.sin()]
+                    })
+                    .collect(),
+                0.0,
+                None,
+            );
+            disc.fill = Some(Rgb([250, 220, 0]));
+            disc.closed = true;
+            strokes.push(disc);
+            strokes.push(Stroke::new(vec![[x - 5.0, y], [x + 5.0, y]], 2.0, Some(Rgb([0, 0, 0]))));
+        }
+    }
+    let r = synthesize_strokes(&strokes, &opts(300.0, 300.0), &mut Silent).unwrap();
+    // Each dash is drawn after the disc it sits on, as in the example.
+    let mut dashes = 0;
+    for (i, s) in r.strokes.iter().enumerate().filter(|(_, s)| s.stroke.is_some()) {
+        let p = s.reference_point();
+        let disc = r.strokes.iter().position(|d| d.fill.is_some() && d.reference_point().distance(p) < 1.0);
+        if let Some(d) = disc {
+            assert!(d < i, "disc {d} drawn after its dash {i}");
+            dashes += 1;
+        }
+    }
+    assert!(dashes > 70, "{dashes} dashes on discs");
+    assert!(r.svg.contains("fill=\"#fadc00\"") && r.svg.contains("stroke=\"none\""), "fill-only shapes survive");
+}
+
+#[test]
+fn irregular_input_degrades_gracefully() {
+    // Random positions: no lattice to find. No crash, no pile-ups, the area still covered.
+    let mut rng = patternsynth::rng::Rng::new(5);
+    let strokes: Vec<Stroke> = (0..40)
+        .map(|_| {
+            let (x, y) = (rng.next_f64() * 150.0, rng.next_f64() * 150.0);
+            Stroke::new(vec![[x, y], [x + 6.0, y + 6.0]], 1.5, Some(Rgb([30, 30, 30])))
+        })
+        .collect();
+    let r = synthesize_strokes(&strokes, &opts(450.0, 450.0), &mut Silent).unwrap();
+    let pts: Vec<_> = r.strokes.iter().map(|s| s.reference_point()).collect();
+    let mut nn: Vec<f64> = strokes
+        .iter()
+        .enumerate()
+        .map(|(i, a)| {
+            strokes
+                .iter()
+                .enumerate()
+                .filter(|&(j, _)| j != i)
+                .map(|(_, b)| a.reference_point().distance(b.reference_point()))
+                .fold(f64::MAX, f64::min)
+        })
+        .collect();
+    nn.sort_by(|a, b| a.total_cmp(b));
+    let spacing = nn[nn.len() / 2];
+    let mut closest = f64::MAX;
+    for i in 0..pts.len() {
+        for j in i + 1..pts.len() {
+            closest = closest.min(pts[i].distance(pts[j]));
+        }
+    }
+    assert!(closest > 0.25 * spacing, "pile-up: {closest} vs spacing {spacing}");
+    // Cells of 4 spacings: even a uniform random layout leaves only ~3% of them empty.
+    let cell = 4.0 * spacing;
+    let n = (450.0 / cell).floor() as usize;
+    let mut hit = vec![false; n * n];
+    for p in &pts {
+        let (cx, cy) = ((p.x / cell) as usize, (p.y / cell) as usize);
+        if cx < n && cy < n {
+            hit[cy * n + cx] = true;
+        }
+    }
+    let covered = hit.iter().filter(|&&h| h).count() as f64 / hit.len() as f64;
+    assert!(covered > 0.85, "area covered {covered}");
+    let density_in = 40.0 / (150.0 * 150.0);
+    let density_out = pts.len() as f64 / (450.0 * 450.0);
+    assert!(density_out > 0.6 * density_in, "density {density_out} vs example {density_in}");
+}
+
+#[test]
+fn progress_is_monotone_and_cancel_stops() {
+    let g = grid();
+    let mut seen = Vec::new();
+    let mut record = |f: f64| {
+        seen.push(f);
+        true
+    };
+    synthesize_strokes(&g, &opts(600.0, 600.0), &mut record).unwrap();
+    assert!(seen.len() > 10);
+    assert!(seen.windows(2).all(|w| w[1] >= w[0]), "monotone");
+    assert_eq!(*seen.last().unwrap(), 1.0);
+    let mut calls = 0;
+    let mut cancel = |_: f64| {
+        calls += 1;
+        calls < 5
+    };
+    assert_eq!(synthesize_strokes(&g, &opts(600.0, 600.0), &mut cancel).unwrap_err(), Error::Cancelled);
+}
+
+#[test]
+fn svg_output_is_valid_xml_with_finite_numbers() {
+    let r = synthesize_strokes(&grid(), &opts(200.0, 150.0), &mut Silent).unwrap();
+    let doc = usvg::roxmltree::Document::parse(&r.svg).expect("well-formed XML");
+    let root = doc.root_element();
+    assert_eq!(root.attribute("viewBox"), Some("0 0 200 150"));
+    let paths: Vec<_> = root.children().filter(|n| n.has_tag_name("path")).collect();
+    assert_eq!(paths.len(), r.strokes.len());
+    for p in paths {
+        let d = p.attribute("d").unwrap();
+        assert!(!d.contains("NaN") && !d.contains("inf"), "{d}");
+    }
+}
