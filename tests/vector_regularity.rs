@@ -47,3 +47,16 @@ fn every_family_grows_to_its_lattice() {
     }
     assert!(failures.is_empty(), "{failures:#?}");
 }
+
+#[test]
+fn busy_tile_repeat_grows_to_its_periodic_extension() {
+    // 3x3 repeat of a tile of 120 elements (1,080 in the example), 8x8 periods out.
+    let ex = patternsynth::vector::exemplar::busy_tile(120, 100.0, 7.0, 3, 21);
+    assert!(ex.lattice.motif.len() >= 110, "{}", ex.lattice.motif.len());
+    let (r, n, classes) = run(&ex, 800.0, 800.0);
+    println!("busy-tile: example {} out {n} {r:?} classes {classes}", ex.strokes.len());
+    assert_eq!(classes, 3);
+    assert!(r.coverage >= 0.999, "{r:?}");
+    assert_eq!((r.stray, r.stacked), (0, 0), "{r:?}");
+    assert!(r.p95_residual < 0.01, "no drift: {r:?}");
+}

@@ -40,8 +40,9 @@ impl Lattice {
         best
     }
 
-    /// Every site whose position falls within `[x0, x1] x [y0, y1]`.
-    pub fn sites_in(&self, x0: f64, y0: f64, x1: f64, y1: f64) -> Vec<(Point, u32)> {
+    /// Every site whose position falls within `[x0, x1] x [y0, y1]`: position, class,
+    /// cell indices `i`, `j` and motif offset.
+    pub fn sites_in(&self, x0: f64, y0: f64, x1: f64, y1: f64) -> Vec<(Point, u32, i64, i64, Vec2)> {
         // Enough periods to cover the box from the origin in every direction.
         let reach = (x1 - x0).abs() + (y1 - y0).abs() + (self.origin.x - x0).abs() + (self.origin.y - y0).abs();
         let b = self.b.unwrap_or(Vec2::ZERO);
@@ -55,7 +56,7 @@ impl Lattice {
                 for &(m, c) in &self.motif {
                     let p = self.origin + self.a * i as f64 + b * j as f64 + m;
                     if p.x >= x0 && p.x <= x1 && p.y >= y0 && p.y <= y1 {
-                        out.push((p, c));
+                        out.push((p, c, i, j, m));
                     }
                 }
             }
@@ -229,4 +230,42 @@ pub fn families(jitter: f64, seed: u64) -> Vec<Exemplar> {
             seed + 7,
         ),
     ]
+}
+
+/// A busy tile: `count` elements of three kinds at random places (at least `gap` apart,
+/// across tile edges too) in a `period`-square tile, repeated `reps x reps` exactly, as
+/// an imported SVG tile would be. A periodic pattern with an irregular motif.
+pub fn busy_tile(count: usize, period: f64, gap: f64, reps: i32, seed: u64) -> Exemplar {
+    let mut rng = Rng::new(seed);
+    let mut motif: Vec<(Vec2, u32)> = Vec::new();
+    let mut tries = 0;
+    while motif.len() < count && tries < count * 200 {
+        tries += 1;
+        let p = Vec2::new(rng.next_f64() * period, rng.next_f64() * period);
+        let clear = motif.iter().all(|(q, _)| {
+            let d = *q - p;
+            // Distance on the torus: the tile repeats.
+            let dx = d.x.abs().min(period - d.x.abs());
+            let dy = d.y.abs().min(period - d.y.abs());
+            dx.hypot(dy) >= gap
+        });
+        if clear {
+            motif.push((p, rng.below(3) as u32));
+        }
+    }
+    let lattice =
+        Lattice { origin: Point::new(10.0, 10.0), a: Vec2::new(period, 0.0), b: Some(Vec2::new(0.0, period)), motif };
+    build(
+        "busy-tile",
+        lattice,
+        reps,
+        reps,
+        |p, c| match c {
+            0 => dash(p, Vec2::new(0.0, 6.0), 1.5, [30, 30, 30]),
+            1 => ring(p, 3.0, Some([200, 80, 40]), None),
+            _ => chevron(p, 6.0, [40, 90, 160]),
+        },
+        0.0,
+        seed,
+    )
 }

@@ -98,6 +98,11 @@ struct Reference<'a> {
     spacing: f64,
     /// Radius of the windows.
     window_radius: f64,
+    /// The reference elements, indexed by position.
+    grid: Grid,
+    /// Elements with neighbours in every direction within the conflict radius and a
+    /// spacing: their neighbourhood in the example is complete.
+    surrounded: Vec<bool>,
 }
 
 fn nearest_distances(elems: &[Element], same_class: bool, skip_coincident: bool, grid: &Grid, scale: f64) -> Vec<f64> {
@@ -124,6 +129,25 @@ fn nearest_distances(elems: &[Element], same_class: bool, skip_coincident: bool,
                 }
                 radius *= 4.0;
             }
+        })
+        .collect()
+}
+
+/// Whether each element has another within `radius` in each of eight 45-degree sectors.
+fn surrounded(elems: &[Element], grid: &Grid, radius: f64) -> Vec<bool> {
+    elems
+        .iter()
+        .map(|e| {
+            let mut sectors = 0u8;
+            grid.for_each_near(e.pos, radius, |j| {
+                let o = elems[j as usize].pos - e.pos;
+                let d2 = o.hypot2();
+                if d2 > 0.0 && d2 <= radius * radius {
+                    let k = ((o.y.atan2(o.x) + std::f64::consts::PI) / std::f64::consts::FRAC_PI_4) as u32 % 8;
+                    sectors |= 1 << k;
+                }
+            });
+            sectors == 0xFF
         })
         .collect()
 }
@@ -262,6 +286,8 @@ impl<'a> Reference<'a> {
             full_count,
             spacing,
             window_radius,
+            surrounded: surrounded(elems, &grid, CONFLICT_RADIUS * spacing + spacing),
+            grid,
         })
     }
 
@@ -271,6 +297,17 @@ impl<'a> Reference<'a> {
         let b =
             self.elems.iter().fold(Rect::from_points(self.elems[0].pos, self.elems[0].pos), |r, e| r.union_pt(e.pos));
         b.width().min(b.height()) < self.spacing
+    }
+
+    /// Whether an element of `class` lies within its pairing radius of `p`.
+    fn has(&self, p: Point, class: u32) -> bool {
+        let d = self.pair_radius[class as usize];
+        let mut hit = false;
+        self.grid.for_each_near(p, d, |j| {
+            let e = &self.elems[j as usize];
+            hit |= e.class == class && (e.pos - p).hypot2() < d * d;
+        });
+        hit
     }
 
     fn density(&self) -> f64 {
@@ -307,8 +344,10 @@ struct Target<'r, 'a> {
     cover_dims: (usize, usize, f64, f64),
     /// Second phase: stamp only into holes.
     fill_holes: bool,
+    /// The growing point's nearest neighbours (offset, class), for the candidate pre-test.
+    sig: Vec<(Vec2, u32)>,
     /// Filling holes adds to cells with fewer elements than this (0.9 of the example's
-    /// density); a cell with less than half of it is a hole that starts the filling.
+    /// density); an empty cell is a hole that starts the filling.
     hole_below: u32,
 }
 
@@ -318,6 +357,12 @@ const MAX_REFINEMENTS: usize = 4;
 /// count so far is dropped before refinement: refinement moves `t` by under a pairing
 /// radius, which cannot lift it to the support ratio (0.6).
 const PRUNE: f64 = 0.45;
+
+/// Radius, in spacings, within which a new element's neighbours must agree with the example.
+const CONFLICT_RADIUS: f64 = 1.25;
+
+/// Nearest neighbours of a growing point that a candidate must reproduce to be evaluated.
+const SIGNATURE: usize = 4;
 
 impl<'r, 'a> Target<'r, 'a> {
     fn inside(&self, p: Point) -> bool {
@@ -423,7 +468,22 @@ impl<'r, 'a> Target<'r, 'a> {
         }
         let pairs = self.pairs.len();
         // A candidate short of the support ratio so far can never be chosen: skip counting.
-        let adds = if pairs >= eligible.max(1) { self.unpaired(r, origin + base + delta).count() } else { 0 };
+        let mut adds = 0;
+        if pairs >= eligible.max(1) {
+            let mut conflicts = 0;
+            for (j, p) in self.unpaired(r, origin + base + delta) {
+                if !self.fill_holes && self.conflicts(j, p) {
+                    conflicts += 1;
+                } else {
+                    adds += 1;
+                }
+            }
+            // A candidate whose new elements would sit among existing ones that the
+            // example does not have there is misaligned: its adds are strays.
+            if conflicts > 0 {
+                adds = 0;
+            }
+        }
         Some(Candidate { source: r, delta: base + delta, pairs, error, adds })
     }
 
@@ -443,6 +503,32 @@ impl<'r, 'a> Target<'r, 'a> {
             let wanted = !self.fill_holes || self.cover_cell(p).is_some_and(|c| self.cover[c] < self.hole_below);
             (free && wanted).then_some((j, p))
         })
+    }
+
+    /// Whether placing reference element `j` at `p` contradicts the target: a target
+    /// element close to `p` with no counterpart at the same offset from `j` in the
+    /// example. Only elements surrounded in the example are judged (elsewhere a missing
+    /// counterpart may just lie beyond the example's edge).
+    fn conflicts(&self, j: u32, p: Point) -> bool {
+        let reference = self.reference;
+        if !reference.surrounded[j as usize] {
+            return false;
+        }
+        let rho = CONFLICT_RADIUS * reference.spacing;
+        let rj = reference.elems[j as usize].pos;
+        let mut conflict = false;
+        self.grid.for_each_near(p, rho, |id| {
+            if conflict {
+                return;
+            }
+            let q = &self.placed[id as usize];
+            let o = q.pos - p;
+            let x = rj + o;
+            if o.hypot2() < rho * rho && !reference.has(x, q.class) {
+                conflict = true;
+            }
+        });
+        conflict
     }
 
     /// Whether the neighbourhood of target element `e` is already as populated as a
@@ -499,7 +585,15 @@ impl<'r, 'a> Target<'r, 'a> {
             // the weak candidates after it be dropped early.
             let own = std::iter::once(g.source);
             let others = reference.by_class[g.class as usize].iter().copied().filter(|&r| r != g.source);
+            if !relaxed {
+                self.signature(gi);
+            }
             for r in own.chain(others) {
+                // Cheap test first: the growing point's nearest neighbours must be found
+                // around `r` too (all but one of them: `r` may sit on the example's edge).
+                if !relaxed && !self.matches_signature(r) {
+                    continue;
+                }
                 let factor = if relaxed { (0.0, 0.0) } else { (PRUNE, opts.support) };
                 let need = (factor.0 * most_pairs as f64).ceil() as usize;
                 let eligible = (factor.1 * most_pairs as f64).ceil() as usize;
@@ -546,7 +640,7 @@ impl<'r, 'a> Target<'r, 'a> {
 
     /// Coverage cells (a window across) that hold no element.
     fn holes(&self) -> usize {
-        self.cover.iter().filter(|&&c| c < self.hole_below.div_ceil(2)).count()
+        self.cover.iter().filter(|&&c| c == 0).count()
     }
 
     /// Whether an empty coverage cell touches the window around `p`.
@@ -558,6 +652,29 @@ impl<'r, 'a> Target<'r, 'a> {
         let x1 = (((p.x + r - self.area.x0) / sx).floor().max(0.0) as usize).min(cols - 1);
         let y1 = (((p.y + r - self.area.y0) / sy).floor().max(0.0) as usize).min(rows - 1);
         (y0..=y1).any(|y| (x0..=x1).any(|x| self.cover[y * cols + x] < self.hole_below))
+    }
+
+    /// Records the offsets and classes of the few target elements nearest to `gi`.
+    fn signature(&mut self, gi: u32) {
+        let g = self.placed[gi as usize].pos;
+        let radius = 1.5 * self.reference.spacing;
+        let mut near: Vec<(f64, Vec2, u32)> = Vec::new();
+        self.grid.for_each_near(g, radius, |id| {
+            let e = &self.placed[id as usize];
+            let d2 = (e.pos - g).hypot2();
+            if id != gi && d2 < radius * radius {
+                near.push((d2, e.pos - g, e.class));
+            }
+        });
+        near.sort_by(|a, b| a.0.total_cmp(&b.0));
+        self.sig.clear();
+        self.sig.extend(near.iter().take(SIGNATURE).map(|&(_, o, c)| (o, c)));
+    }
+
+    fn matches_signature(&self, r: u32) -> bool {
+        let at = self.reference.elems[r as usize].pos;
+        let found = self.sig.iter().filter(|&&(o, c)| self.reference.has(at + o, c)).count();
+        found + 1 >= self.sig.len()
     }
 
     /// Applies candidate `c` at growing point `g`: adds every free window element.
@@ -622,6 +739,7 @@ pub fn grow(elems: &[Element], opts: &GrowOptions, progress: &mut Throttle) -> R
         cover: vec![0; cover_dims.0 * cover_dims.1],
         cover_dims,
         fill_holes: false,
+        sig: Vec::new(),
         hole_below: (0.9 * reference.density() * cover_dims.2 * cover_dims.3).max(1.0) as u32,
     };
     let bounds = elems.iter().fold(Rect::from_points(elems[0].pos, elems[0].pos), |r, e| r.union_pt(e.pos));
