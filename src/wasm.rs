@@ -131,6 +131,23 @@ pub fn classify_strokes(
     )
 }
 
+#[derive(serde::Serialize)]
+struct NamedExample {
+    name: &'static str,
+    strokes: Vec<vector::Stroke>,
+}
+
+/// Built-in example drawings (the families the engine is tested on), for a page to
+/// start from.
+#[wasm_bindgen(js_name = exampleStrokes, unchecked_return_type = "{ name: string; strokes: Stroke[] }[]")]
+pub fn example_strokes() -> Result<JsValue, JsValue> {
+    let list: Vec<NamedExample> = vector::exemplar::families(0.015, 7)
+        .into_iter()
+        .map(|e| NamedExample { name: e.name, strokes: e.strokes })
+        .collect();
+    to_js(&list)
+}
+
 /// Grows a `width x height` pattern from example strokes.
 #[wasm_bindgen(js_name = synthesizeStrokes, unchecked_return_type = "StrokeResult")]
 pub fn synthesize_strokes(

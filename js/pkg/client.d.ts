@@ -15,6 +15,7 @@ export class PatternSynthClient {
   parseSvgReport(svg: string, opts?: ParseSvgOptions, options?: CallOptions): Promise<SvgImport>;
   classifyStrokes(strokes: Stroke[], opts?: ClassifyOptions, options?: CallOptions): Promise<Classification>;
   synthesizeStrokes(strokes: Stroke[], opts: StrokeOptions, options?: CallOptions): Promise<StrokeResult>;
+  exampleStrokes(options?: CallOptions): Promise<{ name: string; strokes: Stroke[] }[]>;
   version(): Promise<string>;
   terminate(): void;
 }

@@ -23,6 +23,7 @@ export class PatternSynthClient {
   parseSvgReport(svg, opts, options) { return this.run('parseSvgReport', [svg, opts], options); }
   classifyStrokes(strokes, opts, options) { return this.run('classifyStrokes', [strokes, opts], options); }
   synthesizeStrokes(strokes, opts, options) { return this.run('synthesizeStrokes', [strokes, opts], options); }
+  exampleStrokes(options) { return this.run('exampleStrokes', [], options); }
   version() { return this.run('version', []); }
 
   /** Stops the worker; pending calls are rejected. */

@@ -8,7 +8,7 @@
 import init, * as api from './patternsynth.js';
 
 const ready = init();
-const METHODS = new Set(['parseSvg', 'parseSvgReport', 'classifyStrokes', 'synthesizeStrokes', 'version']);
+const METHODS = new Set(['parseSvg', 'parseSvgReport', 'classifyStrokes', 'synthesizeStrokes', 'exampleStrokes', 'version']);
 const WITH_PROGRESS = new Set(['synthesizeStrokes']);
 
 self.onmessage = async ({ data }) => {

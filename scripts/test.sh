@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Runs every test: formatting and lints, the engines natively, the built package under
+# Node, and the playground end to end in headless Chromium. Installs what it needs.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/setup.sh --browser
+
+echo "== cargo fmt / clippy"
+cargo fmt --check
+cargo clippy --all-targets -- -D warnings
+cargo clippy --target wasm32-unknown-unknown --lib -- -D warnings
+
+echo "== native engine tests"
+cargo test --release
+
+echo "== package build"
+bash scripts/build.sh
+
+echo "== JS API under Node"
+node --test tests/node/
+
+echo "== playground in headless Chromium"
+mkdir -p out
+node --test tests/browser/

@@ -1,0 +1,124 @@
+// End to end in headless Chromium: draw strokes with pointer events, see classes,
+// synthesize in the worker, cancel a long run, download the SVG and check it, reload
+// and find the drawing kept. Leaves a screenshot in out/playground.png.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { mkdirSync, readFileSync } from 'node:fs';
+import { chromium } from 'playwright-core';
+import { CHROMIUM } from './chromium.mjs';
+import { serve } from '../../scripts/static-server.mjs';
+import { parseSvg } from '../../pkg/node.js';
+
+let server, browser, page, base;
+const SPACING = 40; // canvas pixels between drawn strokes
+
+before(async () => {
+  server = await serve('www', 0);
+  base = `http://127.0.0.1:${server.address().port}/`;
+  browser = await chromium.launch(CHROMIUM);
+  const context = await browser.newContext({ acceptDownloads: true, viewport: { width: 1400, height: 900 } });
+  page = await context.newPage();
+  page.on('pageerror', (e) => console.error('page error:', e.message));
+  await page.goto(base);
+  await page.waitForFunction(() => /[1-9]\d* strokes/.test(document.querySelector('#stroke-count').textContent));
+});
+
+after(async () => {
+  await browser?.close();
+  server?.close();
+});
+
+async function drawGrid() {
+  await page.click('#clear');
+  const box = await page.locator('#draw').boundingBox();
+  const sx = box.width / 800, sy = box.height / 500;
+  for (let j = 0; j < 4; j++) for (let i = 0; i < 5; i++) {
+    const x = 200 + i * SPACING, y = 150 + j * SPACING;
+    await page.mouse.move(box.x + x * sx, box.y + y * sy);
+    await page.mouse.down();
+    for (let k = 1; k <= 6; k++) await page.mouse.move(box.x + (x + 2 * k) * sx, box.y + (y + 2 * k) * sy);
+    await page.mouse.up();
+  }
+}
+
+test('a built-in example is there at once', async () => {
+  const text = await page.textContent('#stroke-count');
+  assert.match(text, /^[1-9]\d* strokes$/);
+});
+
+test('draw, classify, synthesize, download a periodic SVG', async () => {
+  await drawGrid();
+  assert.equal(await page.textContent('#stroke-count'), '20 strokes');
+  await page.waitForFunction(() => document.querySelectorAll('#legend .chip').length === 1);
+  assert.match(await page.textContent('#legend'), /class 1: 20/);
+
+  await page.fill('#out-width', '600');
+  await page.fill('#out-height', '400');
+  await page.click('#synthesize');
+  await page.waitForFunction(() => document.querySelector('#messages').textContent === 'Done.', null, { timeout: 60000 });
+  const [download] = await Promise.all([page.waitForEvent('download'), page.click('#download')]);
+  const svg = readFileSync(await download.path(), 'utf8');
+  assert.equal(download.suggestedFilename(), 'pattern.svg');
+
+  // Valid SVG that our own importer reads back, with a plausible element count.
+  const strokes = parseSvg(svg);
+  const expected = (600 / SPACING) * (400 / SPACING);
+  assert.ok(strokes.length > 0.85 * expected && strokes.length < 1.2 * expected, `${strokes.length} vs ~${expected}`);
+  assert.match(svg, /viewBox="0 0 600 400"/);
+  // Periodic layout: reference points share one phase modulo the drawn spacing.
+  const centres = strokes.map((s) => {
+    const xs = s.points.map((p) => p[0]), ys = s.points.map((p) => p[1]);
+    return [(Math.min(...xs) + Math.max(...xs)) / 2, (Math.min(...ys) + Math.max(...ys)) / 2];
+  });
+  const box = await page.locator('#draw').boundingBox();
+  const period = SPACING * (800 / box.width) * (box.width / 800); // canvas units = CSS pixels here
+  for (const axis of [0, 1]) {
+    let c = 0, s = 0;
+    for (const p of centres) {
+      const a = (2 * Math.PI * p[axis]) / period;
+      c += Math.cos(a); s += Math.sin(a);
+    }
+    const coherence = Math.hypot(c, s) / centres.length;
+    assert.ok(coherence > 0.97, `axis ${axis}: phase coherence ${coherence}`);
+  }
+  mkdirSync('out', { recursive: true });
+  await page.screenshot({ path: 'out/playground.png', fullPage: true });
+});
+
+test('a long run can be cancelled and the next run still works', async () => {
+  await page.fill('#out-width', '16000');
+  await page.fill('#out-height', '16000');
+  await page.click('#synthesize');
+  await page.waitForFunction(() => document.querySelector('#progress').value > 0.001, null, { timeout: 30000 });
+  await page.click('#cancel');
+  await page.waitForFunction(() => document.querySelector('#messages').textContent === 'Cancelled.');
+  assert.equal(await page.isDisabled('#synthesize'), false);
+  await page.fill('#out-width', '300');
+  await page.fill('#out-height', '200');
+  await page.click('#synthesize');
+  await page.waitForFunction(() => document.querySelector('#messages').textContent === 'Done.', null, { timeout: 60000 });
+  assert.match(await page.textContent('#result-info'), /300×200/);
+});
+
+test('bad input gets a clear message, not a crash', async () => {
+  await page.click('#clear');
+  await page.click('#synthesize');
+  await page.waitForFunction(() => document.querySelector('#messages .error'));
+  assert.match(await page.textContent('#messages'), /no strokes/i);
+  await page.click('#undo'); // the cleared drawing comes back
+  assert.equal(await page.textContent('#stroke-count'), '20 strokes');
+});
+
+test('importing an SVG replaces the drawing and reports dropped text', async () => {
+  const svg = '<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 100 100"><circle cx="20" cy="20" r="5" fill="red"/><circle cx="40" cy="20" r="5" fill="red"/><text x="5" y="90">hi</text></svg>';
+  await page.setInputFiles('#import-svg', { name: 'dots.svg', mimeType: 'image/svg+xml', buffer: Buffer.from(svg) });
+  await page.waitForFunction(() => document.querySelector('#stroke-count').textContent === '2 strokes');
+  assert.match(await page.textContent('#messages'), /text/);
+  await page.click('#undo');
+  assert.equal(await page.textContent('#stroke-count'), '20 strokes');
+});
+
+test('reloading keeps the drawing', async () => {
+  await page.reload();
+  await page.waitForFunction(() => document.querySelector('#stroke-count').textContent === '20 strokes');
+});

@@ -1,0 +1,177 @@
+// The drawing: strokes in canvas coordinates, pointer-event input (mouse, pen, touch),
+// undo/redo history, and rendering with an optional class overlay.
+
+/** Draws one stroke (polyline, maybe compound and closed) on a 2D context. */
+export function drawStroke(ctx, s) {
+  const pts = s.points;
+  if (!pts.length) return;
+  const starts = new Set(s.breaks ?? []);
+  ctx.beginPath();
+  pts.forEach(([x, y], i) => {
+    if (i === 0 || starts.has(i)) {
+      if (i > 0 && s.closed) ctx.closePath();
+      ctx.moveTo(x, y);
+    } else ctx.lineTo(x, y);
+  });
+  if (s.closed) ctx.closePath();
+  const alpha = s.opacity ?? 1;
+  if (s.fill) {
+    ctx.globalAlpha = alpha * (s.fillOpacity ?? 1);
+    ctx.fillStyle = s.fill;
+    ctx.fill();
+  }
+  if (s.stroke) {
+    ctx.globalAlpha = alpha * (s.strokeOpacity ?? 1);
+    ctx.strokeStyle = s.stroke;
+    ctx.lineWidth = Math.max(s.width, 0.5);
+    if (pts.length === 1) {
+      ctx.beginPath();
+      ctx.arc(pts[0][0], pts[0][1], Math.max(s.width, 1) / 2, 0, Math.PI * 2);
+      ctx.fillStyle = s.stroke;
+      ctx.fill();
+    } else ctx.stroke();
+  }
+  ctx.globalAlpha = 1;
+}
+
+export function bounds(strokes) {
+  let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
+  for (const s of strokes) for (const [x, y] of s.points) {
+    const r = (s.stroke ? s.width : 0) / 2;
+    x0 = Math.min(x0, x - r); y0 = Math.min(y0, y - r); x1 = Math.max(x1, x + r); y1 = Math.max(y1, y + r);
+  }
+  return { x0, y0, x1, y1 };
+}
+
+/** Scales and moves strokes to fit a `w x h` box with a margin (never enlarging by more than 4x). */
+export function fitStrokes(strokes, w, h, margin = 20) {
+  if (!strokes.length) return strokes;
+  const b = bounds(strokes);
+  const bw = Math.max(b.x1 - b.x0, 1e-6), bh = Math.max(b.y1 - b.y0, 1e-6);
+  const k = Math.min((w - 2 * margin) / bw, (h - 2 * margin) / bh, 4);
+  const dx = (w - bw * k) / 2 - b.x0 * k, dy = (h - bh * k) / 2 - b.y0 * k;
+  return strokes.map((s) => ({ ...s, width: s.width * k, points: s.points.map(([x, y]) => [x * k + dx, y * k + dy]) }));
+}
+
+export class Drawing {
+  constructor(canvas, { onChange, getPen }) {
+    this.canvas = canvas;
+    this.ctx = canvas.getContext('2d');
+    this.onChange = onChange;
+    this.getPen = getPen;
+    this.strokes = [];
+    this.past = [];
+    this.future = [];
+    this.classes = null;
+    this.colors = [];
+    this.live = null;
+    this.logical = { w: canvas.width, h: canvas.height };
+    this.resize();
+    this.listen();
+  }
+
+  resize() {
+    const dpr = window.devicePixelRatio || 1;
+    this.canvas.width = this.logical.w * dpr;
+    this.canvas.height = this.logical.h * dpr;
+    this.canvas.style.width = `${this.logical.w}px`;
+    this.ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+    this.render();
+  }
+
+  /** Replaces the strokes; the previous drawing goes on the undo stack. */
+  set(strokes, { record = true } = {}) {
+    if (record) {
+      this.past.push(this.strokes);
+      if (this.past.length > 200) this.past.shift();
+      this.future = [];
+    }
+    this.strokes = strokes;
+    this.classes = null;
+    this.render();
+    this.onChange?.(this.strokes);
+  }
+
+  undo() {
+    if (!this.past.length) return;
+    this.future.push(this.strokes);
+    this.strokes = this.past.pop();
+    this.classes = null;
+    this.render();
+    this.onChange?.(this.strokes);
+  }
+
+  redo() {
+    if (!this.future.length) return;
+    this.past.push(this.strokes);
+    this.strokes = this.future.pop();
+    this.classes = null;
+    this.render();
+    this.onChange?.(this.strokes);
+  }
+
+  showClasses(classes, colors) {
+    this.classes = classes;
+    this.colors = colors;
+    this.render();
+  }
+
+  render() {
+    const { ctx } = this;
+    ctx.clearRect(0, 0, this.logical.w, this.logical.h);
+    for (const s of this.strokes) drawStroke(ctx, s);
+    if (this.live) drawStroke(ctx, this.live);
+    if (this.classes && this.classes.length === this.strokes.length) {
+      ctx.save();
+      ctx.setLineDash([3, 2]);
+      ctx.lineWidth = 1;
+      this.strokes.forEach((s, i) => {
+        const b = bounds([s]);
+        ctx.strokeStyle = this.colors[this.classes[i] % this.colors.length];
+        ctx.strokeRect(b.x0 - 2, b.y0 - 2, b.x1 - b.x0 + 4, b.y1 - b.y0 + 4);
+      });
+      ctx.restore();
+    }
+  }
+
+  point(e) {
+    const r = this.canvas.getBoundingClientRect();
+    return [((e.clientX - r.left) * this.logical.w) / r.width, ((e.clientY - r.top) * this.logical.h) / r.height];
+  }
+
+  listen() {
+    const c = this.canvas;
+    c.addEventListener('pointerdown', (e) => {
+      if (e.button !== 0) return;
+      c.setPointerCapture(e.pointerId);
+      const pen = this.getPen();
+      this.live = {
+        points: [this.point(e)],
+        width: pen.width,
+        stroke: pen.strokeOn ? pen.stroke : null,
+        fill: pen.fillOn ? pen.fill : null,
+        closed: pen.fillOn,
+      };
+      this.render();
+    });
+    c.addEventListener('pointermove', (e) => {
+      if (!this.live) return;
+      const events = e.getCoalescedEvents ? e.getCoalescedEvents() : [e];
+      for (const ev of events.length ? events : [e]) {
+        const p = this.point(ev);
+        const last = this.live.points[this.live.points.length - 1];
+        if (Math.hypot(p[0] - last[0], p[1] - last[1]) >= 1.5) this.live.points.push(p);
+      }
+      this.render();
+    });
+    const finish = (keep) => {
+      if (!this.live) return;
+      const s = this.live;
+      this.live = null;
+      if (keep && (s.stroke || s.fill)) this.set([...this.strokes, s]);
+      else this.render();
+    };
+    c.addEventListener('pointerup', () => finish(true));
+    c.addEventListener('pointercancel', () => finish(false));
+  }
+}

@@ -1,0 +1,232 @@
+// Vector strokes tab: draw or import, see classes, synthesize in the worker, download.
+import { Drawing, fitStrokes } from './canvas.js';
+import { classColors, defaultOptions, defaultPen, maxSide, storageKey } from '../shared/meta.js';
+
+const SETTINGS_KEY = 'patternsynth.strokes.settings.v1';
+
+export function mountStrokes(root, client) {
+  const $ = (id) => root.querySelector(`#${id}`);
+  const canvas = $('draw');
+  const messages = $('messages');
+  let settings = { ...defaultOptions, ...defaultPen, ...load(SETTINGS_KEY, {}) };
+  let classifyAbort = null;
+  let runAbort = null;
+  let resultUrl = null;
+
+  const say = (text, kind = '') => {
+    const p = document.createElement('p');
+    p.className = kind;
+    p.textContent = text;
+    messages.replaceChildren(p);
+  };
+
+  // --- pen and settings inputs ---
+  const bind = (id, key, parse = (v) => v, prop = 'value') => {
+    const el = $(id);
+    if (settings[key] !== null && settings[key] !== undefined) el[prop] = settings[key];
+    el.addEventListener('input', () => {
+      settings[key] = parse(el[prop]);
+      save(SETTINGS_KEY, settings);
+      if (key === 'width' && id === 'stroke-width') $('stroke-width-out').value = el.value;
+    });
+    return el;
+  };
+  bind('stroke-color', 'stroke');
+  bind('stroke-on', 'strokeOn', Boolean, 'checked');
+  bind('fill-color', 'fill');
+  bind('fill-on', 'fillOn', Boolean, 'checked');
+  const penWidth = $('stroke-width');
+  penWidth.value = settings.penWidth ?? defaultPen.width;
+  $('stroke-width-out').value = penWidth.value;
+  penWidth.addEventListener('input', () => {
+    settings.penWidth = Number(penWidth.value);
+    $('stroke-width-out').value = penWidth.value;
+    save(SETTINGS_KEY, settings);
+  });
+  bind('out-width', 'width', Number);
+  bind('out-height', 'height', Number);
+  bind('variation', 'variation', Boolean, 'checked');
+  bind('seed', 'seed', Number);
+  for (const [key, id] of [['pathTolerance', 'path'], ['widthTolerance', 'width'], ['colorTolerance', 'color']]) {
+    const input = $(`tol-${id}`), auto = $(`auto-${id}`);
+    auto.checked = settings[key] === null || settings[key] === undefined;
+    if (!auto.checked) input.value = settings[key];
+    input.disabled = auto.checked;
+    const update = () => {
+      input.disabled = auto.checked;
+      settings[key] = auto.checked || input.value === '' ? null : Number(input.value);
+      save(SETTINGS_KEY, settings);
+      scheduleClassify();
+    };
+    auto.addEventListener('change', update);
+    input.addEventListener('input', update);
+  }
+
+  // --- the drawing ---
+  const drawing = new Drawing(canvas, {
+    getPen: () => ({ width: Number(penWidth.value), stroke: settings.stroke, strokeOn: settings.strokeOn, fill: settings.fill, fillOn: settings.fillOn }),
+    onChange: (strokes) => {
+      save(storageKey, strokes);
+      $('stroke-count').textContent = `${strokes.length} stroke${strokes.length === 1 ? '' : 's'}`;
+      scheduleClassify();
+    },
+  });
+  $('undo').addEventListener('click', () => drawing.undo());
+  $('redo').addEventListener('click', () => drawing.redo());
+  $('clear').addEventListener('click', () => drawing.set([]));
+  document.addEventListener('keydown', (e) => {
+    if (!(e.ctrlKey || e.metaKey) || e.key.toLowerCase() !== 'z' || root.hidden) return;
+    e.preventDefault();
+    if (e.shiftKey) drawing.redo(); else drawing.undo();
+  });
+  $('show-classes').addEventListener('change', () => scheduleClassify(0));
+
+  // --- classes ---
+  let classifyTimer = 0;
+  function scheduleClassify(delay = 250) {
+    clearTimeout(classifyTimer);
+    classifyTimer = setTimeout(classify, delay);
+  }
+  async function classify() {
+    classifyAbort?.abort();
+    const strokes = drawing.strokes;
+    if (!strokes.length || !$('show-classes').checked) {
+      drawing.showClasses(null, classColors);
+      $('legend').replaceChildren();
+      return;
+    }
+    if (runAbort) return; // the worker is busy synthesizing; classes update afterwards
+    classifyAbort = new AbortController();
+    try {
+      const c = await client.classifyStrokes(strokes, tolerances(), { signal: classifyAbort.signal });
+      if (strokes !== drawing.strokes) return;
+      drawing.showClasses(c.classes, classColors);
+      const counts = new Map();
+      c.classes.forEach((k) => counts.set(k, (counts.get(k) ?? 0) + 1));
+      $('legend').replaceChildren(...[...counts].map(([k, n]) => {
+        const chip = document.createElement('span');
+        chip.className = 'chip';
+        chip.innerHTML = `<span class="swatch" style="background:${classColors[k % classColors.length]}"></span>class ${k + 1}: ${n}`;
+        return chip;
+      }));
+      for (const [id, key] of [['path', 'path'], ['width', 'width'], ['color', 'color']]) {
+        $(`tol-${id}`).placeholder = c.proposed[key].toFixed(2);
+        if ($(`auto-${id}`).checked) $(`tol-${id}`).value = '';
+      }
+    } catch (e) {
+      if (e.name !== 'AbortError') say(e.message, 'error');
+    }
+  }
+  const tolerances = () => {
+    const o = {};
+    for (const k of ['pathTolerance', 'widthTolerance', 'colorTolerance']) if (settings[k] !== null && settings[k] !== undefined) o[k] = settings[k];
+    return o;
+  };
+
+  // --- import and examples ---
+  const importSvg = async (text) => {
+    try {
+      const r = await client.parseSvgReport(text);
+      if (!r.strokes.length) return say('That SVG has no shapes to use as strokes.', 'warn');
+      drawing.set(fitStrokes(r.strokes, drawing.logical.w, drawing.logical.h));
+      say(`Imported ${r.strokes.length} strokes.${r.warnings.length ? ' ' + r.warnings.join(' ') : ''}`, r.warnings.length ? 'warn' : '');
+    } catch (e) {
+      say(e.message, 'error');
+    }
+  };
+  $('import-svg').addEventListener('change', async (e) => {
+    const file = e.target.files[0];
+    if (file) await importSvg(await file.text());
+    e.target.value = '';
+  });
+  const zone = $('drop-zone');
+  zone.addEventListener('dragover', (e) => { e.preventDefault(); zone.classList.add('dragging'); });
+  zone.addEventListener('dragleave', () => zone.classList.remove('dragging'));
+  zone.addEventListener('drop', async (e) => {
+    e.preventDefault();
+    zone.classList.remove('dragging');
+    const file = e.dataTransfer.files[0];
+    if (file) await importSvg(await file.text());
+  });
+  let examples = null;
+  const loadExamples = async () => (examples ??= await client.exampleStrokes());
+  loadExamples().then((list) => {
+    const select = $('examples');
+    for (const { name } of list) select.append(new Option(name, name));
+  });
+  $('examples').addEventListener('change', async (e) => {
+    const ex = (await loadExamples()).find((x) => x.name === e.target.value);
+    e.target.value = '';
+    if (ex) drawing.set(fitStrokes(ex.strokes, drawing.logical.w, drawing.logical.h, 60));
+  });
+
+  // --- synthesis ---
+  $('synthesize').addEventListener('click', async () => {
+    const width = Number(settings.width), height = Number(settings.height);
+    if (!(width >= 10 && height >= 10 && width <= maxSide && height <= maxSide)) {
+      return say(`Output width and height must be between 10 and ${maxSide}.`, 'error');
+    }
+    runAbort?.abort();
+    runAbort = new AbortController();
+    $('synthesize').disabled = true;
+    $('cancel').disabled = false;
+    $('progress').value = 0;
+    say('Synthesizing…');
+    const t0 = performance.now();
+    try {
+      const opts = { width, height, variation: settings.variation, seed: Number(settings.seed) || 0, ...tolerances() };
+      const r = await client.synthesizeStrokes(drawing.strokes, opts, {
+        signal: runAbort.signal,
+        onProgress: (f) => { $('progress').value = f; },
+      });
+      const ms = performance.now() - t0;
+      if (resultUrl) URL.revokeObjectURL(resultUrl);
+      resultUrl = URL.createObjectURL(new Blob([r.svg], { type: 'image/svg+xml' }));
+      const img = new Image();
+      img.src = resultUrl;
+      img.alt = 'Synthesized pattern';
+      $('preview').replaceChildren(img);
+      const dl = $('download');
+      dl.href = resultUrl;
+      dl.classList.remove('disabled');
+      dl.removeAttribute('aria-disabled');
+      $('result-info').textContent = `${r.strokes.length} strokes, ${r.classification.count} classes, ${width}×${height}, ${ms.toFixed(0)} ms`;
+      $('progress').value = 1;
+      say('Done.');
+    } catch (e) {
+      say(e.name === 'AbortError' ? 'Cancelled.' : e.message, e.name === 'AbortError' ? 'warn' : 'error');
+      $('progress').value = 0;
+    } finally {
+      runAbort = null;
+      $('synthesize').disabled = false;
+      $('cancel').disabled = true;
+      scheduleClassify(0);
+    }
+  });
+  $('cancel').addEventListener('click', () => runAbort?.abort());
+
+  // --- start: the saved drawing, or an example so the page does something at once ---
+  const saved = load(storageKey, null);
+  if (Array.isArray(saved) && saved.length) drawing.set(saved, { record: false });
+  else loadExamples().then((list) => {
+    const ex = list.find((x) => x.name === 'classes-by-shape') ?? list[0];
+    if (ex && !drawing.strokes.length) drawing.set(fitStrokes(ex.strokes, drawing.logical.w, drawing.logical.h, 60), { record: false });
+  });
+}
+
+function load(key, fallback) {
+  try {
+    const v = localStorage.getItem(key);
+    return v ? JSON.parse(v) : fallback;
+  } catch {
+    return fallback;
+  }
+}
+
+function save(key, value) {
+  try {
+    localStorage.setItem(key, JSON.stringify(value));
+  } catch {
+    // Storage full or disabled: the drawing stays in memory.
+  }
+}

@@ -1,0 +1,24 @@
+// Vector strokes: label, options and their defaults (shared by the page and tests).
+export const label = 'Vector strokes';
+
+/** Output and synthesis options; a tolerance left null is proposed from the drawing. */
+export const defaultOptions = {
+  width: 1200,
+  height: 800,
+  pathTolerance: null,
+  widthTolerance: null,
+  colorTolerance: null,
+  variation: true,
+  seed: 1,
+};
+
+/** Drawing tool defaults. */
+export const defaultPen = { width: 3, stroke: '#1f2a44', strokeOn: true, fill: '#e8a33d', fillOn: false };
+
+/** Largest output side the page offers (the engine also caps element counts). */
+export const maxSide = 20000;
+
+/** Class colours for the class view. */
+export const classColors = ['#e6194b', '#3cb44b', '#4363d8', '#f58231', '#911eb4', '#42d4f4', '#f032e6', '#9a6324', '#469990', '#808000'];
+
+export const storageKey = 'patternsynth.strokes.v1';
