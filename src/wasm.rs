@@ -49,11 +49,53 @@ fn js_error(e: Error) -> JsValue {
     js_sys::Error::new(&e.to_string()).into()
 }
 
+/// Reads an options object: missing means defaults, and a misspelt option is an error
+/// (serde-wasm-bindgen reads only the fields it knows, so unknown keys are checked here).
 fn from_js<T: DeserializeOwned + Default>(v: JsValue, what: &str) -> Result<T, JsValue> {
     if v.is_undefined() || v.is_null() {
         return Ok(T::default());
     }
+    if !v.is_object() {
+        return Err(js_sys::Error::new(&format!("Invalid {what}: expected an object.")).into());
+    }
+    let known = field_names::<T>();
+    let object: &js_sys::Object = v.unchecked_ref();
+    for key in js_sys::Object::keys(object).iter().filter_map(|k| k.as_string()) {
+        if !known.contains(&key.as_str()) {
+            let msg = format!("Invalid {what}: unknown option `{key}` (expected one of {}).", known.join(", "));
+            return Err(js_sys::Error::new(&msg).into());
+        }
+    }
     serde_wasm_bindgen::from_value(v).map_err(|e| js_sys::Error::new(&format!("Invalid {what}: {e}")).into())
+}
+
+/// The field names a struct deserializes, read by a deserializer that stops at the
+/// first question serde asks it.
+fn field_names<'de, T: serde::Deserialize<'de>>() -> &'static [&'static str] {
+    use serde::de::{self, Visitor};
+    struct Probe<'a>(&'a mut &'static [&'static str]);
+    impl<'de> de::Deserializer<'de> for Probe<'_> {
+        type Error = de::value::Error;
+        fn deserialize_any<V: Visitor<'de>>(self, _: V) -> Result<V::Value, Self::Error> {
+            Err(de::Error::custom("probe"))
+        }
+        fn deserialize_struct<V: Visitor<'de>>(
+            self,
+            _: &'static str,
+            fields: &'static [&'static str],
+            _: V,
+        ) -> Result<V::Value, Self::Error> {
+            *self.0 = fields;
+            Err(de::Error::custom("probe"))
+        }
+        serde::forward_to_deserialize_any! {
+            bool i8 i16 i32 i64 i128 u8 u16 u32 u64 u128 f32 f64 char str string bytes byte_buf option
+            unit unit_struct newtype_struct seq tuple tuple_struct map enum identifier ignored_any
+        }
+    }
+    let mut fields: &'static [&'static str] = &[];
+    let _ = T::deserialize(Probe(&mut fields));
+    fields
 }
 
 fn to_js<T: Serialize>(v: &T) -> Result<JsValue, JsValue> {
@@ -143,6 +185,7 @@ struct NamedExample {
 pub fn example_strokes() -> Result<JsValue, JsValue> {
     let list: Vec<NamedExample> = vector::exemplar::families(0.015, 7)
         .into_iter()
+        .chain(std::iter::once(vector::exemplar::busy_tile(120, 100.0, 7.0, 3, 21)))
         .map(|e| NamedExample { name: e.name, strokes: e.strokes })
         .collect();
     to_js(&list)

@@ -533,17 +533,30 @@ impl<'r, 'a> Target<'r, 'a> {
 
     /// Whether the neighbourhood of target element `e` is already as populated as a
     /// deep-interior neighbourhood of the reference: then it is no frontier point.
+    /// Also full: an element whose source is surrounded in the example and whose
+    /// source's neighbours (within the conflict radius and a spacing) are all present;
+    /// this catches irregular motifs, whose neighbourhood populations vary.
     fn full(&self, e: usize) -> bool {
-        let Placed { pos, class, .. } = self.placed[e];
-        let Some(want) = self.reference.full_count[class as usize] else {
+        let Placed { pos, class, source } = self.placed[e];
+        let reference = self.reference;
+        if let Some(want) = reference.full_count[class as usize] {
+            let r2 = reference.near_radius.powi(2);
+            let mut count = 0;
+            self.grid.for_each_near(pos, reference.near_radius, |id| {
+                count += ((self.placed[id as usize].pos - pos).hypot2() <= r2) as usize;
+            });
+            if count >= want {
+                return true;
+            }
+        }
+        if !reference.surrounded[source as usize] {
             return false;
-        };
-        let r2 = self.reference.near_radius.powi(2);
-        let mut count = 0;
-        self.grid.for_each_near(pos, self.reference.near_radius, |id| {
-            count += ((self.placed[id as usize].pos - pos).hypot2() <= r2) as usize;
-        });
-        count >= want
+        }
+        let reach = (CONFLICT_RADIUS + 1.0) * reference.spacing;
+        reference.window[source as usize].iter().take_while(|(_, off)| off.hypot2() <= reach * reach).all(|&(j, off)| {
+            let p = pos + off;
+            !self.inside(p) || self.occupied(p, reference.elems[j as usize].class)
+        })
     }
 
     /// Grows from the elements `start` (and all they add), nearest the centre first.

@@ -1,0 +1,8 @@
+#!/usr/bin/env bash
+# Benchmarks (figures, not pass/fail): native vs wasm-in-Node, medians of runs.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/build.sh >/dev/null
+cargo build --release --example bench_vector -q
+echo "== vector strokes"
+node bench/vector.mjs

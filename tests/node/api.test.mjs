@@ -1,0 +1,95 @@
+// The built package under Node: the API contract of SPEC section 4 (vector part),
+// clear errors for bad input, and that the package resolves by name from Node and
+// from a bundler.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import { mkdtempSync, mkdirSync, readFileSync, symlinkSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join, resolve } from 'node:path';
+import * as ps from '../../pkg/node.js';
+
+const grid = () => {
+  const s = [];
+  for (let i = 0; i < 5; i++) for (let j = 0; j < 5; j++) s.push({ points: [[20 + i * 30, 20 + j * 30], [28 + i * 30, 30 + j * 30]], width: 2, stroke: '#223344' });
+  return s;
+};
+
+test('synthesizeStrokes returns strokes, classes and valid SVG', () => {
+  const seen = [];
+  const r = ps.synthesizeStrokes(grid(), { width: 300, height: 300, seed: 3 }, (f) => { seen.push(f); });
+  assert.ok(r.strokes.length >= 90 && r.strokes.length <= 130, `${r.strokes.length}`);
+  assert.equal(r.classes.length, r.strokes.length);
+  assert.equal(r.classification.count, 1);
+  assert.match(r.svg, /^<svg xmlns="http:\/\/www.w3.org\/2000\/svg"/);
+  assert.equal((r.svg.match(/<path /g) || []).length, r.strokes.length);
+  assert.equal(r.strokes[0].stroke, '#223344');
+  assert.ok(seen.length > 3 && seen.at(-1) === 1, 'progress reported to 1');
+  // The SVG reads back through our own importer.
+  assert.equal(ps.parseSvg(r.svg).length, r.strokes.length);
+});
+
+test('returning false from the progress callback cancels', () => {
+  assert.throws(() => ps.synthesizeStrokes(grid(), { width: 3000, height: 3000 }, () => false), /Cancelled/);
+});
+
+test('bad input throws Errors a person understands', () => {
+  const cases = [
+    [() => ps.synthesizeStrokes([], { width: 10, height: 10 }), /no strokes/],
+    [() => ps.synthesizeStrokes('nope', { width: 10, height: 10 }), /array/],
+    [() => ps.synthesizeStrokes([{ points: [[0, 0]], width: 1, stroke: 'red' }], { width: 10, height: 10 }), /#rrggbb/],
+    [() => ps.synthesizeStrokes([{ points: [[NaN, 0]], width: 1 }], { width: 10, height: 10 }), /finite|number/],
+    [() => ps.synthesizeStrokes(grid(), { width: 10, height: 10, widht: 4 }), /unknown option `widht`/],
+    [() => ps.synthesizeStrokes(grid(), { width: -1, height: 10 }), /positive/],
+    [() => ps.synthesizeStrokes(grid(), { width: 1e8, height: 1e8 }), /limit/],
+    [() => ps.parseSvg('<svg><g></svg>'), /Could not read the SVG/],
+    [() => ps.parseSvg('<svg xmlns="http://www.w3.org/2000/svg"/>', { tolerance: 0 }), /tolerance/],
+  ];
+  for (const [fn, want] of cases) {
+    assert.throws(fn, (e) => e instanceof Error && want.test(e.message), String(want));
+  }
+});
+
+test('classifyStrokes proposes tolerances and takes given ones', () => {
+  const strokes = [...grid(), ...grid().map((s) => ({ ...s, stroke: '#dd2222' }))];
+  const auto = ps.classifyStrokes(strokes);
+  assert.equal(auto.count, 2);
+  const merged = ps.classifyStrokes(strokes, { colorTolerance: 500 });
+  assert.equal(merged.count, 1);
+  assert.equal(merged.tolerances.color, 500);
+});
+
+test('fill-only shapes survive the whole trip', () => {
+  const svg = '<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 100 100">' +
+    [0, 1, 2, 3].map((i) => `<rect x="${10 + i * 20}" y="10" width="8" height="8" fill="#00aa55" fill-opacity="0.5"/>`).join('') + '</svg>';
+  const strokes = ps.parseSvg(svg);
+  assert.equal(strokes[0].stroke, null);
+  const r = ps.synthesizeStrokes(strokes, { width: 200, height: 40, variation: false });
+  assert.ok(r.strokes.every((s) => s.fill === '#00aa55' && s.stroke === null && s.fillOpacity === 0.5));
+  assert.match(r.svg, /fill="#00aa55" fill-opacity="0.5" stroke="none"/);
+});
+
+test('the package resolves by name in Node and in a bundler', () => {
+  const dir = mkdtempSync(join(tmpdir(), 'patternsynth-'));
+  mkdirSync(join(dir, 'node_modules'));
+  symlinkSync(resolve('pkg'), join(dir, 'node_modules', 'patternsynth'), 'dir');
+  writeFileSync(join(dir, 'use.mjs'), `import { version, synthesizeStrokes } from 'patternsynth';
+    const r = synthesizeStrokes([{ points: [[0,0],[5,5]], width: 1, stroke: '#000000' }, { points: [[20,0],[25,5]], width: 1, stroke: '#000000' }], { width: 100, height: 20 });
+    console.log(version(), r.strokes.length);`);
+  const out = execFileSync(process.execPath, ['use.mjs'], { cwd: dir, encoding: 'utf8' }).trim();
+  assert.match(out, /^0\.1\.0 \d+$/);
+
+  // A browser bundle: the wasm is referenced as an asset URL, no Node built-ins.
+  writeFileSync(join(dir, 'entry.js'), `import init, { synthesizeStrokes } from 'patternsynth';
+    import { PatternSynthClient } from 'patternsynth/client';
+    export { init, synthesizeStrokes, PatternSynthClient };`);
+  const esbuild = resolve('node_modules/.bin/esbuild');
+  execFileSync(esbuild, ['entry.js', '--bundle', '--format=esm', '--platform=browser', '--outfile=bundle.js', '--loader:.wasm=file'], { cwd: dir });
+  const bundle = readFileSync(join(dir, 'bundle.js'), 'utf8');
+  assert.match(bundle, /patternsynth_bg\.wasm/);
+  assert.doesNotMatch(bundle, /node:fs/);
+
+  // Types are shipped.
+  const dts = readFileSync('pkg/patternsynth.d.ts', 'utf8');
+  for (const name of ['parseSvg', 'synthesizeStrokes', 'classifyStrokes', 'interface Stroke']) assert.ok(dts.includes(name), name);
+});
