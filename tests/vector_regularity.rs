@@ -8,7 +8,11 @@ use patternsynth::vector::{synthesize_strokes, StrokeOptions};
 use patternsynth::Silent;
 
 fn run(ex: &Exemplar, width: f64, height: f64) -> (Regularity, usize, u32) {
-    let opts = StrokeOptions { width, height, seed: 7, ..Default::default() };
+    run_with(ex, StrokeOptions { width, height, seed: 7, ..Default::default() })
+}
+
+fn run_with(ex: &Exemplar, opts: StrokeOptions) -> (Regularity, usize, u32) {
+    let (width, height) = (opts.width, opts.height);
     let res = synthesize_strokes(&ex.strokes, &opts, &mut Silent).expect(ex.name);
     let bounds = ex
         .strokes
@@ -25,11 +29,14 @@ fn run(ex: &Exemplar, width: f64, height: f64) -> (Regularity, usize, u32) {
 #[test]
 fn every_family_grows_to_its_lattice() {
     let mut failures = Vec::new();
-    for ex in families(0.02, 11) {
+    // A small output and a large one (about 60 spacings across), where drift would show.
+    for (ex, (w, h)) in
+        families(0.02, 11).into_iter().flat_map(|e| [(e.clone(), (480.0, 400.0)), (e, (1500.0, 1500.0))])
+    {
         let expected_classes = ex.classes.iter().max().unwrap() + 1;
-        let (r, n, classes) = run(&ex, 480.0, 400.0);
+        let (r, n, classes) = run(&ex, w, h);
         println!(
-            "{:<18} out {:>4} sites {:>4} coverage {:>6.2}% stray {:>3} stacked {:>3} median {:.3} p95 {:.3} classes {}",
+            "{:<18} {w:>4}x{h:<4} out {:>5} sites {:>5} coverage {:>6.2}% stray {:>3} stacked {:>3} median {:.3} p95 {:.3} period {:.4} classes {}",
             ex.name,
             n,
             r.sites,
@@ -38,6 +45,7 @@ fn every_family_grows_to_its_lattice() {
             r.stacked,
             r.median_residual,
             r.p95_residual,
+            r.period_error,
             classes
         );
         if classes != expected_classes || r.coverage < 0.99 || r.stray > 0 || r.stacked > 0 || r.median_residual >= 0.05
@@ -59,4 +67,15 @@ fn busy_tile_repeat_grows_to_its_periodic_extension() {
     assert!(r.coverage >= 0.999, "{r:?}");
     assert_eq!((r.stray, r.stacked), (0, 0), "{r:?}");
     assert!(r.p95_residual < 0.01, "no drift: {r:?}");
+}
+
+#[test]
+fn growth_on_the_drawn_positions_holds_at_moderate_sizes() {
+    // Without the lattice fit (the paper's growth with our frontier and conflict rules).
+    for ex in families(0.02, 11) {
+        let opts = StrokeOptions { width: 600.0, height: 600.0, seed: 7, regularize: false, ..Default::default() };
+        let (r, _, _) = run_with(&ex, opts);
+        println!("{:<18} unregularized {r:?}", ex.name);
+        assert!(r.coverage >= 0.99 && r.stray == 0 && r.stacked == 0 && r.median_residual < 0.05, "{}: {r:?}", ex.name);
+    }
 }

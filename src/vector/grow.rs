@@ -17,6 +17,7 @@
 //!   without evaluating candidates (it would add nothing).
 
 use super::classify::median;
+use super::lattice;
 use super::spatial::Grid;
 use crate::error::{invalid, Error, Result};
 use crate::progress::Throttle;
@@ -52,6 +53,9 @@ pub struct GrowOptions {
     pub max_elements: usize,
     /// Pass over growing points whose neighbourhood is already full.
     pub frontier_first: bool,
+    /// Grow on the example's fitted lattice (no drift), then give each element its
+    /// source's own deviation back (see `lattice`).
+    pub regularize: bool,
 }
 
 impl Default for GrowOptions {
@@ -63,6 +67,7 @@ impl Default for GrowOptions {
             pair_radius: 0.5,
             max_elements: 500_000,
             frontier_first: true,
+            regularize: true,
         }
     }
 }
@@ -268,12 +273,16 @@ impl<'a> Reference<'a> {
         let full_count = by_class
             .iter()
             .map(|members| {
-                let mut counts: Vec<f64> = members
+                let counts: Vec<f64> = members
                     .iter()
                     .filter(|&&i| deep(elems[i as usize].pos))
                     .map(|&i| near[i as usize].len() as f64)
                     .collect();
-                (!counts.is_empty()).then(|| median(&mut counts) as usize)
+                counts
+                    .iter()
+                    .copied()
+                    .fold(None, |m: Option<f64>, c| Some(m.map_or(c, |m| m.max(c))))
+                    .map(|c| c as usize)
             })
             .collect();
         Ok(Reference {
@@ -360,6 +369,9 @@ const PRUNE: f64 = 0.45;
 
 /// Radius, in spacings, within which a new element's neighbours must agree with the example.
 const CONFLICT_RADIUS: f64 = 1.25;
+
+/// Normalised errors within (this x pairing radius)^2 of each other are ties.
+const ERROR_QUANTUM: f64 = 0.02;
 
 /// Nearest neighbours of a growing point that a candidate must reproduce to be evaluated.
 const SIGNATURE: usize = 4;
@@ -553,10 +565,12 @@ impl<'r, 'a> Target<'r, 'a> {
             return false;
         }
         let reach = (CONFLICT_RADIUS + 1.0) * reference.spacing;
-        reference.window[source as usize].iter().take_while(|(_, off)| off.hypot2() <= reach * reach).all(|&(j, off)| {
-            let p = pos + off;
-            !self.inside(p) || self.occupied(p, reference.elems[j as usize].class)
-        })
+        reference.window[source as usize].iter().take_while(|(_, off)| off.hypot2() <= reach * reach).all(
+            |&(j, off)| {
+                let p = pos + off;
+                !self.inside(p) || self.occupied(p, reference.elems[j as usize].class)
+            },
+        )
     }
 
     /// Grows from the elements `start` (and all they add), nearest the centre first.
@@ -618,13 +632,15 @@ impl<'r, 'a> Target<'r, 'a> {
             }
             stats.candidates += reference.by_class[g.class as usize].len();
             let need = if relaxed { 1 } else { ((opts.support * most_pairs as f64).ceil() as usize).max(1) };
-            let tiny = (reference.pair_radius[g.class as usize].powi(2) * 1e-9).max(1e-300);
+            // Errors closer than this count as equal; among them the candidate that adds the
+            // most wins (bigger stamps, fewer growing points), then the best supported.
+            let tiny = ((ERROR_QUANTUM * reference.pair_radius[g.class as usize]).powi(2)).max(1e-300);
             let best = candidates.iter().filter(|c| c.pairs >= need).min_by(|a, b| {
                 let (ea, eb) = ((a.error / tiny).floor(), (b.error / tiny).floor());
                 if relaxed {
                     b.adds.cmp(&a.adds).then(ea.total_cmp(&eb))
                 } else {
-                    ea.total_cmp(&eb).then(b.pairs.cmp(&a.pairs)).then(b.adds.cmp(&a.adds))
+                    ea.total_cmp(&eb).then(b.adds.cmp(&a.adds)).then(b.pairs.cmp(&a.pairs))
                 }
             });
             let Some(best) = best.copied() else {
@@ -711,13 +727,25 @@ impl<'r, 'a> Target<'r, 'a> {
 
 /// Grows the reference `elems` over a `width x height` area.
 pub fn grow(elems: &[Element], opts: &GrowOptions, progress: &mut Throttle) -> Result<(Vec<Placed>, GrowStats)> {
+    let raw_elems = elems;
     if !(opts.width.is_finite() && opts.height.is_finite() && opts.width > 0.0 && opts.height > 0.0) {
         return invalid("Output width and height must be positive numbers.");
     }
     if let Some(i) = elems.iter().position(|e| !(e.pos.x.is_finite() && e.pos.y.is_finite())) {
         return invalid(format!("Element {i} has a position that is not a finite number."));
     }
-    let reference = Reference::new(elems)?;
+    let drawn = Reference::new(elems)?;
+    let fit = if opts.regularize {
+        lattice::fit(elems, &drawn.grid, &drawn.pair_radius, drawn.spacing, drawn.window_radius)
+    } else {
+        None
+    };
+    let snapped: Vec<Element> = match &fit {
+        Some(f) => elems.iter().zip(&f.snapped).map(|(e, &pos)| Element { pos, class: e.class }).collect(),
+        None => Vec::new(),
+    };
+    let reference = if fit.is_some() { Reference::new(&snapped)? } else { drawn };
+    let elems = reference.elems;
     let area = Rect::new(0.0, 0.0, opts.width, opts.height);
     let estimate = reference.density() * area.area();
     if estimate > opts.max_elements as f64 {
@@ -775,5 +803,13 @@ pub fn grow(elems: &[Element], opts: &GrowOptions, progress: &mut Throttle) -> R
         target.run(&all, opts, true, estimate, progress, &mut stats)?;
     }
     progress.tick(1.0)?;
-    Ok((target.placed, stats))
+    let mut placed = target.placed;
+    if fit.is_some() {
+        // Each element takes its source's deviation from the lattice back.
+        for e in &mut placed {
+            let s = e.source as usize;
+            e.pos += raw_elems[s].pos - snapped[s].pos;
+        }
+    }
+    Ok((placed, stats))
 }

@@ -5,6 +5,7 @@ pub mod color;
 pub mod exemplar;
 pub mod frechet;
 pub mod grow;
+pub mod lattice;
 pub mod regularity;
 pub mod spatial;
 pub mod stroke;

@@ -29,6 +29,9 @@ pub struct StrokeOptions {
     pub support: f64,
     /// Refuse outputs with more elements than this.
     pub max_elements: usize,
+    /// Grow on the example's fitted lattice so large outputs do not drift (each element
+    /// keeps its hand-drawn deviation); off grows on the drawn positions as they are.
+    pub regularize: bool,
 }
 
 impl Default for StrokeOptions {
@@ -44,6 +47,7 @@ impl Default for StrokeOptions {
             seed: 1,
             support: g.support,
             max_elements: g.max_elements,
+            regularize: g.regularize,
         }
     }
 }
@@ -128,6 +132,7 @@ pub fn synthesize_strokes(
         height: opts.height,
         support: opts.support,
         max_elements: opts.max_elements,
+        regularize: opts.regularize,
         ..GrowOptions::default()
     };
     let (placed, stats): (_, GrowStats) = grow(&elements, &grow_opts, &mut Throttle::with_range(progress, 0.02, 0.98))?;

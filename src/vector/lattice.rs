@@ -1,0 +1,164 @@
+//! Lattice estimation for near-regular examples (beyond the paper).
+//!
+//! A hand-drawn example repeats with jitter. Growth copies the example's own relative
+//! offsets, so the mean step between copies carries the jitter's bias (about
+//! sigma / sqrt(n) per step); over many steps that drifts, and where two growth fronts
+//! meet the mismatch leaves seams. Here the two period vectors are estimated from the
+//! whole example by least squares, each element is assigned to a motif position (the
+//! elements reached from one another by whole periods) and snapped to
+//! `centre + u a + v b`. Growth runs on the snapped positions, so it cannot drift; each
+//! output element then gets its source's own deviation back, so the hand-drawn feel
+//! stays.
+//!
+//! The fit is used only when it explains the example: enough elements reached by the
+//! periods, and small residuals. Otherwise (irregular input, a single copy) the
+//! positions are left as drawn.
+
+use super::grow::Element;
+use super::spatial::Grid;
+use kurbo::{Point, Vec2};
+
+/// The fitted lattice: period vectors and each element's snapped position.
+#[derive(Clone, Debug)]
+pub struct LatticeFit {
+    pub a: Vec2,
+    pub b: Option<Vec2>,
+    pub snapped: Vec<Point>,
+}
+
+/// A period must map at least this fraction of the elements onto same-class elements.
+const MIN_SUPPORT: f64 = 0.6;
+/// Sampled elements used to find and score candidate periods.
+const SAMPLE: usize = 256;
+
+/// Estimates the lattice of `elems` (with `grid` indexing them, `pair_radius` per class
+/// and the median neighbour `spacing`); `None` when the example is not periodic enough.
+pub fn fit(elems: &[Element], grid: &Grid, pair_radius: &[f64], spacing: f64, reach: f64) -> Option<LatticeFit> {
+    let n = elems.len();
+    if n < 4 {
+        return None;
+    }
+    // The partner of element i under offset v: a same-class element near pos + v.
+    let partner = |i: usize, v: Vec2| -> Option<usize> {
+        let e = &elems[i];
+        let p = e.pos + v;
+        let d = pair_radius[e.class as usize];
+        let mut best: Option<(usize, f64)> = None;
+        grid.for_each_near(p, d, |j| {
+            let o = &elems[j as usize];
+            let d2 = (o.pos - p).hypot2();
+            if o.class == e.class && d2 < d * d && best.is_none_or(|b| d2 < b.1) {
+                best = Some((j as usize, d2));
+            }
+        });
+        best.map(|b| b.0)
+    };
+    let step = n.div_ceil(SAMPLE).max(1);
+    let sample: Vec<usize> = (0..n).step_by(step).collect();
+    let support = |v: Vec2| sample.iter().filter(|&&i| partner(i, v).is_some()).count() as f64 / sample.len() as f64;
+
+    // Candidate periods: offsets from a few central elements to their same-class
+    // neighbours, in one half-plane, shortest first.
+    let centre = elems.iter().fold(Vec2::ZERO, |s, e| s + e.pos.to_vec2()) / n as f64;
+    let mut by_centre: Vec<usize> = (0..n).collect();
+    by_centre.sort_by(|&i, &j| {
+        (elems[i].pos.to_vec2() - centre).hypot2().total_cmp(&(elems[j].pos.to_vec2() - centre).hypot2())
+    });
+    let mut candidates: Vec<Vec2> = Vec::new();
+    for &i in by_centre.iter().take(12) {
+        let e = &elems[i];
+        grid.for_each_near(e.pos, reach, |j| {
+            let o = &elems[j as usize];
+            let v = o.pos - e.pos;
+            if o.class == e.class
+                && v.hypot() > 0.5 * spacing
+                && v.hypot() <= reach
+                && (v.x > 1e-9 || (v.x.abs() <= 1e-9 && v.y > 0.0))
+            {
+                candidates.push(v);
+            }
+        });
+    }
+    candidates.sort_by(|a, b| a.hypot2().total_cmp(&b.hypot2()));
+    candidates.dedup_by(|a, b| (*a - *b).hypot() < 0.25 * spacing);
+
+    let a = *candidates.iter().find(|&&v| support(v) >= MIN_SUPPORT)?;
+    let b = candidates
+        .iter()
+        .copied()
+        .filter(|v| a.cross(*v).abs() > 0.3 * a.hypot() * v.hypot())
+        .find(|&v| support(v) >= MIN_SUPPORT);
+
+    // Refine each period as the mean of all its observed instances.
+    let refine = |v: Vec2| -> Vec2 {
+        let (mut sum, mut count) = (Vec2::ZERO, 0usize);
+        for i in 0..n {
+            if let Some(j) = partner(i, v) {
+                sum += elems[j].pos - elems[i].pos;
+                count += 1;
+            }
+        }
+        if count > 0 {
+            sum / count as f64
+        } else {
+            v
+        }
+    };
+    let (a, b) = (refine(a), b.map(refine));
+
+    // Motif positions: connected components under +-a, +-b, with lattice coordinates.
+    let mut coord: Vec<Option<(usize, i64, i64)>> = vec![None; n];
+    let steps: Vec<(Vec2, i64, i64)> =
+        [(a, 1, 0), (-a, -1, 0)].into_iter().chain(b.into_iter().flat_map(|b| [(b, 0, 1), (-b, 0, -1)])).collect();
+    let mut components = 0usize;
+    let mut reached = 0usize;
+    for root in 0..n {
+        if coord[root].is_some() {
+            continue;
+        }
+        coord[root] = Some((components, 0, 0));
+        let mut stack = vec![root];
+        let mut size = 0;
+        while let Some(i) = stack.pop() {
+            size += 1;
+            let (c, u, w) = coord[i].unwrap();
+            for &(v, du, dw) in &steps {
+                if let Some(j) = partner(i, v) {
+                    if coord[j].is_none() {
+                        coord[j] = Some((c, u + du, w + dw));
+                        stack.push(j);
+                    }
+                }
+            }
+        }
+        if size > 1 {
+            reached += size;
+        }
+        components += 1;
+    }
+    if (reached as f64) < 0.8 * n as f64 {
+        return None;
+    }
+    // Each component's centre: the mean of its members' positions less their steps.
+    let b0 = b.unwrap_or(Vec2::ZERO);
+    let mut sums = vec![(Vec2::ZERO, 0usize); components];
+    for (i, c) in coord.iter().enumerate() {
+        let (k, u, w) = c.unwrap();
+        sums[k].0 += elems[i].pos.to_vec2() - a * u as f64 - b0 * w as f64;
+        sums[k].1 += 1;
+    }
+    let snapped: Vec<Point> = coord
+        .iter()
+        .map(|c| {
+            let (k, u, w) = c.unwrap();
+            (sums[k].0 / sums[k].1 as f64 + a * u as f64 + b0 * w as f64).to_point()
+        })
+        .collect();
+    // Accept only a fit that explains the drawing: residuals small against the spacing.
+    let mut residuals: Vec<f64> = snapped.iter().zip(elems).map(|(s, e)| s.distance(e.pos)).collect();
+    residuals.sort_by(|x, y| x.total_cmp(y));
+    if residuals[residuals.len() / 2] > 0.15 * spacing {
+        return None;
+    }
+    Some(LatticeFit { a, b, snapped })
+}
