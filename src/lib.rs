@@ -2,11 +2,13 @@
 //!
 //! Engines are plain Rust with no browser types:
 //! - [`vector`]: near-regular vector patterns grown from a few example strokes.
+//! - [`raster`]: texture synthesis and two-exemplar blending (Wei-Levoy).
 //!
 //! The `wasm` module (wasm32 only) is the thin JS binding over them.
 
 pub mod error;
 pub mod progress;
+pub mod raster;
 pub mod rng;
 pub mod vector;
 

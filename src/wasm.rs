@@ -4,6 +4,7 @@
 
 use crate::error::Error;
 use crate::progress::Progress;
+use crate::raster::{self, coefficient::Transfer, Coefficient, Image};
 use crate::vector;
 use serde::de::DeserializeOwned;
 use serde::Serialize;
@@ -34,6 +35,21 @@ export interface ClassifyOptions { pathTolerance?: number; widthTolerance?: numb
 export interface StrokeOptions extends ClassifyOptions {
   width: number; height: number; variation?: boolean; seed?: number; support?: number; maxElements?: number;
 }
+export interface Rgba { width: number; height: number; data: Uint8Array | Uint8ClampedArray }
+export interface TextureOptions {
+  width: number; height: number; seed?: number; tileable?: boolean; exhaustive?: boolean;
+  levels?: number; neighbourhood?: number;
+}
+export type Transition = 'linear' | 'ease' | 'steep';
+export interface BlendOptions extends TextureOptions {
+  /** mu, the weight of A: 'linear' (1 at the top, 0 at the bottom, as in the paper), its
+   *  'ease' and 'steep' transfers, 'radial' (A at the centre), or one value per pixel. */
+  coefficient: Transition | 'radial' | Float32Array;
+  /** Direction of the ramp in degrees (90 = top to bottom, 0 = left to right). */
+  angle?: number;
+  /** Transfer applied to 'radial' or an angled ramp. */
+  transfer?: Transition;
+}
 export interface StrokeResult {
   strokes: Stroke[]; classes: number[]; sources: number[]; classification: Classification; svg: string;
   growingPoints: number; skippedFull: number; passedOver: number;
@@ -52,6 +68,11 @@ fn js_error(e: Error) -> JsValue {
 /// Reads an options object: missing means defaults, and a misspelt option is an error
 /// (serde-wasm-bindgen reads only the fields it knows, so unknown keys are checked here).
 fn from_js<T: DeserializeOwned + Default>(v: JsValue, what: &str) -> Result<T, JsValue> {
+    from_js_with(v, what, &[])
+}
+
+/// `from_js` where `extra` keys are read by the caller (not by serde).
+fn from_js_with<T: DeserializeOwned + Default>(v: JsValue, what: &str, extra: &[&str]) -> Result<T, JsValue> {
     if v.is_undefined() || v.is_null() {
         return Ok(T::default());
     }
@@ -61,7 +82,7 @@ fn from_js<T: DeserializeOwned + Default>(v: JsValue, what: &str) -> Result<T, J
     let known = field_names::<T>();
     let object: &js_sys::Object = v.unchecked_ref();
     for key in js_sys::Object::keys(object).iter().filter_map(|k| k.as_string()) {
-        if !known.contains(&key.as_str()) {
+        if !known.contains(&key.as_str()) && !extra.contains(&key.as_str()) {
             let msg = format!("Invalid {what}: unknown option `{key}` (expected one of {}).", known.join(", "));
             return Err(js_sys::Error::new(&msg).into());
         }
@@ -202,4 +223,165 @@ pub fn synthesize_strokes(
     let opts: vector::StrokeOptions = from_js(opts, "synthesis options")?;
     let res = vector::synthesize_strokes(&strokes, &opts, &mut JsProgress(on_progress)).map_err(js_error)?;
     to_js(&res)
+}
+
+/// Reads `{ width, height, data }` (RGBA bytes) from JS into an engine image.
+fn image_from_js(v: &JsValue, what: &str) -> Result<Image, JsValue> {
+    let (w, h, bytes) = rgba_from_js(v, what)?;
+    Image::from_rgba8(w, h, &bytes).map_err(js_error)
+}
+
+/// Reads `{ width, height, data }` as size and RGBA bytes.
+fn rgba_from_js(v: &JsValue, what: &str) -> Result<(usize, usize, Vec<u8>), JsValue> {
+    let err = |m: String| -> JsValue { js_sys::Error::new(&m).into() };
+    if !v.is_object() {
+        return Err(err(format!("The {what} must be an object {{ width, height, data }} (e.g. an ImageData).")));
+    }
+    let get = |k: &str| js_sys::Reflect::get(v, &JsValue::from_str(k)).unwrap_or(JsValue::UNDEFINED);
+    let dim = |k: &str| -> Result<usize, JsValue> {
+        let n = get(k).as_f64().ok_or_else(|| err(format!("The {what}'s {k} must be a number.")))?;
+        if !(n.is_finite() && n >= 0.0 && n.fract() == 0.0) {
+            return Err(err(format!("The {what}'s {k} must be a whole number, got {n}.")));
+        }
+        Ok(n as usize)
+    };
+    let (w, h) = (dim("width")?, dim("height")?);
+    let data = get("data");
+    let bytes = if let Some(a) = data.dyn_ref::<js_sys::Uint8ClampedArray>() {
+        a.to_vec()
+    } else if let Some(a) = data.dyn_ref::<js_sys::Uint8Array>() {
+        a.to_vec()
+    } else {
+        return Err(err(format!("The {what}'s data must be a Uint8Array or Uint8ClampedArray of RGBA bytes.")));
+    };
+    Ok((w, h, bytes))
+}
+
+fn rgba_to_js(width: usize, height: usize, data: &[u8]) -> JsValue {
+    let o = js_sys::Object::new();
+    let set = |k: &str, v: JsValue| {
+        let _ = js_sys::Reflect::set(&o, &JsValue::from_str(k), &v);
+    };
+    set("width", JsValue::from_f64(width as f64));
+    set("height", JsValue::from_f64(height as f64));
+    set("data", js_sys::Uint8ClampedArray::from(data).into());
+    o.into()
+}
+
+/// More of one texture ("make more of this texture").
+#[wasm_bindgen(js_name = synthesizeTexture, unchecked_return_type = "Rgba")]
+pub fn synthesize_texture(
+    #[wasm_bindgen(unchecked_param_type = "Rgba")] image: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "TextureOptions")] opts: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "Progress")] on_progress: Option<js_sys::Function>,
+) -> Result<JsValue, JsValue> {
+    let ex = image_from_js(&image, "image")?;
+    let opts: raster::TextureOptions = from_js(opts, "texture options")?;
+    let out = raster::synthesize_texture(&ex, &opts, &mut JsProgress(on_progress)).map_err(js_error)?;
+    Ok(rgba_to_js(out.width, out.height, &out.to_rgba8()))
+}
+
+#[derive(serde::Deserialize)]
+#[serde(rename_all = "camelCase", default)]
+struct BlendJs {
+    width: usize,
+    height: usize,
+    seed: u64,
+    tileable: bool,
+    exhaustive: bool,
+    levels: Option<usize>,
+    neighbourhood: usize,
+    angle: Option<f64>,
+    transfer: Option<String>,
+}
+
+impl Default for BlendJs {
+    fn default() -> Self {
+        let d = raster::BlendOptions::default();
+        BlendJs {
+            width: d.width,
+            height: d.height,
+            seed: d.seed,
+            tileable: d.tileable,
+            exhaustive: d.exhaustive,
+            levels: d.levels,
+            neighbourhood: d.neighbourhood,
+            angle: None,
+            transfer: None,
+        }
+    }
+}
+
+fn transfer(name: &str) -> Result<Transfer, JsValue> {
+    match name {
+        "linear" => Ok(Transfer::Linear),
+        "ease" => Ok(Transfer::Ease),
+        "steep" => Ok(Transfer::Steep),
+        other => {
+            Err(js_sys::Error::new(&format!("Unknown transition '{other}': use 'linear', 'ease' or 'steep'.")).into())
+        }
+    }
+}
+
+/// Two textures blended by a generation coefficient (A where it is 1, B where it is 0).
+#[wasm_bindgen(js_name = blendTextures, unchecked_return_type = "Rgba")]
+pub fn blend_textures(
+    #[wasm_bindgen(unchecked_param_type = "Rgba")] a: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "Rgba")] b: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "BlendOptions")] opts: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "Progress")] on_progress: Option<js_sys::Function>,
+) -> Result<JsValue, JsValue> {
+    let a = image_from_js(&a, "first image (A)")?;
+    let b = image_from_js(&b, "second image (B)")?;
+    let coefficient_js = if opts.is_object() {
+        js_sys::Reflect::get(&opts, &JsValue::from_str("coefficient")).unwrap_or(JsValue::UNDEFINED)
+    } else {
+        JsValue::UNDEFINED
+    };
+    let o: BlendJs = from_js_with(opts, "blend options", &["coefficient"])?;
+    let t = match &o.transfer {
+        Some(name) => transfer(name)?,
+        None => Transfer::Linear,
+    };
+    let coefficient = if let Some(map) = coefficient_js.dyn_ref::<js_sys::Float32Array>() {
+        Coefficient::Map(map.to_vec())
+    } else if let Some(name) = coefficient_js.as_string() {
+        match (name.as_str(), o.angle) {
+            ("radial", _) => Coefficient::Radial(t),
+            (n, Some(angle)) => Coefficient::Angle(angle, transfer(n)?),
+            (n, None) => Coefficient::Vertical(transfer(n)?),
+        }
+    } else if coefficient_js.is_undefined() {
+        Coefficient::Vertical(Transfer::Linear)
+    } else {
+        return Err(
+            js_sys::Error::new("coefficient must be 'linear', 'ease', 'steep', 'radial' or a Float32Array.").into()
+        );
+    };
+    let opts = raster::BlendOptions {
+        width: o.width,
+        height: o.height,
+        coefficient,
+        seed: o.seed,
+        tileable: o.tileable,
+        exhaustive: o.exhaustive,
+        levels: o.levels,
+        neighbourhood: o.neighbourhood,
+    };
+    let out = raster::blend_textures(&a, &b, &opts, &mut JsProgress(on_progress)).map_err(js_error)?;
+    Ok(rgba_to_js(out.width, out.height, &out.to_rgba8()))
+}
+
+/// Decodes PNG or JPEG bytes to RGBA.
+#[wasm_bindgen(js_name = decodeImage, unchecked_return_type = "Rgba")]
+pub fn decode_image(bytes: &[u8]) -> Result<JsValue, JsValue> {
+    let d = raster::codec::decode_image(bytes).map_err(js_error)?;
+    Ok(rgba_to_js(d.width, d.height, &d.data))
+}
+
+/// Encodes RGBA as PNG.
+#[wasm_bindgen(js_name = encodePng)]
+pub fn encode_png(#[wasm_bindgen(unchecked_param_type = "Rgba")] image: JsValue) -> Result<Vec<u8>, JsValue> {
+    let (w, h, bytes) = rgba_from_js(&image, "image")?;
+    raster::codec::encode_png(w, h, &bytes).map_err(js_error)
 }

@@ -1,0 +1,93 @@
+//! The raster type the texture engines work on: RGB in `f32` (0-255 scale), row major.
+//! RGBA bytes convert at the edges; alpha is not synthesized (output alpha is opaque).
+
+use crate::error::{invalid, Error, Result};
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Image {
+    pub width: usize,
+    pub height: usize,
+    pub data: Vec<[f32; 3]>,
+}
+
+/// Largest side of an image the engines accept (memory stays bounded: see `MAX_PIXELS`).
+pub const MAX_SIDE: usize = 4096;
+/// Largest pixel count of an output (2048 x 2048): about 16 bytes of working memory per
+/// pixel and level, well under the browser's wasm memory.
+pub const MAX_PIXELS: usize = 2048 * 2048;
+
+impl Image {
+    pub fn new(width: usize, height: usize) -> Image {
+        Image { width, height, data: vec![[0.0; 3]; width * height] }
+    }
+
+    /// From RGBA bytes (as a canvas `ImageData` holds them).
+    pub fn from_rgba8(width: usize, height: usize, rgba: &[u8]) -> Result<Image> {
+        check_size(width, height, "image")?;
+        if rgba.len() != width * height * 4 {
+            return invalid(format!(
+                "The image data has {} bytes; {width}x{height} RGBA needs {}.",
+                rgba.len(),
+                width * height * 4
+            ));
+        }
+        let data = rgba.chunks_exact(4).map(|p| [p[0] as f32, p[1] as f32, p[2] as f32]).collect();
+        Ok(Image { width, height, data })
+    }
+
+    /// To RGBA bytes, opaque, rounded and clamped.
+    pub fn to_rgba8(&self) -> Vec<u8> {
+        let mut out = Vec::with_capacity(self.data.len() * 4);
+        for p in &self.data {
+            out.extend(p.iter().map(|&v| v.round().clamp(0.0, 255.0) as u8));
+            out.push(255);
+        }
+        out
+    }
+
+    #[inline]
+    pub fn at(&self, x: usize, y: usize) -> [f32; 3] {
+        self.data[y * self.width + x]
+    }
+
+    /// The pixel at (x, y) read on a torus.
+    #[inline]
+    pub fn wrapped(&self, x: isize, y: isize) -> [f32; 3] {
+        let w = self.width as isize;
+        let h = self.height as isize;
+        self.data[(y.rem_euclid(h) * w + x.rem_euclid(w)) as usize]
+    }
+
+    /// The pixel at (x, y) with coordinates clamped to the image.
+    #[inline]
+    pub fn clamped(&self, x: isize, y: isize) -> [f32; 3] {
+        let x = x.clamp(0, self.width as isize - 1) as usize;
+        let y = y.clamp(0, self.height as isize - 1) as usize;
+        self.data[y * self.width + x]
+    }
+}
+
+/// Rejects empty and over-large sizes with a message naming `what`.
+pub fn check_size(width: usize, height: usize, what: &str) -> Result<()> {
+    if width == 0 || height == 0 {
+        return invalid(format!("The {what} is empty ({width}x{height})."));
+    }
+    if width > MAX_SIDE || height > MAX_SIDE {
+        return Err(Error::TooLarge(format!(
+            "The {what} is {width}x{height}; the largest side accepted is {MAX_SIDE}."
+        )));
+    }
+    Ok(())
+}
+
+/// Rejects output sizes beyond the memory cap.
+pub fn check_output(width: usize, height: usize) -> Result<()> {
+    check_size(width, height, "output")?;
+    if width * height > MAX_PIXELS {
+        return Err(Error::TooLarge(format!(
+            "An output of {width}x{height} is {} pixels; the limit is {MAX_PIXELS} (2048x2048).",
+            width * height
+        )));
+    }
+    Ok(())
+}

@@ -1,0 +1,402 @@
+//! Multi-resolution Wei-Levoy synthesis against one or more exemplars, each output pixel
+//! mixing the exemplars' best matches by per-pixel weights (the paper's blending: two
+//! exemplars, weights mu and 1 - mu).
+//!
+//! Coarse to fine; at each level the output is filled in scanline order on a torus. A
+//! pixel's feature is its causal neighbourhood at this level and the full 3x3 block at
+//! the (finished) parent level. For each exemplar with weight > 0 the best-matching
+//! exemplar position is found and the colours are mixed.
+//!
+//! Search: `exhaustive` compares with every exemplar position (the reference mode). The
+//! default compares with coherent candidates only (Ashikhmin 2001): for each already
+//! synthesized neighbour, the exemplar position next to the one it copied, so that
+//! patches of the exemplar continue; plus the parent's position scaled up and a few
+//! random positions. The coarsest level, a few hundred positions, is always exhaustive,
+//! which lays the large-scale structure; finer levels refine it coherently. Exemplar
+//! neighbourhoods are read on the fly (no feature tables), so memory stays a few times
+//! the images' size; partial distances stop as soon as they exceed the best so far.
+
+use super::image::{check_output, check_size, Image};
+use super::neighbourhood::Shape;
+use super::pyramid::{self, Edge};
+use crate::error::{invalid, Result};
+use crate::progress::Throttle;
+use crate::rng::Rng;
+
+#[derive(Clone, Debug)]
+pub struct Params {
+    pub width: usize,
+    pub height: usize,
+    pub seed: u64,
+    /// Pyramid levels; `None` picks them so the coarsest exemplar is about 16 pixels.
+    pub levels: Option<usize>,
+    /// Neighbourhood side (odd, at least 3): 5 means a 5x5 causal L-shape.
+    pub neighbourhood: usize,
+    pub exhaustive: bool,
+    /// Make the output tile: its wrap-around seams are re-synthesized with full,
+    /// wrapping neighbourhoods.
+    pub tileable: bool,
+    /// Random candidates per pixel and exemplar in the coherent search.
+    pub random_candidates: usize,
+    /// Correction passes per level after the causal one: every pixel matched again with
+    /// its full (two-sided) neighbourhood, which joins structures the causal pass broke.
+    pub corrections: usize,
+}
+
+impl Default for Params {
+    fn default() -> Self {
+        Params {
+            width: 256,
+            height: 256,
+            seed: 1,
+            levels: None,
+            neighbourhood: 5,
+            exhaustive: false,
+            tileable: false,
+            random_candidates: 2,
+            corrections: 1,
+        }
+    }
+}
+
+/// One exemplar prepared for matching: its pyramid.
+struct Exemplar {
+    levels: Vec<Image>,
+}
+
+/// Pixel offsets of a shape turned into index deltas for one image width.
+struct Offsets {
+    own: Vec<isize>,
+    parent: Vec<isize>,
+}
+
+fn offsets(shape: &Shape, width: usize, parent_width: usize) -> Offsets {
+    Offsets {
+        own: shape.own.iter().map(|&(dx, dy)| dy * width as isize + dx).collect(),
+        parent: shape.parent.iter().map(|&(dx, dy)| dy * parent_width as isize + dx).collect(),
+    }
+}
+
+/// Squared distance between `feature` and the neighbourhood of exemplar position `pos`
+/// at `level`, stopping once it exceeds `bound`.
+#[inline]
+fn distance(ex: &Exemplar, level: usize, pos: usize, shape: &Shape, off: &Offsets, feature: &[f32], bound: f32) -> f32 {
+    let img = &ex.levels[level];
+    let (w, h) = (img.width as isize, img.height as isize);
+    let (x, y) = ((pos % img.width) as isize, (pos / img.width) as isize);
+    let s = shape.half;
+    let mut acc = 0.0f32;
+    let mut k = 0;
+    let add = |acc: &mut f32, p: [f32; 3], k: usize| {
+        let d0 = p[0] - feature[k];
+        let d1 = p[1] - feature[k + 1];
+        let d2 = p[2] - feature[k + 2];
+        *acc += d0 * d0 + d1 * d1 + d2 * d2;
+    };
+    if x >= s && x < w - s && y >= s && y < h - s {
+        for &o in &off.own {
+            add(&mut acc, img.data[(pos as isize + o) as usize], k);
+            k += 3;
+        }
+    } else {
+        for &(dx, dy) in &shape.own {
+            add(&mut acc, img.clamped(x + dx, y + dy), k);
+            k += 3;
+        }
+    }
+    if acc > bound || k == feature.len() {
+        return acc;
+    }
+    let parent = &ex.levels[level + 1];
+    let (px, py) = (x / 2, y / 2);
+    let (pw, ph) = (parent.width as isize, parent.height as isize);
+    if px >= 1 && px < pw - 1 && py >= 1 && py < ph - 1 {
+        let base = (py * pw + px) as usize;
+        for &o in &off.parent {
+            add(&mut acc, parent.data[(base as isize + o) as usize], k);
+            k += 3;
+        }
+    } else {
+        for &(dx, dy) in &shape.parent {
+            add(&mut acc, parent.clamped(px + dx, py + dy), k);
+            k += 3;
+        }
+    }
+    acc
+}
+
+/// The output's feature at (x, y): own level read on the torus, parent level too.
+fn feature(out: &[Image], level: usize, x: usize, y: usize, shape: &Shape, with_parent: bool, f: &mut Vec<f32>) {
+    f.clear();
+    let img = &out[level];
+    for &(dx, dy) in &shape.own {
+        f.extend_from_slice(&img.wrapped(x as isize + dx, y as isize + dy));
+    }
+    if with_parent {
+        let p = &out[level + 1];
+        for &(dx, dy) in &shape.parent {
+            f.extend_from_slice(&p.wrapped((x / 2) as isize + dx, (y / 2) as isize + dy));
+        }
+    }
+}
+
+/// Default number of levels: the coarsest exemplar about 16 pixels on its short side
+/// (at least the neighbourhood), the coarsest output at least 8; at most 5.
+fn default_levels(exemplars: &[&Image], width: usize, height: usize, side: usize) -> usize {
+    let ex = exemplars.iter().map(|e| e.width.min(e.height)).min().unwrap_or(1);
+    let out = width.min(height);
+    let mut levels = 1;
+    while levels < 5 && (ex >> levels) >= 16.max(side) && (out >> levels) >= 8 {
+        levels += 1;
+    }
+    levels
+}
+
+/// Synthesizes a `width x height` image from `exemplars`, mixing them at each pixel by
+/// `weights` (one value per exemplar per output pixel, row major, pixel-major:
+/// `weights[p * k + e]`), which must sum to 1 at each pixel.
+pub fn synthesize(exemplars: &[&Image], weights: &[f32], params: &Params, progress: &mut Throttle) -> Result<Image> {
+    let (width, height) = (params.width, params.height);
+    check_output(width, height)?;
+    let n_ex = exemplars.len();
+    if n_ex == 0 {
+        return invalid("Give at least one exemplar image.");
+    }
+    if weights.len() != width * height * n_ex {
+        return invalid("The weight map does not match the output size.");
+    }
+    let side = params.neighbourhood;
+    if side < 3 || side % 2 == 0 || side > 15 {
+        return invalid(format!("The neighbourhood size must be odd, from 3 to 15 (got {side})."));
+    }
+    for (i, e) in exemplars.iter().enumerate() {
+        check_size(e.width, e.height, "exemplar")?;
+        if e.width < side || e.height < side {
+            return invalid(format!(
+                "Exemplar {} is {}x{}, smaller than the {side}x{side} neighbourhood.",
+                i + 1,
+                e.width,
+                e.height
+            ));
+        }
+    }
+    let levels = match params.levels {
+        Some(l) if l == 0 || l > 8 => return invalid("Levels must be from 1 to 8."),
+        Some(l) => l,
+        None => default_levels(exemplars, width, height, side),
+    };
+    let half = (side / 2) as isize;
+    let causal = Shape::causal(half);
+    let full = Shape::full(half);
+    let exs: Vec<Exemplar> =
+        exemplars.iter().map(|e| Exemplar { levels: pyramid::build(e, levels, Edge::Clamp) }).collect();
+    let mut rng = Rng::new(params.seed);
+
+    // Output pyramid, finest first; sizes round up like the exemplars'.
+    let mut out: Vec<Image> = Vec::with_capacity(levels);
+    let (mut w, mut h) = (width, height);
+    for _ in 0..levels {
+        out.push(Image::new(w, h));
+        w = w.div_ceil(2);
+        h = h.div_ceil(2);
+    }
+    let total: usize = out.iter().map(|o| o.width * o.height).sum::<usize>() * (1 + params.corrections);
+    let mut done = 0usize;
+    // Source positions per exemplar, at the current level and at its parent.
+    let mut parent_src: Vec<Vec<u32>> = Vec::new();
+
+    for level in (0..levels).rev() {
+        let (lw, lh) = (out[level].width, out[level].height);
+        let with_parent = level + 1 < levels;
+        let scale = 1usize << level;
+        // The weights at this level: sampled at the pixel's footprint in the full output.
+        let wt = |x: usize, y: usize, e: usize| {
+            let (fx, fy) = ((x * scale).min(width - 1), (y * scale).min(height - 1));
+            weights[(fy * width + fx) * n_ex + e]
+        };
+        // Noise from the exemplars' colours, each pixel from an exemplar drawn by weight.
+        let mut src: Vec<Vec<u32>> = exs
+            .iter()
+            .map(|ex| {
+                let n = ex.levels[level].data.len();
+                (0..lw * lh).map(|_| rng.below(n) as u32).collect()
+            })
+            .collect();
+        for y in 0..lh {
+            for x in 0..lw {
+                let mut pick = rng.next_f64() as f32;
+                let mut e = 0;
+                while e + 1 < n_ex && pick > wt(x, y, e) {
+                    pick -= wt(x, y, e);
+                    e += 1;
+                }
+                out[level].data[y * lw + x] = exs[e].levels[level].data[src[e][y * lw + x] as usize];
+            }
+        }
+        let exhaustive = params.exhaustive || level + 1 == levels;
+        let pass = Pass {
+            exs: &exs,
+            level,
+            with_parent,
+            exhaustive,
+            random: params.random_candidates,
+            parent_src: &parent_src,
+        };
+        let offs: Vec<(Offsets, Offsets)> = exs
+            .iter()
+            .map(|ex| {
+                let pw = if with_parent { ex.levels[level + 1].width } else { 1 };
+                (offsets(&causal, ex.levels[level].width, pw), offsets(&full, ex.levels[level].width, pw))
+            })
+            .collect();
+        let mut f = Vec::with_capacity(full.dim(true));
+        let mut cands = Vec::with_capacity(64);
+        for y in 0..lh {
+            for x in 0..lw {
+                pass.pixel(&mut out, &mut src, &causal, &offs, false, x, y, &wt, &mut rng, &mut f, &mut cands);
+            }
+            done += lw;
+            progress.tick(done as f64 / total as f64)?;
+        }
+        for _ in 0..params.corrections {
+            for y in 0..lh {
+                for x in 0..lw {
+                    pass.pixel(&mut out, &mut src, &full, &offs, true, x, y, &wt, &mut rng, &mut f, &mut cands);
+                }
+                done += lw;
+                progress.tick(done as f64 / total as f64)?;
+            }
+        }
+        if params.tileable && params.corrections == 0 {
+            // The first rows and columns were made against noise across the wrap: redo
+            // them with full neighbourhoods now that everything around them is set.
+            let band = (2 * half as usize).min(lh).min(lw);
+            for y in 0..lh {
+                for x in 0..lw {
+                    if y < band || x < band || y + band / 2 >= lh || x + band / 2 >= lw {
+                        pass.pixel(&mut out, &mut src, &full, &offs, true, x, y, &wt, &mut rng, &mut f, &mut cands);
+                    }
+                }
+            }
+        }
+        parent_src = src;
+    }
+    progress.tick(1.0)?;
+    Ok(out.swap_remove(0))
+}
+
+struct Pass<'a> {
+    exs: &'a [Exemplar],
+    level: usize,
+    with_parent: bool,
+    exhaustive: bool,
+    random: usize,
+    parent_src: &'a [Vec<u32>],
+}
+
+impl Pass<'_> {
+    /// Synthesizes output pixel (x, y) at this level.
+    #[allow(clippy::too_many_arguments)]
+    fn pixel(
+        &self,
+        out: &mut [Image],
+        src: &mut [Vec<u32>],
+        shape: &Shape,
+        offs: &[(Offsets, Offsets)],
+        use_full: bool,
+        x: usize,
+        y: usize,
+        wt: &impl Fn(usize, usize, usize) -> f32,
+        rng: &mut Rng,
+        f: &mut Vec<f32>,
+        cands: &mut Vec<u32>,
+    ) {
+        let level = self.level;
+        let (lw, lh) = (out[level].width, out[level].height);
+        feature(out, level, x, y, shape, self.with_parent, f);
+        let mut colour = [0.0f32; 3];
+        for (e, ex) in self.exs.iter().enumerate() {
+            let weight = wt(x, y, e);
+            let img = &ex.levels[level];
+            let off = if use_full { &offs[e].1 } else { &offs[e].0 };
+            let best = if weight <= 0.0 && !self.exhaustive {
+                // Not visible here: keep a coherent source so neighbours can continue it.
+                self.coherent_candidates(src, e, shape, x, y, lw, lh, img, rng, cands);
+                cands[0]
+            } else if self.exhaustive {
+                let mut best = (f32::INFINITY, 0u32);
+                for pos in 0..img.data.len() {
+                    let d = distance(ex, level, pos, shape, off, f, best.0);
+                    if d < best.0 {
+                        best = (d, pos as u32);
+                    }
+                }
+                best.1
+            } else {
+                self.coherent_candidates(src, e, shape, x, y, lw, lh, img, rng, cands);
+                let mut best = (f32::INFINITY, cands[0]);
+                for &pos in cands.iter() {
+                    let d = distance(ex, level, pos as usize, shape, off, f, best.0);
+                    if d < best.0 {
+                        best = (d, pos);
+                    }
+                }
+                best.1
+            };
+            src[e][y * lw + x] = best;
+            if weight > 0.0 {
+                let p = img.data[best as usize];
+                for c in 0..3 {
+                    colour[c] += weight * p[c];
+                }
+            }
+        }
+        out[level].data[y * lw + x] = colour;
+    }
+
+    /// Candidate exemplar positions for exemplar `e` at (x, y): each neighbour's source
+    /// shifted back by the neighbour's offset, the parent's source scaled up, and a few
+    /// random positions; without repeats.
+    #[allow(clippy::too_many_arguments)]
+    fn coherent_candidates(
+        &self,
+        src: &[Vec<u32>],
+        e: usize,
+        shape: &Shape,
+        x: usize,
+        y: usize,
+        lw: usize,
+        lh: usize,
+        img: &Image,
+        rng: &mut Rng,
+        cands: &mut Vec<u32>,
+    ) {
+        cands.clear();
+        let (ew, eh) = (img.width as isize, img.height as isize);
+        let push = |c: u32, cands: &mut Vec<u32>| {
+            if !cands.contains(&c) {
+                cands.push(c);
+            }
+        };
+        for &(dx, dy) in &shape.own {
+            let nx = (x as isize + dx).rem_euclid(lw as isize) as usize;
+            let ny = (y as isize + dy).rem_euclid(lh as isize) as usize;
+            let s = src[e][ny * lw + nx] as isize;
+            let (sx, sy) = (s % ew - dx, s / ew - dy);
+            if sx >= 0 && sx < ew && sy >= 0 && sy < eh {
+                push((sy * ew + sx) as u32, cands);
+            }
+        }
+        if self.with_parent {
+            let parent = &self.exs[e].levels[self.level + 1];
+            let (pw, plw) = (parent.width as isize, lw.div_ceil(2));
+            let s = self.parent_src[e][(y / 2) * plw + x / 2] as isize;
+            let sx = (2 * (s % pw) + (x % 2) as isize).min(ew - 1);
+            let sy = (2 * (s / pw) + (y % 2) as isize).min(eh - 1);
+            push((sy * ew + sx) as u32, cands);
+        }
+        for _ in 0..self.random.max(usize::from(cands.is_empty())) {
+            push(rng.below(img.data.len()) as u32, cands);
+        }
+    }
+}

@@ -1,0 +1,128 @@
+//! The texture engines' entry points: `synthesize_texture` (one exemplar, "more of this
+//! texture") and `blend_textures` (two exemplars mixed by a generation coefficient).
+
+use super::coefficient::{self, Transfer};
+use super::image::Image;
+use super::synthesis::{synthesize, Params};
+use crate::error::{invalid, Result};
+use crate::progress::{Progress, Throttle};
+use serde::Deserialize;
+
+/// Options of `synthesize_texture`.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(rename_all = "camelCase", default, deny_unknown_fields)]
+pub struct TextureOptions {
+    pub width: usize,
+    pub height: usize,
+    pub seed: u64,
+    pub tileable: bool,
+    pub exhaustive: bool,
+    pub levels: Option<usize>,
+    pub neighbourhood: usize,
+}
+
+impl Default for TextureOptions {
+    fn default() -> Self {
+        let p = Params::default();
+        TextureOptions {
+            width: p.width,
+            height: p.height,
+            seed: p.seed,
+            tileable: false,
+            exhaustive: false,
+            levels: None,
+            neighbourhood: p.neighbourhood,
+        }
+    }
+}
+
+/// How the coefficient varies (the JS `coefficient` option, with `angle`/`transfer`).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Coefficient {
+    /// The paper's maps, top to bottom, with a transfer.
+    Vertical(Transfer),
+    /// Any direction (degrees; 90 = top to bottom) with a transfer.
+    Angle(f64, Transfer),
+    /// A at the centre, B at the corners.
+    Radial(Transfer),
+    /// One value in [0, 1] per output pixel.
+    Map(Vec<f32>),
+}
+
+#[derive(Clone, Debug)]
+pub struct BlendOptions {
+    pub width: usize,
+    pub height: usize,
+    pub coefficient: Coefficient,
+    pub seed: u64,
+    pub tileable: bool,
+    pub exhaustive: bool,
+    pub levels: Option<usize>,
+    pub neighbourhood: usize,
+}
+
+impl Default for BlendOptions {
+    fn default() -> Self {
+        let t = TextureOptions::default();
+        BlendOptions {
+            width: t.width,
+            height: t.height,
+            coefficient: Coefficient::Vertical(Transfer::Linear),
+            seed: t.seed,
+            tileable: false,
+            exhaustive: false,
+            levels: None,
+            neighbourhood: t.neighbourhood,
+        }
+    }
+}
+
+/// More of one texture: a `width x height` image that looks like `exemplar`.
+pub fn synthesize_texture(exemplar: &Image, opts: &TextureOptions, progress: &mut dyn Progress) -> Result<Image> {
+    let params = Params {
+        width: opts.width,
+        height: opts.height,
+        seed: opts.seed,
+        levels: opts.levels,
+        neighbourhood: opts.neighbourhood,
+        exhaustive: opts.exhaustive,
+        tileable: opts.tileable,
+        ..Params::default()
+    };
+    super::image::check_output(opts.width, opts.height)?;
+    let weights = vec![1.0f32; opts.width * opts.height];
+    synthesize(&[exemplar], &weights, &params, &mut Throttle::new(progress))
+}
+
+/// The coefficient map mu (weight of A) for these options.
+pub fn coefficient_map(c: &Coefficient, width: usize, height: usize) -> Result<Vec<f32>> {
+    use coefficient::Shape;
+    match c {
+        Coefficient::Vertical(t) => coefficient::map(&Shape::Directional { angle: 90.0 }, *t, width, height),
+        Coefficient::Angle(a, t) => coefficient::map(&Shape::Directional { angle: *a }, *t, width, height),
+        Coefficient::Radial(t) => coefficient::map(&Shape::Radial, *t, width, height),
+        Coefficient::Map(m) => coefficient::map(&Shape::Map(m.clone()), Transfer::Linear, width, height),
+    }
+}
+
+/// Two exemplars blended: each output pixel takes the best match in A and in B for the
+/// same output neighbourhood and mixes them by mu(x, y) and 1 - mu(x, y).
+pub fn blend_textures(a: &Image, b: &Image, opts: &BlendOptions, progress: &mut dyn Progress) -> Result<Image> {
+    super::image::check_output(opts.width, opts.height)?;
+    let mu = coefficient_map(&opts.coefficient, opts.width, opts.height)?;
+    if mu.is_empty() {
+        return invalid("The output is empty.");
+    }
+    let weights: Vec<f32> = mu.iter().flat_map(|&m| [m, 1.0 - m]).collect();
+    let params = Params {
+        width: opts.width,
+        height: opts.height,
+        seed: opts.seed,
+        levels: opts.levels,
+        neighbourhood: opts.neighbourhood,
+        exhaustive: opts.exhaustive,
+        tileable: opts.tileable,
+        ..Params::default()
+    };
+    synthesize(&[a, b], &weights, &params, &mut Throttle::new(progress))
+}

@@ -1,0 +1,149 @@
+//! The texture engines natively: blending puts A at the top and B at the bottom, plain
+//! synthesis keeps the exemplar's look without repeating it, tileable outputs wrap
+//! without seams, the accelerated search stays close to the exhaustive one, and bad
+//! input gets a clear error.
+
+use patternsynth::raster::codec::decode_image;
+use patternsynth::raster::energy::{patch_energy, repetition};
+use patternsynth::raster::{blend_textures, synthesize_texture, BlendOptions, Coefficient, Image, TextureOptions};
+use patternsynth::{Error, Silent};
+
+fn load(name: &str, side: usize) -> Image {
+    let bytes = std::fs::read(format!("tests/fixtures/textures/{name}.png")).unwrap();
+    let d = decode_image(&bytes).unwrap();
+    let full = Image::from_rgba8(d.width, d.height, &d.data).unwrap();
+    // A top-left crop keeps the tests quick.
+    let mut out = Image::new(side, side);
+    for y in 0..side {
+        for x in 0..side {
+            out.data[y * side + x] = full.at(x, y);
+        }
+    }
+    out
+}
+
+fn mean(img: &Image) -> [f32; 3] {
+    let n = img.data.len() as f32;
+    let mut m = [0.0; 3];
+    for p in &img.data {
+        for c in 0..3 {
+            m[c] += p[c] / n;
+        }
+    }
+    m
+}
+
+#[test]
+fn blend_resembles_a_at_the_top_and_b_at_the_bottom() {
+    let (a, b) = (load("wood", 64), load("gravel", 64));
+    let opts = BlendOptions { width: 96, height: 96, seed: 3, ..Default::default() };
+    let out = blend_textures(&a, &b, &opts, &mut Silent).unwrap();
+    assert_eq!((out.width, out.height), (96, 96));
+    let top = (0, 16);
+    let bottom = (80, 96);
+    let (ta, tb) = (patch_energy(&out, &a, 120, top, 1), patch_energy(&out, &b, 120, top, 1));
+    let (ba, bb) = (patch_energy(&out, &a, 120, bottom, 1), patch_energy(&out, &b, 120, bottom, 1));
+    println!("top vs A {ta:.1} vs B {tb:.1}; bottom vs A {ba:.1} vs B {bb:.1}");
+    assert!(ta < 0.6 * tb, "top is A: {ta} vs {tb}");
+    assert!(bb < 0.6 * ba, "bottom is B: {bb} vs {ba}");
+    // Wood is orange, gravel grey: the red-blue difference falls from top to bottom.
+    let band = |y0: usize, y1: usize| {
+        let px: Vec<_> = out.data[y0 * 96..y1 * 96].to_vec();
+        px.iter().map(|p| p[0] - p[2]).sum::<f32>() / px.len() as f32
+    };
+    assert!(band(0, 16) > band(40, 56) && band(40, 56) > band(80, 96));
+}
+
+#[test]
+fn single_exemplar_keeps_the_look_without_copying_it_whole() {
+    let ex = load("grass", 64);
+    let out = synthesize_texture(
+        &ex,
+        &TextureOptions { width: 128, height: 128, seed: 5, ..Default::default() },
+        &mut Silent,
+    )
+    .unwrap();
+    let (m, me) = (mean(&out), mean(&ex));
+    for c in 0..3 {
+        assert!((m[c] - me[c]).abs() < 0.08 * me[c].max(20.0), "mean colour {m:?} vs {me:?}");
+    }
+    let energy = patch_energy(&out, &ex, 150, (0, 128), 2);
+    let rep = repetition(&out, 16, 2);
+    println!("patch energy {energy:.2}, repetition {rep:.3}");
+    // A verbatim tiling of the 64-pixel exemplar would score ~0 at the 64-pixel shift.
+    assert!(rep > 0.3, "repetition {rep}");
+    // Noise of the exemplar's colours scores far higher than a good synthesis.
+    let mut noise = out.clone();
+    let mut rng = patternsynth::rng::Rng::new(9);
+    for p in &mut noise.data {
+        *p = ex.data[rng.below(ex.data.len())];
+    }
+    assert!(energy < 0.6 * patch_energy(&noise, &ex, 150, (0, 128), 2));
+}
+
+#[test]
+fn tileable_output_wraps_without_a_seam() {
+    let ex = load("wood", 64);
+    let opts = TextureOptions { width: 96, height: 96, seed: 2, tileable: true, ..Default::default() };
+    let out = synthesize_texture(&ex, &opts, &mut Silent).unwrap();
+    let diff = |x0: usize, y0: usize, x1: usize, y1: usize| {
+        let (p, q) = (out.at(x0, y0), out.at(x1, y1));
+        ((p[0] - q[0]).abs() + (p[1] - q[1]).abs() + (p[2] - q[2]).abs()) as f64
+    };
+    let n = 96;
+    let seam_x: f64 = (0..n).map(|y| diff(n - 1, y, 0, y)).sum::<f64>() / n as f64;
+    let seam_y: f64 = (0..n).map(|x| diff(x, n - 1, x, 0)).sum::<f64>() / n as f64;
+    let inner: f64 =
+        (0..n).flat_map(|y| (0..n - 1).map(move |x| (x, y))).map(|(x, y)| diff(x, y, x + 1, y)).sum::<f64>()
+            / (n * (n - 1)) as f64;
+    println!("seams {seam_x:.1} {seam_y:.1} vs interior {inner:.1}");
+    assert!(seam_x < 1.5 * inner && seam_y < 1.5 * inner);
+}
+
+#[test]
+fn accelerated_search_stays_close_to_exhaustive() {
+    let ex = load("gravel", 32);
+    let opts = TextureOptions { width: 48, height: 48, seed: 4, ..Default::default() };
+    let fast = synthesize_texture(&ex, &opts, &mut Silent).unwrap();
+    let full = synthesize_texture(&ex, &TextureOptions { exhaustive: true, ..opts }, &mut Silent).unwrap();
+    let (ef, ee) = (patch_energy(&fast, &ex, 200, (0, 48), 3), patch_energy(&full, &ex, 200, (0, 48), 3));
+    println!("accelerated {ef:.2} exhaustive {ee:.2}");
+    assert!(ef < 1.25 * ee, "accelerated {ef} vs exhaustive {ee}");
+}
+
+#[test]
+fn same_seed_same_image() {
+    let ex = load("brick", 32);
+    let o = TextureOptions { width: 40, height: 40, seed: 8, ..Default::default() };
+    assert_eq!(synthesize_texture(&ex, &o, &mut Silent).unwrap(), synthesize_texture(&ex, &o, &mut Silent).unwrap());
+}
+
+#[test]
+fn bad_input_is_a_clear_error() {
+    let ex = load("wood", 32);
+    let tiny = Image::new(3, 3);
+    let err = |r: Result<Image, Error>| r.unwrap_err().to_string();
+    assert!(Image::from_rgba8(0, 5, &[]).unwrap_err().to_string().contains("empty"));
+    assert!(Image::from_rgba8(2, 2, &[0; 15]).unwrap_err().to_string().contains("needs 16"));
+    let o = |w, h| TextureOptions { width: w, height: h, ..Default::default() };
+    assert!(err(synthesize_texture(&ex, &o(0, 10), &mut Silent)).contains("empty"));
+    assert!(err(synthesize_texture(&ex, &o(100_000, 10), &mut Silent)).contains("largest side"));
+    assert!(err(synthesize_texture(&ex, &o(4000, 4000), &mut Silent)).contains("limit"));
+    assert!(err(synthesize_texture(&tiny, &o(10, 10), &mut Silent)).contains("smaller than the 5x5 neighbourhood"));
+    assert!(
+        err(synthesize_texture(&ex, &TextureOptions { neighbourhood: 4, ..o(10, 10) }, &mut Silent)).contains("odd")
+    );
+    let mut nan = vec![0.5f32; 100];
+    nan[7] = f32::NAN;
+    let b = BlendOptions { width: 10, height: 10, coefficient: Coefficient::Map(nan), ..Default::default() };
+    assert!(err(blend_textures(&ex, &ex, &b, &mut Silent)).contains("not a number"));
+    let short =
+        BlendOptions { width: 10, height: 10, coefficient: Coefficient::Map(vec![0.5; 99]), ..Default::default() };
+    assert!(err(blend_textures(&ex, &ex, &short, &mut Silent)).contains("needs 100"));
+    let mut calls = 0;
+    let mut cancel = |_: f64| {
+        calls += 1;
+        calls < 3
+    };
+    assert_eq!(synthesize_texture(&ex, &o(64, 64), &mut cancel).unwrap_err(), Error::Cancelled);
+}
