@@ -9,7 +9,7 @@ rm -rf pkg && mkdir -p pkg
 wasm-bindgen --target web --out-dir pkg --out-name patternsynth \
   target/wasm32-unknown-unknown/release/patternsynth.wasm
 # npm's binaryen (Debian's wasm-opt 108 emits modules that fail to load).
-node_modules/.bin/wasm-opt -Oz --enable-bulk-memory --enable-nontrapping-float-to-int --enable-sign-ext \
+node_modules/.bin/wasm-opt -Oz --converge --strip-debug --strip-producers --enable-bulk-memory --enable-nontrapping-float-to-int --enable-sign-ext \
   --enable-mutable-globals --enable-reference-types --enable-multivalue \
   pkg/patternsynth_bg.wasm -o pkg/patternsynth_bg.wasm
 cp js/pkg/* pkg/

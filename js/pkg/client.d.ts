@@ -1,5 +1,6 @@
 import type {
   Stroke, StrokeOptions, StrokeResult, ParseSvgOptions, SvgImport, Classification, ClassifyOptions,
+  Rgba, TextureOptions, BlendOptions,
 } from './patternsynth.js';
 
 export interface CallOptions {
@@ -16,6 +17,10 @@ export class PatternSynthClient {
   classifyStrokes(strokes: Stroke[], opts?: ClassifyOptions, options?: CallOptions): Promise<Classification>;
   synthesizeStrokes(strokes: Stroke[], opts: StrokeOptions, options?: CallOptions): Promise<StrokeResult>;
   exampleStrokes(options?: CallOptions): Promise<{ name: string; strokes: Stroke[] }[]>;
+  synthesizeTexture(image: Rgba, opts: TextureOptions, options?: CallOptions): Promise<Rgba>;
+  blendTextures(a: Rgba, b: Rgba, opts: BlendOptions, options?: CallOptions): Promise<Rgba>;
+  decodeImage(bytes: Uint8Array, options?: CallOptions): Promise<Rgba>;
+  encodePng(image: Rgba, options?: CallOptions): Promise<Uint8Array>;
   version(): Promise<string>;
   terminate(): void;
 }

@@ -24,6 +24,10 @@ export class PatternSynthClient {
   classifyStrokes(strokes, opts, options) { return this.run('classifyStrokes', [strokes, opts], options); }
   synthesizeStrokes(strokes, opts, options) { return this.run('synthesizeStrokes', [strokes, opts], options); }
   exampleStrokes(options) { return this.run('exampleStrokes', [], options); }
+  synthesizeTexture(image, opts, options) { return this.run('synthesizeTexture', [image, opts], options); }
+  blendTextures(a, b, opts, options) { return this.run('blendTextures', [a, b, opts], options); }
+  decodeImage(bytes, options) { return this.run('decodeImage', [bytes], options); }
+  encodePng(image, options) { return this.run('encodePng', [image], options); }
   version() { return this.run('version', []); }
 
   /** Stops the worker; pending calls are rejected. */

@@ -8,8 +8,14 @@
 import init, * as api from './patternsynth.js';
 
 const ready = init();
-const METHODS = new Set(['parseSvg', 'parseSvgReport', 'classifyStrokes', 'synthesizeStrokes', 'exampleStrokes', 'version']);
-const WITH_PROGRESS = new Set(['synthesizeStrokes']);
+const METHODS = new Set([
+  'parseSvg', 'parseSvgReport', 'classifyStrokes', 'synthesizeStrokes', 'exampleStrokes', 'version',
+  'synthesizeTexture', 'blendTextures', 'decodeImage', 'encodePng',
+]);
+const WITH_PROGRESS = new Set(['synthesizeStrokes', 'synthesizeTexture', 'blendTextures']);
+
+// Pixel buffers go back by transfer, not by copy.
+const transferables = (r) => (r instanceof Uint8Array ? [r.buffer] : r?.data?.buffer instanceof ArrayBuffer ? [r.data.buffer] : []);
 
 self.onmessage = async ({ data }) => {
   const { id, method, args = [] } = data;
@@ -19,7 +25,7 @@ self.onmessage = async ({ data }) => {
     const call = WITH_PROGRESS.has(method)
       ? api[method](...args, (fraction) => { self.postMessage({ id, progress: fraction }); })
       : api[method](...args);
-    self.postMessage({ id, result: call });
+    self.postMessage({ id, result: call }, transferables(call));
   } catch (e) {
     self.postMessage({ id, error: e instanceof Error ? e.message : String(e) });
   }

@@ -3,7 +3,7 @@
 
 use super::image::{check_size, MAX_SIDE};
 use crate::error::{Error, Result};
-use image::{ImageEncoder, ImageFormat, ImageReader, Limits};
+use image::{ColorType, ImageDecoder, ImageEncoder, ImageFormat, Limits};
 use std::io::Cursor;
 
 /// RGBA bytes and their size.
@@ -17,23 +17,71 @@ pub struct Rgba {
 pub fn decode_image(bytes: &[u8]) -> Result<Rgba> {
     let format = image::guess_format(bytes)
         .map_err(|_| Error::Image("it is neither PNG nor JPEG (unrecognised data).".into()))?;
-    if !matches!(format, ImageFormat::Png | ImageFormat::Jpeg) {
-        return Err(Error::Image(format!("{format:?} is not supported; use PNG or JPEG.")));
-    }
-    let mut reader = ImageReader::with_format(Cursor::new(bytes), format);
     let mut limits = Limits::default();
     limits.max_image_width = Some(MAX_SIDE as u32);
     limits.max_image_height = Some(MAX_SIDE as u32);
     limits.max_alloc = Some(512 << 20);
-    reader.limits(limits);
-    let img = reader.decode().map_err(|e| match e {
+    let failed = |e: image::ImageError| match e {
         image::ImageError::Limits(_) => {
             Error::TooLarge(format!("The image is larger than {MAX_SIDE}x{MAX_SIDE} pixels."))
         }
         other => Error::Image(format!("{other}.")),
-    })?;
-    let rgba = img.to_rgba8();
-    Ok(Rgba { width: rgba.width() as usize, height: rgba.height() as usize, data: rgba.into_raw() })
+    };
+    // The format decoders directly, not DynamicImage: its conversions between every
+    // pixel type cost the wasm module about a hundred kilobytes.
+    match format {
+        ImageFormat::Png => {
+            let mut d = image::codecs::png::PngDecoder::new(Cursor::new(bytes)).map_err(failed)?;
+            d.set_limits(limits).map_err(failed)?;
+            read(d).map_err(failed)
+        }
+        ImageFormat::Jpeg => {
+            let mut d = image::codecs::jpeg::JpegDecoder::new(Cursor::new(bytes)).map_err(failed)?;
+            d.set_limits(limits).map_err(failed)?;
+            read(d).map_err(failed)
+        }
+        other => Err(Error::Image(format!("{other:?} is not supported; use PNG or JPEG."))),
+    }
+}
+
+/// Reads a decoder's pixels and widens them to RGBA8.
+fn read(d: impl ImageDecoder) -> std::result::Result<Rgba, image::ImageError> {
+    let (w, h) = d.dimensions();
+    let color = d.color_type();
+    let mut buf = vec![0u8; d.total_bytes() as usize];
+    d.read_image(&mut buf)?;
+    let n = (w * h) as usize;
+    let mut data = Vec::with_capacity(n * 4);
+    let wide = |v: &[u8], i: usize| v[2 * i + usize::from(cfg!(target_endian = "little"))];
+    for i in 0..n {
+        let px: [u8; 4] = match color {
+            ColorType::L8 => [buf[i], buf[i], buf[i], 255],
+            ColorType::La8 => [buf[2 * i], buf[2 * i], buf[2 * i], buf[2 * i + 1]],
+            ColorType::Rgb8 => [buf[3 * i], buf[3 * i + 1], buf[3 * i + 2], 255],
+            ColorType::Rgba8 => [buf[4 * i], buf[4 * i + 1], buf[4 * i + 2], buf[4 * i + 3]],
+            // 16-bit samples in native byte order: keep the high byte.
+            ColorType::L16 => {
+                let v = wide(&buf, i);
+                [v, v, v, 255]
+            }
+            ColorType::La16 => {
+                let v = wide(&buf, 2 * i);
+                [v, v, v, wide(&buf, 2 * i + 1)]
+            }
+            ColorType::Rgb16 => [wide(&buf, 3 * i), wide(&buf, 3 * i + 1), wide(&buf, 3 * i + 2), 255],
+            ColorType::Rgba16 => {
+                [wide(&buf, 4 * i), wide(&buf, 4 * i + 1), wide(&buf, 4 * i + 2), wide(&buf, 4 * i + 3)]
+            }
+            other => {
+                return Err(image::ImageError::Unsupported(image::error::UnsupportedError::from_format_and_kind(
+                    image::error::ImageFormatHint::Unknown,
+                    image::error::UnsupportedErrorKind::Color(other.into()),
+                )))
+            }
+        };
+        data.extend_from_slice(&px);
+    }
+    Ok(Rgba { width: w as usize, height: h as usize, data })
 }
 
 pub fn encode_png(width: usize, height: usize, rgba: &[u8]) -> Result<Vec<u8>> {
