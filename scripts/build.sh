@@ -15,6 +15,8 @@ node_modules/.bin/wasm-opt -Oz --converge --strip-debug --strip-producers --enab
 cp js/pkg/* pkg/
 rm -f pkg/.gitignore
 rm -rf www/pkg && cp -r pkg www/pkg
+# The playground's built-in textures: the CC0 photographs the tests use.
+mkdir -p www/textures && cp tests/fixtures/textures/*.png www/textures/
 raw=$(stat -c %s pkg/patternsynth_bg.wasm)
 gz=$(gzip -9 -c pkg/patternsynth_bg.wasm | wc -c)
 echo "pkg/patternsynth_bg.wasm: $raw bytes raw, $gz bytes gzip"

@@ -1,11 +1,12 @@
 // The playground shell: tabs, the shared worker client, and each feature's client.
 import { PatternSynthClient } from './pkg/client.js';
 import { mountStrokes } from './features/strokes/client/index.js';
+import { mountBlend } from './features/blend/client/index.js';
 
 const client = new PatternSynthClient(new URL('./pkg/worker.js', import.meta.url));
 window.patternsynth = client; // handy from the console and for tests
 
-const features = { strokes: mountStrokes };
+const features = { strokes: mountStrokes, blend: mountBlend };
 for (const section of document.querySelectorAll('[data-feature]')) {
   features[section.dataset.feature]?.(section, client);
 }

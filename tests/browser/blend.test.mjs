@@ -1,0 +1,109 @@
+// The Blend tab end to end in headless Chromium: built-in photographs load, a blend runs
+// in the worker, a long run is cancelled, the PNG downloads and decodes to the right
+// size with A's look at the top and B's at the bottom (patch energy), a mask can be
+// painted. Leaves a screenshot in out/blend.png.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { mkdirSync, readFileSync } from 'node:fs';
+import { chromium } from 'playwright-core';
+import { CHROMIUM } from './chromium.mjs';
+import { serve } from '../../scripts/static-server.mjs';
+import { decodeImage } from '../../pkg/node.js';
+
+let server, browser, page;
+
+before(async () => {
+  server = await serve('www', 0);
+  browser = await chromium.launch(CHROMIUM);
+  const context = await browser.newContext({ acceptDownloads: true, viewport: { width: 1400, height: 1000 } });
+  page = await context.newPage();
+  page.on('pageerror', (e) => console.error('page error:', e.message));
+  await page.goto(`http://127.0.0.1:${server.address().port}/`);
+  await page.click('[data-tab="blend"]');
+  await page.waitForFunction(() => document.querySelector('#slot-a canvas').width === 128 && document.querySelector('#slot-b canvas').width === 128);
+});
+
+after(async () => {
+  await browser?.close();
+  server?.close();
+});
+
+/** RMS over sampled pixels of the best 7x7 match in the exemplar (as the benchmark). */
+function patchEnergy(out, ex, rows, samples = 60) {
+  let seed = 7;
+  const rand = (n) => { seed = (seed * 1103515245 + 12345) % 2147483648; return seed % n; };
+  const px = (img, x, y) => {
+    x = ((x % img.width) + img.width) % img.width; y = ((y % img.height) + img.height) % img.height;
+    const i = 4 * (y * img.width + x);
+    return [img.data[i], img.data[i + 1], img.data[i + 2]];
+  };
+  let total = 0;
+  for (let s = 0; s < samples; s++) {
+    const x = rand(out.width), y = rows[0] + rand(rows[1] - rows[0]);
+    const patch = [];
+    for (let dy = -3; dy <= 3; dy++) for (let dx = -3; dx <= 3; dx++) patch.push(px(out, x + dx, y + dy));
+    let best = Infinity;
+    for (let cy = 3; cy < ex.height - 3; cy++) for (let cx = 3; cx < ex.width - 3; cx++) {
+      let acc = 0, k = 0;
+      for (let dy = -3; dy <= 3 && acc < best; dy++) for (let dx = -3; dx <= 3; dx++) {
+        const i = 4 * ((cy + dy) * ex.width + cx + dx), q = patch[k++];
+        acc += (ex.data[i] - q[0]) ** 2 + (ex.data[i + 1] - q[1]) ** 2 + (ex.data[i + 2] - q[2]) ** 2;
+      }
+      best = Math.min(best, acc);
+    }
+    total += best / 147;
+  }
+  return Math.sqrt(total / samples);
+}
+
+test('a long blend can be cancelled', async () => {
+  await page.fill('#blend-width', '1024');
+  await page.fill('#blend-height', '1024');
+  await page.click('#blend-run');
+  await page.waitForFunction(() => document.querySelector('#blend-progress').value > 0.01, null, { timeout: 60000 });
+  await page.click('#blend-cancel');
+  await page.waitForFunction(() => document.querySelector('#blend-messages').textContent === 'Cancelled.');
+  assert.equal(await page.isDisabled('#blend-run'), false);
+});
+
+test('blend wood into gravel, download the PNG, A on top and B below', async () => {
+  await page.fill('#blend-width', '128');
+  await page.fill('#blend-height', '128');
+  await page.click('#blend-run');
+  await page.waitForFunction(() => document.querySelector('#blend-messages').textContent === 'Done.', null, { timeout: 60000 });
+  const [download] = await Promise.all([page.waitForEvent('download'), page.click('#blend-download')]);
+  assert.equal(download.suggestedFilename(), 'texture.png');
+  const out = decodeImage(readFileSync(await download.path()));
+  assert.equal(out.width, 128);
+  assert.equal(out.height, 128);
+  const a = decodeImage(readFileSync('tests/fixtures/textures/wood.png'));
+  const b = decodeImage(readFileSync('tests/fixtures/textures/gravel.png'));
+  const top = [0, 20], bottom = [108, 128];
+  const [ta, tb, ba, bb] = [patchEnergy(out, a, top), patchEnergy(out, b, top), patchEnergy(out, a, bottom), patchEnergy(out, b, bottom)];
+  console.log({ ta, tb, ba, bb });
+  assert.ok(ta < 0.7 * tb, `top resembles A: ${ta} vs ${tb}`);
+  assert.ok(bb < 0.7 * ba, `bottom resembles B: ${bb} vs ${ba}`);
+  mkdirSync('out', { recursive: true });
+  await page.screenshot({ path: 'out/blend.png', fullPage: true });
+});
+
+test('painting on the coefficient switches to a mask, and single-exemplar mode runs', async () => {
+  const box = await page.locator('#blend-mask').boundingBox();
+  await page.mouse.move(box.x + 40, box.y + 200);
+  await page.mouse.down();
+  await page.mouse.move(box.x + 200, box.y + 200, { steps: 8 });
+  await page.mouse.up();
+  assert.equal(await page.inputValue('#blend-transition'), 'mask');
+  await page.check('input[name="blend-mode"][value="single"]');
+  await page.fill('#blend-width', '96');
+  await page.fill('#blend-height', '64');
+  await page.click('#blend-run');
+  await page.waitForFunction(() => document.querySelector('#blend-messages').textContent === 'Done.', null, { timeout: 60000 });
+  assert.match(await page.textContent('#blend-info'), /96×64, single exemplar/);
+  await page.check('input[name="blend-mode"][value="blend"]');
+});
+
+test('a file that is not an image gets a clear message', async () => {
+  await page.setInputFiles('#slot-a input[type=file]', { name: 'notes.png', mimeType: 'image/png', buffer: Buffer.from('hello') });
+  await page.waitForFunction(() => /not an image/.test(document.querySelector('#blend-messages').textContent));
+});

@@ -1,0 +1,305 @@
+// Blend tab: two exemplars (built-in photographs, files, drag and drop), a transition or
+// a painted mask, synthesis in the worker with progress and cancel, PNG download.
+import { defaultOptions, maskKey, maxExemplarSide, maxOutputSide, storageKey, textures } from '../shared/meta.js';
+
+/** The coefficient transfers, as the engine defines them (mu of A in [0, 1]). */
+const TRANSFER = {
+  linear: (t) => t,
+  ease: (t) => 0.5 + 4 * (t - 0.5) ** 3,
+  steep: (t) => {
+    const s = (u) => 1 / (1 + Math.exp(-14 * (u - 0.5)));
+    return (s(t) - s(0)) / (s(1) - s(0));
+  },
+};
+
+/** mu at (x, y) of a w x h image for a shape, as the engine computes it. */
+function coefficientAt(shape, angle, w, h) {
+  if (shape === 'radial') {
+    const cx = (w - 1) / 2, cy = (h - 1) / 2, r = Math.hypot(cx, cy) || 1;
+    return (x, y) => 1 - Math.hypot(x - cx, y - cy) / r;
+  }
+  const a = (angle * Math.PI) / 180, dx = Math.cos(a), dy = Math.sin(a);
+  const proj = (x, y) => x * dx + y * dy;
+  const c = [proj(0, 0), proj(w - 1, 0), proj(0, h - 1), proj(w - 1, h - 1)];
+  const lo = Math.min(...c), span = Math.max(Math.max(...c) - lo, 1e-9);
+  const f = TRANSFER[shape] ?? TRANSFER.linear;
+  return (x, y) => f(Math.min(1, Math.max(0, 1 - (proj(x, y) - lo) / span)));
+}
+
+export function mountBlend(root, client) {
+  const $ = (id) => root.querySelector(`#${id}`);
+  const settings = { ...defaultOptions, ...load(storageKey, {}) };
+  const save = () => store(storageKey, settings);
+  const messages = $('blend-messages');
+  const say = (text, kind = '') => {
+    const p = document.createElement('p');
+    p.className = kind;
+    p.textContent = text;
+    messages.replaceChildren(p);
+  };
+  let abort = null;
+  let resultUrl = null;
+
+  // --- exemplar slots ---
+  const slots = {};
+  for (const key of ['a', 'b']) {
+    const fig = root.querySelector(`[data-slot="${key}"]`);
+    const slot = (slots[key] = { fig, canvas: fig.querySelector('canvas'), select: fig.querySelector('select'), image: null });
+    slot.select.append(new Option('Built-in…', ''), ...textures.map((t) => new Option(t, t)));
+    slot.select.addEventListener('change', async () => {
+      if (!slot.select.value) return;
+      settings[key] = slot.select.value;
+      save();
+      await loadBuiltin(key, slot.select.value);
+    });
+    fig.querySelector('input[type=file]').addEventListener('change', async (e) => {
+      if (e.target.files[0]) await loadFile(key, e.target.files[0]);
+      e.target.value = '';
+    });
+    fig.addEventListener('dragover', (e) => { e.preventDefault(); fig.classList.add('dragging'); });
+    fig.addEventListener('dragleave', () => fig.classList.remove('dragging'));
+    fig.addEventListener('drop', async (e) => {
+      e.preventDefault();
+      fig.classList.remove('dragging');
+      if (e.dataTransfer.files[0]) await loadFile(key, e.dataTransfer.files[0]);
+    });
+  }
+
+  function setSlot(key, rgba) {
+    const { canvas } = slots[key];
+    canvas.width = rgba.width;
+    canvas.height = rgba.height;
+    canvas.getContext('2d').putImageData(new ImageData(new Uint8ClampedArray(rgba.data), rgba.width, rgba.height), 0, 0);
+    slots[key].image = rgba;
+  }
+
+  /** Pixels of a bitmap, scaled down uniformly if it is larger than the cap. */
+  function rgbaOf(bitmap, name) {
+    let { width, height } = bitmap;
+    const k = Math.min(1, maxExemplarSide / Math.max(width, height));
+    if (k < 1) {
+      const w = Math.max(1, Math.round(width * k)), h = Math.max(1, Math.round(height * k));
+      say(`${name}: scaled from ${width}×${height} to ${w}×${h} (exemplars are capped at ${maxExemplarSide} px to keep synthesis quick).`, 'warn');
+      width = w;
+      height = h;
+    }
+    const c = new OffscreenCanvas(width, height);
+    const ctx = c.getContext('2d');
+    ctx.drawImage(bitmap, 0, 0, width, height);
+    const d = ctx.getImageData(0, 0, width, height);
+    return { width, height, data: d.data };
+  }
+
+  async function loadBuiltin(key, name) {
+    try {
+      const blob = await (await fetch(new URL(`../../../textures/${name}.png`, import.meta.url))).blob();
+      setSlot(key, rgbaOf(await createImageBitmap(blob), name));
+    } catch (e) {
+      say(`Could not load the built-in texture '${name}': ${e.message}`, 'error');
+    }
+  }
+
+  async function loadFile(key, file) {
+    let bitmap;
+    try {
+      bitmap = await createImageBitmap(file);
+    } catch {
+      return say(`${file.name} is not an image this browser can read (use PNG or JPEG).`, 'error');
+    }
+    setSlot(key, rgbaOf(bitmap, file.name));
+    slots[key].select.value = '';
+    say(`Loaded ${file.name} as texture ${key.toUpperCase()}.`);
+  }
+
+  // --- settings ---
+  const modeInputs = root.querySelectorAll('input[name="blend-mode"]');
+  for (const r of modeInputs) {
+    r.checked = r.value === settings.mode;
+    r.addEventListener('change', () => { settings.mode = r.value; save(); showMode(); });
+  }
+  const showMode = () => {
+    const single = settings.mode === 'single';
+    $('transition-set').disabled = single;
+    slots.b.fig.style.opacity = single ? 0.4 : 1;
+  };
+  const bindValue = (id, key, parse = (v) => v) => {
+    const el = $(id);
+    el.value = settings[key];
+    el.addEventListener('input', () => { settings[key] = parse(el.value); save(); });
+    return el;
+  };
+  const bindCheck = (id, key) => {
+    const el = $(id);
+    el.checked = settings[key];
+    el.addEventListener('change', () => { settings[key] = el.checked; save(); });
+  };
+  bindValue('blend-width', 'width', Number);
+  bindValue('blend-height', 'height', Number);
+  bindValue('blend-neighbourhood', 'neighbourhood', Number);
+  bindValue('blend-levels', 'levels');
+  bindValue('blend-seed', 'seed', Number);
+  bindCheck('blend-tileable', 'tileable');
+  bindCheck('blend-exhaustive', 'exhaustive');
+  const transition = bindValue('blend-transition', 'transition');
+  const angle = bindValue('blend-angle', 'angle', Number);
+  const showAngle = () => { $('blend-angle-out').value = `${settings.angle}°`; };
+  angle.addEventListener('input', () => { showAngle(); drawShape(); });
+  transition.addEventListener('change', () => drawShape());
+
+  // --- the coefficient preview and painted mask ---
+  const mask = $('blend-mask');
+  const mctx = mask.getContext('2d', { willReadFrequently: true });
+  function drawShape() {
+    if (settings.transition === 'mask') return;
+    const mu = coefficientAt(settings.transition, settings.angle, mask.width, mask.height);
+    const img = mctx.createImageData(mask.width, mask.height);
+    for (let y = 0; y < mask.height; y++) for (let x = 0; x < mask.width; x++) {
+      const v = Math.round(255 * mu(x, y)), i = 4 * (y * mask.width + x);
+      img.data[i] = img.data[i + 1] = img.data[i + 2] = v;
+      img.data[i + 3] = 255;
+    }
+    mctx.putImageData(img, 0, 0);
+  }
+  $('mask-reset').addEventListener('click', () => {
+    if (settings.transition === 'mask') {
+      settings.transition = 'linear';
+      transition.value = 'linear';
+    }
+    drawShape();
+    save();
+  });
+  let painting = false;
+  const paint = (e) => {
+    const r = mask.getBoundingClientRect();
+    const x = ((e.clientX - r.left) * mask.width) / r.width, y = ((e.clientY - r.top) * mask.height) / r.height;
+    const size = Number($('brush-size').value);
+    const toA = root.querySelector('input[name="brush"]:checked').value === 'a';
+    const g = mctx.createRadialGradient(x, y, 0, x, y, size / 2);
+    const c = toA ? '255,255,255' : '0,0,0';
+    g.addColorStop(0, `rgba(${c},0.6)`);
+    g.addColorStop(1, `rgba(${c},0)`);
+    mctx.fillStyle = g;
+    mctx.beginPath();
+    mctx.arc(x, y, size / 2, 0, Math.PI * 2);
+    mctx.fill();
+  };
+  mask.addEventListener('pointerdown', (e) => {
+    painting = true;
+    mask.setPointerCapture(e.pointerId);
+    if (settings.transition !== 'mask') {
+      settings.transition = 'mask';
+      transition.value = 'mask';
+    }
+    paint(e);
+  });
+  mask.addEventListener('pointermove', (e) => { if (painting) paint(e); });
+  const endPaint = () => {
+    if (!painting) return;
+    painting = false;
+    store(maskKey, mask.toDataURL());
+    save();
+  };
+  mask.addEventListener('pointerup', endPaint);
+  mask.addEventListener('pointercancel', endPaint);
+
+  /** The painted mask resampled to the output size, as mu values. */
+  function maskCoefficient(w, h) {
+    const c = new OffscreenCanvas(w, h);
+    const ctx = c.getContext('2d');
+    ctx.drawImage(mask, 0, 0, w, h);
+    const d = ctx.getImageData(0, 0, w, h).data;
+    const mu = new Float32Array(w * h);
+    for (let i = 0; i < mu.length; i++) mu[i] = d[4 * i] / 255;
+    return mu;
+  }
+
+  // --- run ---
+  $('blend-run').addEventListener('click', async () => {
+    const width = Number(settings.width), height = Number(settings.height);
+    if (!(width >= 8 && height >= 8 && width <= maxOutputSide && height <= maxOutputSide)) {
+      return say(`Output width and height must be between 8 and ${maxOutputSide}.`, 'error');
+    }
+    const single = settings.mode === 'single';
+    if (!slots.a.image || (!single && !slots.b.image)) return say('Load both textures first.', 'error');
+    abort?.abort();
+    abort = new AbortController();
+    $('blend-run').disabled = true;
+    $('blend-cancel').disabled = false;
+    $('blend-progress').value = 0;
+    say('Synthesizing…');
+    const base = { width, height, seed: Number(settings.seed) || 0, tileable: settings.tileable, exhaustive: settings.exhaustive, neighbourhood: Number(settings.neighbourhood) };
+    if (settings.levels) base.levels = Number(settings.levels);
+    const call = { signal: abort.signal, onProgress: (f) => { $('blend-progress').value = f; } };
+    const t0 = performance.now();
+    try {
+      let out;
+      if (single) out = await client.synthesizeTexture(slots.a.image, base, call);
+      else {
+        const t = settings.transition;
+        const opts = { ...base };
+        if (t === 'mask') opts.coefficient = maskCoefficient(width, height);
+        else if (t === 'radial') opts.coefficient = 'radial';
+        else {
+          opts.coefficient = t;
+          if (settings.angle !== 90) opts.angle = settings.angle;
+        }
+        out = await client.blendTextures(slots.a.image, slots.b.image, opts, call);
+      }
+      const ms = performance.now() - t0;
+      const canvas = $('blend-result');
+      canvas.width = out.width;
+      canvas.height = out.height;
+      canvas.getContext('2d').putImageData(new ImageData(new Uint8ClampedArray(out.data), out.width, out.height), 0, 0);
+      const blob = await new Promise((ok) => canvas.toBlob(ok, 'image/png'));
+      if (resultUrl) URL.revokeObjectURL(resultUrl);
+      resultUrl = URL.createObjectURL(blob);
+      const dl = $('blend-download');
+      dl.href = resultUrl;
+      dl.classList.remove('disabled');
+      dl.removeAttribute('aria-disabled');
+      $('blend-info').textContent = `${out.width}×${out.height}, ${single ? 'single exemplar' : settings.transition}, ${ms.toFixed(0)} ms`;
+      $('blend-progress').value = 1;
+      say('Done.');
+    } catch (e) {
+      const cancelled = e.name === 'AbortError';
+      say(cancelled ? 'Cancelled.' : e.message, cancelled ? 'warn' : 'error');
+      $('blend-progress').value = 0;
+    } finally {
+      abort = null;
+      $('blend-run').disabled = false;
+      $('blend-cancel').disabled = true;
+    }
+  });
+  $('blend-cancel').addEventListener('click', () => abort?.abort());
+
+  // --- start ---
+  showMode();
+  showAngle();
+  const savedMask = load(maskKey, null);
+  if (settings.transition === 'mask' && savedMask) {
+    const img = new Image();
+    img.onload = () => mctx.drawImage(img, 0, 0, mask.width, mask.height);
+    img.src = savedMask;
+  } else drawShape();
+  slots.a.select.value = settings.a;
+  slots.b.select.value = settings.b;
+  loadBuiltin('a', settings.a || 'wood');
+  loadBuiltin('b', settings.b || 'gravel');
+}
+
+function load(key, fallback) {
+  try {
+    const v = localStorage.getItem(key);
+    return v ? JSON.parse(v) : fallback;
+  } catch {
+    return fallback;
+  }
+}
+
+function store(key, value) {
+  try {
+    localStorage.setItem(key, JSON.stringify(value));
+  } catch {
+    // Storage full or disabled: keep working in memory.
+  }
+}
