@@ -3,6 +3,9 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh >/dev/null
-cargo build --release --example bench_vector -q
+cargo build --release --example bench_vector --example bench_texture -q
 echo "== vector strokes"
 node bench/vector.mjs
+echo
+echo "== textures"
+node bench/texture.mjs

@@ -34,6 +34,8 @@ export interface Classification { classes: number[]; count: number; tolerances: 
 export interface ClassifyOptions { pathTolerance?: number; widthTolerance?: number; colorTolerance?: number }
 export interface StrokeOptions extends ClassifyOptions {
   width: number; height: number; variation?: boolean; seed?: number; support?: number; maxElements?: number;
+  /** Grow on the drawing's fitted lattice (default true): no drift on large outputs. */
+  regularize?: boolean;
 }
 export interface Rgba { width: number; height: number; data: Uint8Array | Uint8ClampedArray }
 export interface TextureOptions {

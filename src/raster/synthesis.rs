@@ -251,9 +251,12 @@ pub fn synthesize(exemplars: &[&Image], weights: &[f32], params: &Params, progre
             .collect();
         let mut f = Vec::with_capacity(full.dim(true));
         let mut cands = Vec::with_capacity(64);
+        let mut own = Vec::with_capacity(full.dim(true));
         for y in 0..lh {
             for x in 0..lw {
-                pass.pixel(&mut out, &mut src, &causal, &offs, false, x, y, &wt, &mut rng, &mut f, &mut cands);
+                pass.pixel(
+                    &mut out, &mut src, &causal, &offs, false, x, y, &wt, &mut rng, &mut f, &mut cands, &mut own,
+                );
             }
             done += lw;
             progress.tick(done as f64 / total as f64)?;
@@ -261,7 +264,9 @@ pub fn synthesize(exemplars: &[&Image], weights: &[f32], params: &Params, progre
         for _ in 0..params.corrections {
             for y in 0..lh {
                 for x in 0..lw {
-                    pass.pixel(&mut out, &mut src, &full, &offs, true, x, y, &wt, &mut rng, &mut f, &mut cands);
+                    pass.pixel(
+                        &mut out, &mut src, &full, &offs, true, x, y, &wt, &mut rng, &mut f, &mut cands, &mut own,
+                    );
                 }
                 done += lw;
                 progress.tick(done as f64 / total as f64)?;
@@ -274,7 +279,9 @@ pub fn synthesize(exemplars: &[&Image], weights: &[f32], params: &Params, progre
             for y in 0..lh {
                 for x in 0..lw {
                     if y < band || x < band || y + band / 2 >= lh || x + band / 2 >= lw {
-                        pass.pixel(&mut out, &mut src, &full, &offs, true, x, y, &wt, &mut rng, &mut f, &mut cands);
+                        pass.pixel(
+                            &mut out, &mut src, &full, &offs, true, x, y, &wt, &mut rng, &mut f, &mut cands, &mut own,
+                        );
                     }
                 }
             }
@@ -310,6 +317,7 @@ impl Pass<'_> {
         rng: &mut Rng,
         f: &mut Vec<f32>,
         cands: &mut Vec<u32>,
+        own: &mut Vec<f32>,
     ) {
         let level = self.level;
         let (lw, lh) = (out[level].width, out[level].height);
@@ -319,6 +327,20 @@ impl Pass<'_> {
             let weight = wt(x, y, e);
             let img = &ex.levels[level];
             let off = if use_full { &offs[e].1 } else { &offs[e].0 };
+            // Where an exemplar has a partial weight, it is matched against the mixed
+            // neighbourhood only in proportion to that weight; the rest is its own
+            // choices around the pixel. At weight 1 this is the paper's rule; as the
+            // weight falls, a faint exemplar no longer collapses onto the one patch that
+            // best imitates the other exemplar's colours (rows of repeated blobs).
+            let f: &[f32] = if weight > 0.0 && weight < 1.0 {
+                self.own_feature(src, e, shape, x, y, lw, lh, own);
+                for (o, m) in own.iter_mut().zip(f.iter()) {
+                    *o = weight * m + (1.0 - weight) * *o;
+                }
+                own
+            } else {
+                f
+            };
             let best = if weight <= 0.0 && !self.exhaustive {
                 // Not visible here: keep a coherent source so neighbours can continue it.
                 self.coherent_candidates(src, e, shape, x, y, lw, lh, img, rng, cands);
@@ -352,6 +374,39 @@ impl Pass<'_> {
             }
         }
         out[level].data[y * lw + x] = colour;
+    }
+
+    /// The neighbourhood of exemplar `e`'s own choices around (x, y): each neighbour's
+    /// source colour, at this level and the parent's.
+    #[allow(clippy::too_many_arguments)]
+    fn own_feature(
+        &self,
+        src: &[Vec<u32>],
+        e: usize,
+        shape: &Shape,
+        x: usize,
+        y: usize,
+        lw: usize,
+        lh: usize,
+        v: &mut Vec<f32>,
+    ) {
+        v.clear();
+        let ex = &self.exs[e];
+        let img = &ex.levels[self.level];
+        for &(dx, dy) in &shape.own {
+            let nx = (x as isize + dx).rem_euclid(lw as isize) as usize;
+            let ny = (y as isize + dy).rem_euclid(lh as isize) as usize;
+            v.extend_from_slice(&img.data[src[e][ny * lw + nx] as usize]);
+        }
+        if self.with_parent {
+            let parent = &ex.levels[self.level + 1];
+            let (plw, plh) = (lw.div_ceil(2) as isize, lh.div_ceil(2) as isize);
+            for &(dx, dy) in &shape.parent {
+                let px = ((x / 2) as isize + dx).rem_euclid(plw) as usize;
+                let py = ((y / 2) as isize + dy).rem_euclid(plh) as usize;
+                v.extend_from_slice(&parent.data[self.parent_src[e][py * plw as usize + px] as usize]);
+            }
+        }
     }
 
     /// Candidate exemplar positions for exemplar `e` at (x, y): each neighbour's source

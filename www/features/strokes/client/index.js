@@ -46,6 +46,7 @@ export function mountStrokes(root, client) {
   bind('out-width', 'width', Number);
   bind('out-height', 'height', Number);
   bind('variation', 'variation', Boolean, 'checked');
+  bind('regularize', 'regularize', Boolean, 'checked');
   bind('seed', 'seed', Number);
   for (const [key, id] of [['pathTolerance', 'path'], ['widthTolerance', 'width'], ['colorTolerance', 'color']]) {
     const input = $(`tol-${id}`), auto = $(`auto-${id}`);
@@ -174,7 +175,7 @@ export function mountStrokes(root, client) {
     say('Synthesizing…');
     const t0 = performance.now();
     try {
-      const opts = { width, height, variation: settings.variation, seed: Number(settings.seed) || 0, ...tolerances() };
+      const opts = { width, height, variation: settings.variation, regularize: settings.regularize !== false, seed: Number(settings.seed) || 0, ...tolerances() };
       const r = await client.synthesizeStrokes(drawing.strokes, opts, {
         signal: runAbort.signal,
         onProgress: (f) => { $('progress').value = f; },

@@ -9,6 +9,7 @@ export const defaultOptions = {
   widthTolerance: null,
   colorTolerance: null,
   variation: true,
+  regularize: true,
   seed: 1,
 };
 
