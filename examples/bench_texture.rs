@@ -93,7 +93,10 @@ fn main() {
     // Blends, 128 -> 256 and 512.
     for (a, b, out_side) in [("wood", "gravel", 256), ("brick", "grass", 256), ("wood", "gravel", 512)] {
         let (ea, eb) = (load(a, 128), load(b, 128));
-        let o = BlendOptions { width: out_side, height: out_side, seed: 1, ..Default::default() };
+        let o = BlendOptions {
+            base: TextureOptions { width: out_side, height: out_side, seed: 1, ..Default::default() },
+            ..Default::default()
+        };
         let (ms, out) = median_ms(3, || blend_textures(&ea, &eb, &o, &mut Silent).unwrap());
         save(&out, &format!("blend-{a}-{b}-{out_side}"));
         let band = out_side / 6;
@@ -122,7 +125,10 @@ fn main() {
     }
     let (ea, eb) = (load("wood", 64), load("gravel", 64));
     for exhaustive in [false, true] {
-        let o = BlendOptions { width: 128, height: 128, seed: 1, exhaustive, ..Default::default() };
+        let o = BlendOptions {
+            base: TextureOptions { width: 128, height: 128, seed: 1, exhaustive, ..Default::default() },
+            ..Default::default()
+        };
         let (ms, out) = median_ms(1, || blend_textures(&ea, &eb, &o, &mut Silent).unwrap());
         println!(
             "{{\"case\":\"blend\",\"a\":\"wood\",\"b\":\"gravel\",\"ex\":64,\"out\":128,\"exhaustive\":{exhaustive},\"ms\":{ms:.1},\"top_a\":{:.3},\"top_b\":{:.3},\"bottom_a\":{:.3},\"bottom_b\":{:.3}}}",

@@ -283,36 +283,9 @@ pub fn synthesize_texture(
     Ok(rgba_to_js(out.width, out.height, &out.to_rgba8()))
 }
 
-#[derive(serde::Deserialize)]
-#[serde(rename_all = "camelCase", default)]
-struct BlendJs {
-    width: usize,
-    height: usize,
-    seed: u64,
-    tileable: bool,
-    exhaustive: bool,
-    levels: Option<usize>,
-    neighbourhood: usize,
-    angle: Option<f64>,
-    transfer: Option<String>,
-}
-
-impl Default for BlendJs {
-    fn default() -> Self {
-        let d = raster::BlendOptions::default();
-        BlendJs {
-            width: d.width,
-            height: d.height,
-            seed: d.seed,
-            tileable: d.tileable,
-            exhaustive: d.exhaustive,
-            levels: d.levels,
-            neighbourhood: d.neighbourhood,
-            angle: None,
-            transfer: None,
-        }
-    }
-}
+/// The blend options' own keys beside those of `TextureOptions` (read by hand:
+/// `coefficient` may be a string or a Float32Array).
+const BLEND_KEYS: [&str; 3] = ["coefficient", "angle", "transfer"];
 
 fn transfer(name: &str) -> Result<Transfer, JsValue> {
     match name {
@@ -335,20 +308,28 @@ pub fn blend_textures(
 ) -> Result<JsValue, JsValue> {
     let a = image_from_js(&a, "first image (A)")?;
     let b = image_from_js(&b, "second image (B)")?;
-    let coefficient_js = if opts.is_object() {
-        js_sys::Reflect::get(&opts, &JsValue::from_str("coefficient")).unwrap_or(JsValue::UNDEFINED)
-    } else {
-        JsValue::UNDEFINED
+    let key = |k: &str| {
+        if opts.is_object() {
+            js_sys::Reflect::get(&opts, &JsValue::from_str(k)).unwrap_or(JsValue::UNDEFINED)
+        } else {
+            JsValue::UNDEFINED
+        }
     };
-    let o: BlendJs = from_js_with(opts, "blend options", &["coefficient"])?;
-    let t = match &o.transfer {
-        Some(name) => transfer(name)?,
+    let (coefficient_js, angle_js, transfer_js) = (key("coefficient"), key("angle"), key("transfer"));
+    let base: raster::TextureOptions = from_js_with(opts, "blend options", &BLEND_KEYS)?;
+    let angle = match angle_js.as_f64() {
+        Some(a) => Some(a),
+        None if angle_js.is_undefined() => None,
+        None => return Err(js_sys::Error::new("angle must be a number of degrees.").into()),
+    };
+    let t = match transfer_js.as_string() {
+        Some(name) => transfer(&name)?,
         None => Transfer::Linear,
     };
     let coefficient = if let Some(map) = coefficient_js.dyn_ref::<js_sys::Float32Array>() {
         Coefficient::Map(map.to_vec())
     } else if let Some(name) = coefficient_js.as_string() {
-        match (name.as_str(), o.angle) {
+        match (name.as_str(), angle) {
             ("radial", _) => Coefficient::Radial(t),
             (n, Some(angle)) => Coefficient::Angle(angle, transfer(n)?),
             (n, None) => Coefficient::Vertical(transfer(n)?),
@@ -360,16 +341,7 @@ pub fn blend_textures(
             js_sys::Error::new("coefficient must be 'linear', 'ease', 'steep', 'radial' or a Float32Array.").into()
         );
     };
-    let opts = raster::BlendOptions {
-        width: o.width,
-        height: o.height,
-        coefficient,
-        seed: o.seed,
-        tileable: o.tileable,
-        exhaustive: o.exhaustive,
-        levels: o.levels,
-        neighbourhood: o.neighbourhood,
-    };
+    let opts = raster::BlendOptions { base, coefficient };
     let out = raster::blend_textures(&a, &b, &opts, &mut JsProgress(on_progress)).map_err(js_error)?;
     Ok(rgba_to_js(out.width, out.height, &out.to_rgba8()))
 }

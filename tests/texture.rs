@@ -36,7 +36,10 @@ fn mean(img: &Image) -> [f32; 3] {
 #[test]
 fn blend_resembles_a_at_the_top_and_b_at_the_bottom() {
     let (a, b) = (load("wood", 64), load("gravel", 64));
-    let opts = BlendOptions { width: 96, height: 96, seed: 3, ..Default::default() };
+    let opts = BlendOptions {
+        base: TextureOptions { width: 96, height: 96, seed: 3, ..Default::default() },
+        ..Default::default()
+    };
     let out = blend_textures(&a, &b, &opts, &mut Silent).unwrap();
     assert_eq!((out.width, out.height), (96, 96));
     let top = (0, 16);
@@ -135,10 +138,9 @@ fn bad_input_is_a_clear_error() {
     );
     let mut nan = vec![0.5f32; 100];
     nan[7] = f32::NAN;
-    let b = BlendOptions { width: 10, height: 10, coefficient: Coefficient::Map(nan), ..Default::default() };
+    let b = BlendOptions { base: o(10, 10), coefficient: Coefficient::Map(nan) };
     assert!(err(blend_textures(&ex, &ex, &b, &mut Silent)).contains("not a number"));
-    let short =
-        BlendOptions { width: 10, height: 10, coefficient: Coefficient::Map(vec![0.5; 99]), ..Default::default() };
+    let short = BlendOptions { base: o(10, 10), coefficient: Coefficient::Map(vec![0.5; 99]) };
     assert!(err(blend_textures(&ex, &ex, &short, &mut Silent)).contains("needs 100"));
     let mut calls = 0;
     let mut cancel = |_: f64| {

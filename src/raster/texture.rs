@@ -49,49 +49,39 @@ pub enum Coefficient {
     Map(Vec<f32>),
 }
 
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, Default)]
 pub struct BlendOptions {
-    pub width: usize,
-    pub height: usize,
+    /// Size, seed and search settings, as for one exemplar.
+    pub base: TextureOptions,
     pub coefficient: Coefficient,
-    pub seed: u64,
-    pub tileable: bool,
-    pub exhaustive: bool,
-    pub levels: Option<usize>,
-    pub neighbourhood: usize,
 }
 
-impl Default for BlendOptions {
+impl Default for Coefficient {
     fn default() -> Self {
-        let t = TextureOptions::default();
-        BlendOptions {
-            width: t.width,
-            height: t.height,
-            coefficient: Coefficient::Vertical(Transfer::Linear),
-            seed: t.seed,
-            tileable: false,
-            exhaustive: false,
-            levels: None,
-            neighbourhood: t.neighbourhood,
+        Coefficient::Vertical(Transfer::Linear)
+    }
+}
+
+impl TextureOptions {
+    fn params(&self) -> Params {
+        Params {
+            width: self.width,
+            height: self.height,
+            seed: self.seed,
+            levels: self.levels,
+            neighbourhood: self.neighbourhood,
+            exhaustive: self.exhaustive,
+            tileable: self.tileable,
+            ..Params::default()
         }
     }
 }
 
 /// More of one texture: a `width x height` image that looks like `exemplar`.
 pub fn synthesize_texture(exemplar: &Image, opts: &TextureOptions, progress: &mut dyn Progress) -> Result<Image> {
-    let params = Params {
-        width: opts.width,
-        height: opts.height,
-        seed: opts.seed,
-        levels: opts.levels,
-        neighbourhood: opts.neighbourhood,
-        exhaustive: opts.exhaustive,
-        tileable: opts.tileable,
-        ..Params::default()
-    };
     super::image::check_output(opts.width, opts.height)?;
     let weights = vec![1.0f32; opts.width * opts.height];
-    synthesize(&[exemplar], &weights, &params, &mut Throttle::new(progress))
+    synthesize(&[exemplar], &weights, &opts.params(), &mut Throttle::new(progress))
 }
 
 /// The coefficient map mu (weight of A) for these options.
@@ -108,21 +98,12 @@ pub fn coefficient_map(c: &Coefficient, width: usize, height: usize) -> Result<V
 /// Two exemplars blended: each output pixel takes the best match in A and in B for the
 /// same output neighbourhood and mixes them by mu(x, y) and 1 - mu(x, y).
 pub fn blend_textures(a: &Image, b: &Image, opts: &BlendOptions, progress: &mut dyn Progress) -> Result<Image> {
-    super::image::check_output(opts.width, opts.height)?;
-    let mu = coefficient_map(&opts.coefficient, opts.width, opts.height)?;
+    let base = &opts.base;
+    super::image::check_output(base.width, base.height)?;
+    let mu = coefficient_map(&opts.coefficient, base.width, base.height)?;
     if mu.is_empty() {
         return invalid("The output is empty.");
     }
     let weights: Vec<f32> = mu.iter().flat_map(|&m| [m, 1.0 - m]).collect();
-    let params = Params {
-        width: opts.width,
-        height: opts.height,
-        seed: opts.seed,
-        levels: opts.levels,
-        neighbourhood: opts.neighbourhood,
-        exhaustive: opts.exhaustive,
-        tileable: opts.tileable,
-        ..Params::default()
-    };
-    synthesize(&[a, b], &weights, &params, &mut Throttle::new(progress))
+    synthesize(&[a, b], &weights, &base.params(), &mut Throttle::new(progress))
 }

@@ -1,6 +1,7 @@
 // Blend tab: two exemplars (built-in photographs, files, drag and drop), a transition or
 // a painted mask, synthesis in the worker with progress and cancel, PNG download.
 import { defaultOptions, maskKey, maxExemplarSide, maxOutputSide, storageKey, textures } from '../shared/meta.js';
+import { load, store } from '../../../shared/storage.js';
 
 /** The coefficient transfers, as the engine defines them (mu of A in [0, 1]). */
 const TRANSFER = {
@@ -285,21 +286,4 @@ export function mountBlend(root, client) {
   slots.b.select.value = settings.b;
   loadBuiltin('a', settings.a || 'wood');
   loadBuiltin('b', settings.b || 'gravel');
-}
-
-function load(key, fallback) {
-  try {
-    const v = localStorage.getItem(key);
-    return v ? JSON.parse(v) : fallback;
-  } catch {
-    return fallback;
-  }
-}
-
-function store(key, value) {
-  try {
-    localStorage.setItem(key, JSON.stringify(value));
-  } catch {
-    // Storage full or disabled: keep working in memory.
-  }
 }

@@ -1,6 +1,7 @@
 // Vector strokes tab: draw or import, see classes, synthesize in the worker, download.
 import { Drawing, fitStrokes } from './canvas.js';
 import { classColors, defaultOptions, defaultPen, maxSide, storageKey } from '../shared/meta.js';
+import { load, store as save } from '../../../shared/storage.js';
 
 const SETTINGS_KEY = 'patternsynth.strokes.settings.v1';
 
@@ -213,21 +214,4 @@ export function mountStrokes(root, client) {
     const ex = list.find((x) => x.name === 'classes-by-shape') ?? list[0];
     if (ex && !drawing.strokes.length) drawing.set(fitStrokes(ex.strokes, drawing.logical.w, drawing.logical.h, 60), { record: false });
   });
-}
-
-function load(key, fallback) {
-  try {
-    const v = localStorage.getItem(key);
-    return v ? JSON.parse(v) : fallback;
-  } catch {
-    return fallback;
-  }
-}
-
-function save(key, value) {
-  try {
-    localStorage.setItem(key, JSON.stringify(value));
-  } catch {
-    // Storage full or disabled: the drawing stays in memory.
-  }
 }
