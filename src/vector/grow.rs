@@ -702,8 +702,16 @@ impl<'r, 'a> Target<'r, 'a> {
 
     fn matches_signature(&self, r: u32) -> bool {
         let at = self.reference.elems[r as usize].pos;
-        let found = self.sig.iter().filter(|&&(o, c)| self.reference.has(at + o, c)).count();
-        found + 1 >= self.sig.len()
+        let mut missed = 0;
+        for &(o, c) in &self.sig {
+            if !self.reference.has(at + o, c) {
+                missed += 1;
+                if missed > 1 {
+                    return false;
+                }
+            }
+        }
+        true
     }
 
     /// Applies candidate `c` at growing point `g`: adds every free window element.

@@ -27,8 +27,11 @@ impl Grid {
         Grid { origin: area.origin(), cell, cols, rows, cells: vec![Vec::new(); cols * rows] }
     }
 
+    /// The cell holding `p`. Truncation, not `floor` (a libm call on x86-64): negative
+    /// coordinates only occur outside the area, where every caller clamps to cell 0.
+    #[inline]
     fn cell_of(&self, p: Point) -> (isize, isize) {
-        (((p.x - self.origin.x) / self.cell).floor() as isize, ((p.y - self.origin.y) / self.cell).floor() as isize)
+        (((p.x - self.origin.x) / self.cell) as isize, ((p.y - self.origin.y) / self.cell) as isize)
     }
 
     /// Adds `id` at `p`; points outside the area go to the border cells, so they are
