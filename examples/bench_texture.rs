@@ -50,6 +50,29 @@ fn save(img: &Image, name: &str) {
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
+    if args.get(1).map(String::as_str) == Some("--full-exhaustive") {
+        // The configuration, 128 -> 256 blend, against the exhaustive reference
+        // (several minutes native; not part of the default run).
+        let (ea, eb) = (load("wood", 128), load("gravel", 128));
+        for exhaustive in [false, true] {
+            let o = BlendOptions {
+                base: TextureOptions { width: 256, height: 256, seed: 1, exhaustive, ..Default::default() },
+                ..Default::default()
+            };
+            let (ms, out) = median_ms(1, || blend_textures(&ea, &eb, &o, &mut Silent).unwrap());
+            save(&out, &format!("blend-wood-gravel-256-{}", if exhaustive { "exhaustive" } else { "default" }));
+            println!(
+                "{{\"case\":\"blend\",\"ex\":128,\"out\":256,\"exhaustive\":{exhaustive},\"ms\":{ms:.0},\"top_a\":{:.3},\"top_b\":{:.3},\"bottom_a\":{:.3},\"bottom_b\":{:.3},\"all_a\":{:.3},\"all_b\":{:.3}}}",
+                patch_energy(&out, &ea, 200, (0, 43), 1),
+                patch_energy(&out, &eb, 200, (0, 43), 1),
+                patch_energy(&out, &ea, 200, (213, 256), 1),
+                patch_energy(&out, &eb, 200, (213, 256), 1),
+                patch_energy(&out, &ea, 300, (0, 256), 1),
+                patch_energy(&out, &eb, 300, (0, 256), 1),
+            );
+        }
+        return;
+    }
     if args.get(1).map(String::as_str) == Some("--reference") {
         // name=path pairs: energies of another synthesizer's outputs.
         for pair in &args[2..] {
