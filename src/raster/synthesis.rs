@@ -82,47 +82,53 @@ fn offsets(shape: &Shape, width: usize, parent_width: usize) -> Offsets {
 #[inline]
 fn distance(ex: &Exemplar, level: usize, pos: usize, shape: &Shape, off: &Offsets, feature: &[f32], bound: f32) -> f32 {
     let img = &ex.levels[level];
-    let (w, h) = (img.width as isize, img.height as isize);
     let (x, y) = ((pos % img.width) as isize, (pos / img.width) as isize);
-    let s = shape.half;
     let mut acc = 0.0f32;
-    let mut k = 0;
-    let add = |acc: &mut f32, p: [f32; 3], k: usize| {
+    let k = block(img, x, y, shape.half, &shape.own, &off.own, feature, 0, &mut acc);
+    if acc > bound || k == feature.len() {
+        return acc;
+    }
+    block(&ex.levels[level + 1], x / 2, y / 2, 1, &shape.parent, &off.parent, feature, k, &mut acc);
+    acc
+}
+
+/// Adds to `acc` the squared differences between the pixels of `img` at `points` around
+/// (x, y) and `feature` from index `k`; returns the next index. Index deltas `linear`
+/// serve when the block lies inside the image (within `half` of the centre), clamped
+/// reads at the border.
+#[allow(clippy::too_many_arguments)]
+#[inline]
+fn block(
+    img: &Image,
+    x: isize,
+    y: isize,
+    half: isize,
+    points: &[(isize, isize)],
+    linear: &[isize],
+    feature: &[f32],
+    mut k: usize,
+    acc: &mut f32,
+) -> usize {
+    let mut add = |p: [f32; 3], k: usize| {
         let d0 = p[0] - feature[k];
         let d1 = p[1] - feature[k + 1];
         let d2 = p[2] - feature[k + 2];
         *acc += d0 * d0 + d1 * d1 + d2 * d2;
     };
-    if x >= s && x < w - s && y >= s && y < h - s {
-        for &o in &off.own {
-            add(&mut acc, img.data[(pos as isize + o) as usize], k);
+    let (w, h) = (img.width as isize, img.height as isize);
+    if x >= half && x < w - half && y >= half && y < h - half {
+        let base = y * w + x;
+        for &o in linear {
+            add(img.data[(base + o) as usize], k);
             k += 3;
         }
     } else {
-        for &(dx, dy) in &shape.own {
-            add(&mut acc, img.clamped(x + dx, y + dy), k);
+        for &(dx, dy) in points {
+            add(img.clamped(x + dx, y + dy), k);
             k += 3;
         }
     }
-    if acc > bound || k == feature.len() {
-        return acc;
-    }
-    let parent = &ex.levels[level + 1];
-    let (px, py) = (x / 2, y / 2);
-    let (pw, ph) = (parent.width as isize, parent.height as isize);
-    if px >= 1 && px < pw - 1 && py >= 1 && py < ph - 1 {
-        let base = (py * pw + px) as usize;
-        for &o in &off.parent {
-            add(&mut acc, parent.data[(base as isize + o) as usize], k);
-            k += 3;
-        }
-    } else {
-        for &(dx, dy) in &shape.parent {
-            add(&mut acc, parent.clamped(px + dx, py + dy), k);
-            k += 3;
-        }
-    }
-    acc
+    k
 }
 
 /// The output's feature at (x, y): own level read on the torus, parent level too.
