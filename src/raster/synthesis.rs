@@ -265,20 +265,13 @@ pub fn synthesize(exemplars: &[&Image], weights: &[f32], params: &Params, progre
         let mut f = Vec::with_capacity(full.dim(true));
         let mut cands = Vec::with_capacity(64);
         let mut own = Vec::with_capacity(full.dim(true));
-        for y in 0..lh {
-            for x in 0..lw {
-                pass.pixel(
-                    &mut out, &mut src, &causal, &offs, false, x, y, &wt, &mut rng, &mut f, &mut cands, &mut own,
-                );
-            }
-            done += lw;
-            progress.tick(done as f64 / total as f64)?;
-        }
-        for _ in 0..params.corrections {
+        // One causal pass, then the correction passes with full neighbourhoods.
+        for (shape, use_full) in std::iter::once((&causal, false)).chain((0..params.corrections).map(|_| (&full, true)))
+        {
             for y in 0..lh {
                 for x in 0..lw {
                     pass.pixel(
-                        &mut out, &mut src, &full, &offs, true, x, y, &wt, &mut rng, &mut f, &mut cands, &mut own,
+                        &mut out, &mut src, shape, &offs, use_full, x, y, &wt, &mut rng, &mut f, &mut cands, &mut own,
                     );
                 }
                 done += lw;
