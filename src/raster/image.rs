@@ -53,9 +53,7 @@ impl Image {
     /// The pixel at (x, y) read on a torus.
     #[inline]
     pub fn wrapped(&self, x: isize, y: isize) -> [f32; 3] {
-        let w = self.width as isize;
-        let h = self.height as isize;
-        self.data[(y.rem_euclid(h) * w + x.rem_euclid(w)) as usize]
+        self.data[torus_index(x, y, self.width, self.height)]
     }
 
     /// The pixel at (x, y) with coordinates clamped to the image.
@@ -65,6 +63,13 @@ impl Image {
         let y = y.clamp(0, self.height as isize - 1) as usize;
         self.data[y * self.width + x]
     }
+}
+
+/// Row-major index of (x, y) in a `width x height` grid read on a torus.
+#[inline]
+pub fn torus_index(x: isize, y: isize, width: usize, height: usize) -> usize {
+    let (w, h) = (width as isize, height as isize);
+    (y.rem_euclid(h) * w + x.rem_euclid(w)) as usize
 }
 
 /// Rejects empty and over-large sizes with a message naming `what`.

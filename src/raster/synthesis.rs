@@ -16,7 +16,7 @@
 //! neighbourhoods are read on the fly (no feature tables), so memory stays a few times
 //! the images' size; partial distances stop as soon as they exceed the best so far.
 
-use super::image::{check_output, check_size, Image};
+use super::image::{check_output, check_size, torus_index, Image};
 use super::neighbourhood::Shape;
 use super::pyramid::{self, Edge};
 use crate::error::{invalid, Result};
@@ -400,17 +400,15 @@ impl Pass<'_> {
         let ex = &self.exs[e];
         let img = &ex.levels[self.level];
         for &(dx, dy) in &shape.own {
-            let nx = (x as isize + dx).rem_euclid(lw as isize) as usize;
-            let ny = (y as isize + dy).rem_euclid(lh as isize) as usize;
-            v.extend_from_slice(&img.data[src[e][ny * lw + nx] as usize]);
+            let n = torus_index(x as isize + dx, y as isize + dy, lw, lh);
+            v.extend_from_slice(&img.data[src[e][n] as usize]);
         }
         if self.with_parent {
             let parent = &ex.levels[self.level + 1];
-            let (plw, plh) = (lw.div_ceil(2) as isize, lh.div_ceil(2) as isize);
+            let (plw, plh) = (lw.div_ceil(2), lh.div_ceil(2));
             for &(dx, dy) in &shape.parent {
-                let px = ((x / 2) as isize + dx).rem_euclid(plw) as usize;
-                let py = ((y / 2) as isize + dy).rem_euclid(plh) as usize;
-                v.extend_from_slice(&parent.data[self.parent_src[e][py * plw as usize + px] as usize]);
+                let n = torus_index((x / 2) as isize + dx, (y / 2) as isize + dy, plw, plh);
+                v.extend_from_slice(&parent.data[self.parent_src[e][n] as usize]);
             }
         }
     }
@@ -440,9 +438,7 @@ impl Pass<'_> {
             }
         };
         for &(dx, dy) in &shape.own {
-            let nx = (x as isize + dx).rem_euclid(lw as isize) as usize;
-            let ny = (y as isize + dy).rem_euclid(lh as isize) as usize;
-            let s = src[e][ny * lw + nx] as isize;
+            let s = src[e][torus_index(x as isize + dx, y as isize + dy, lw, lh)] as isize;
             let (sx, sy) = (s % ew - dx, s / ew - dy);
             if sx >= 0 && sx < ew && sy >= 0 && sy < eh {
                 push((sy * ew + sx) as u32, cands);

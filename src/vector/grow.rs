@@ -105,6 +105,8 @@ struct Reference<'a> {
     window_radius: f64,
     /// The reference elements, indexed by position.
     grid: Grid,
+    /// Bounding box of the element positions.
+    bounds: Rect,
     /// Elements with neighbours in every direction within the conflict radius and a
     /// spacing: their neighbourhood in the example is complete.
     surrounded: Vec<bool>,
@@ -297,14 +299,14 @@ impl<'a> Reference<'a> {
             window_radius,
             surrounded: surrounded(elems, &grid, CONFLICT_RADIUS * spacing + spacing),
             grid,
+            bounds,
         })
     }
 
     /// Whether the example is one row of elements (no extent across it): a row grows
     /// only along itself, so the area beside it is no hole to fill.
     fn is_row(&self) -> bool {
-        let b =
-            self.elems.iter().fold(Rect::from_points(self.elems[0].pos, self.elems[0].pos), |r, e| r.union_pt(e.pos));
+        let b = self.bounds;
         b.width().min(b.height()) < self.spacing
     }
 
@@ -320,8 +322,7 @@ impl<'a> Reference<'a> {
     }
 
     fn density(&self) -> f64 {
-        let b =
-            self.elems.iter().fold(Rect::from_points(self.elems[0].pos, self.elems[0].pos), |r, e| r.union_pt(e.pos));
+        let b = self.bounds;
         let area = (b.width() + self.spacing) * (b.height() + self.spacing);
         self.elems.len() as f64 / area.max(1e-12)
     }
@@ -791,7 +792,7 @@ pub fn grow(elems: &[Element], opts: &GrowOptions, progress: &mut Throttle) -> R
         sig: Vec::new(),
         hole_below: (0.9 * reference.density() * cover_dims.2 * cover_dims.3).max(1.0) as u32,
     };
-    let bounds = elems.iter().fold(Rect::from_points(elems[0].pos, elems[0].pos), |r, e| r.union_pt(e.pos));
+    let bounds = reference.bounds;
     let shift = area.center() - bounds.center();
     for (i, e) in elems.iter().enumerate() {
         let p = e.pos + shift;
