@@ -83,6 +83,14 @@ fn offsets(shape: &Shape, width: usize, parent_width: usize) -> Offsets {
 /// (e.g. gravel 12.2 -> 11.0, brick 4.3 -> 3.7) against equal weights.
 const PARENT_WEIGHT: f32 = 3.0;
 
+/// Coherence bias (after Ashikhmin's and Hertzmann's coherence terms): a candidate that
+/// `v` of the `n` neighbours propose has its distance divided by `1 + COHERENCE (v - 1) / n`,
+/// so an exemplar patch that most neighbours agree on wins over a lone, slightly closer
+/// match; fewer seams, hence lower patch energy. Over 6 seeds on the four photographs
+/// (with the reversed correction pass), 2 lowered the mean energy from 8.12 to 7.27 and
+/// every photograph's; 4 and 8 cost brick more than they gained elsewhere.
+const COHERENCE: f32 = 2.0;
+
 /// Squared distance between `feature` and the neighbourhood of exemplar position `pos`
 /// at `level`, stopping once it exceeds `bound`.
 #[inline]
@@ -265,11 +273,16 @@ pub fn synthesize(exemplars: &[&Image], weights: &[f32], params: &Params, progre
         let mut f = Vec::with_capacity(full.dim(true));
         let mut cands = Vec::with_capacity(64);
         let mut own = Vec::with_capacity(full.dim(true));
-        // One causal pass, then the correction passes with full neighbourhoods.
-        for (shape, use_full) in std::iter::once((&causal, false)).chain((0..params.corrections).map(|_| (&full, true)))
-        {
-            for y in 0..lh {
-                for x in 0..lw {
+        // One causal pass, then the correction passes with full neighbourhoods, the first
+        // in reverse scanline order: structure then also spreads up and left, from the
+        // pixels the causal pass made last (6 seeds: mean energy 8.29 -> 8.12).
+        let passes =
+            std::iter::once((&causal, false, false)).chain((0..params.corrections).map(|i| (&full, true, i % 2 == 0)));
+        for (shape, use_full, reverse) in passes {
+            for row in 0..lh {
+                let y = if reverse { lh - 1 - row } else { row };
+                for col in 0..lw {
+                    let x = if reverse { lw - 1 - col } else { col };
                     pass.pixel(
                         &mut out, &mut src, shape, &offs, use_full, x, y, &wt, &mut rng, &mut f, &mut cands, &mut own,
                     );
@@ -322,7 +335,7 @@ impl Pass<'_> {
         wt: &impl Fn(usize, usize, usize) -> f32,
         rng: &mut Rng,
         f: &mut Vec<f32>,
-        cands: &mut Vec<u32>,
+        cands: &mut Vec<(u32, u16)>,
         own: &mut Vec<f32>,
     ) {
         let level = self.level;
@@ -350,7 +363,7 @@ impl Pass<'_> {
             let best = if weight <= 0.0 && !self.exhaustive {
                 // Not visible here: keep a coherent source so neighbours can continue it.
                 self.coherent_candidates(src, e, shape, x, y, lw, lh, img, rng, cands);
-                cands[0]
+                cands[0].0
             } else if self.exhaustive {
                 let mut best = (f32::INFINITY, 0u32);
                 for pos in 0..img.data.len() {
@@ -362,9 +375,11 @@ impl Pass<'_> {
                 best.1
             } else {
                 self.coherent_candidates(src, e, shape, x, y, lw, lh, img, rng, cands);
-                let mut best = (f32::INFINITY, cands[0]);
-                for &pos in cands.iter() {
-                    let d = distance(ex, level, pos as usize, shape, off, f, best.0);
+                let n = shape.own.len() as f32;
+                let mut best = (f32::INFINITY, cands[0].0);
+                for &(pos, votes) in cands.iter() {
+                    let bias = 1.0 + COHERENCE * (votes - 1) as f32 / n;
+                    let d = distance(ex, level, pos as usize, shape, off, f, best.0 * bias) / bias;
                     if d < best.0 {
                         best = (d, pos);
                     }
@@ -413,9 +428,9 @@ impl Pass<'_> {
         }
     }
 
-    /// Candidate exemplar positions for exemplar `e` at (x, y): each neighbour's source
-    /// shifted back by the neighbour's offset, the parent's source scaled up, and a few
-    /// random positions; without repeats.
+    /// Candidate exemplar positions for exemplar `e` at (x, y), each with the number of
+    /// proposals it got: each neighbour's source shifted back by the neighbour's offset,
+    /// the parent's source scaled up, and a few random positions.
     #[allow(clippy::too_many_arguments)]
     fn coherent_candidates(
         &self,
@@ -428,14 +443,13 @@ impl Pass<'_> {
         lh: usize,
         img: &Image,
         rng: &mut Rng,
-        cands: &mut Vec<u32>,
+        cands: &mut Vec<(u32, u16)>,
     ) {
         cands.clear();
         let (ew, eh) = (img.width as isize, img.height as isize);
-        let push = |c: u32, cands: &mut Vec<u32>| {
-            if !cands.contains(&c) {
-                cands.push(c);
-            }
+        let push = |c: u32, cands: &mut Vec<(u32, u16)>| match cands.iter_mut().find(|(q, _)| *q == c) {
+            Some((_, votes)) => *votes += 1,
+            None => cands.push((c, 1)),
         };
         for &(dx, dy) in &shape.own {
             let s = src[e][torus_index(x as isize + dx, y as isize + dy, lw, lh)] as isize;

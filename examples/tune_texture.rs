@@ -1,0 +1,43 @@
+//! Quality probe for tuning the texture search: mean patch energy over seeds, 128 -> 256,
+//! for the four photographs, and the median time. `cargo run --release --example tune_texture`
+use patternsynth::raster::codec::{decode_image, encode_png};
+use patternsynth::raster::energy::patch_energy;
+use patternsynth::raster::{synthesize_texture, Image, TextureOptions};
+use patternsynth::Silent;
+use std::time::Instant;
+
+fn main() {
+    let seeds: u64 = std::env::var("SEEDS").ok().and_then(|s| s.parse().ok()).unwrap_or(3);
+    let side: usize = std::env::var("SIDE").ok().and_then(|s| s.parse().ok()).unwrap_or(256);
+    let mut all = 0.0;
+    let mut times = Vec::new();
+    for name in ["wood", "brick", "grass", "gravel"] {
+        let d = decode_image(&std::fs::read(format!("tests/fixtures/textures/{name}.png")).unwrap()).unwrap();
+        let ex = Image::from_rgba8(d.width, d.height, &d.data).unwrap();
+        let mut sum = 0.0;
+        for seed in 1..=seeds {
+            let nb = std::env::var("NB").ok().and_then(|s| s.parse().ok()).unwrap_or(5);
+            let o = TextureOptions { width: side, height: side, seed, neighbourhood: nb, ..Default::default() };
+            let t = Instant::now();
+            let out = match std::env::var("REF") {
+                // Another synthesizer's outputs, named <dir>/<name>-<seed>.png.
+                Ok(dir) => {
+                    let d = decode_image(&std::fs::read(format!("{dir}/{name}-{seed}.png")).unwrap()).unwrap();
+                    Image::from_rgba8(d.width, d.height, &d.data).unwrap()
+                }
+                Err(_) => synthesize_texture(&ex, &o, &mut Silent).unwrap(),
+            };
+            times.push(t.elapsed().as_secs_f64() * 1e3);
+            if seed == 1 {
+                std::fs::create_dir_all("out/tune").unwrap();
+                std::fs::write(format!("out/tune/{name}.png"), encode_png(side, side, &out.to_rgba8()).unwrap())
+                    .unwrap();
+            }
+            sum += patch_energy(&out, &ex, 300, (0, side), seed);
+        }
+        print!("{name} {:.2}  ", sum / seeds as f64);
+        all += sum / seeds as f64;
+    }
+    times.sort_by(|a, b| a.total_cmp(b));
+    println!("| mean {:.2} | median {:.0} ms", all / 4.0, times[times.len() / 2]);
+}
