@@ -6,9 +6,62 @@
 //! energy and repetition against the named fixture).
 use patternsynth::raster::codec::{decode_image, encode_png};
 use patternsynth::raster::energy::{patch_energy, repetition};
-use patternsynth::raster::{blend_textures, synthesize_texture, BlendOptions, Image, TextureOptions};
+use patternsynth::raster::{blend_textures, synthesize_texture, BlendOptions, Image, Rgba, TextureOptions};
 use patternsynth::Silent;
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::sync::atomic::{AtomicUsize, Ordering::Relaxed};
 use std::time::Instant;
+
+/// The system allocator, counting live bytes and their peak (for the memory figures).
+struct Counting;
+static LIVE: AtomicUsize = AtomicUsize::new(0);
+static PEAK: AtomicUsize = AtomicUsize::new(0);
+
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        let live = LIVE.fetch_add(layout.size(), Relaxed) + layout.size();
+        PEAK.fetch_max(live, Relaxed);
+        unsafe { System.alloc(layout) }
+    }
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        LIVE.fetch_sub(layout.size(), Relaxed);
+        unsafe { System.dealloc(ptr, layout) }
+    }
+}
+
+#[global_allocator]
+static ALLOC: Counting = Counting;
+
+/// Peak bytes allocated while `f` runs, above what was live before.
+fn peak_bytes<T>(f: impl FnOnce() -> T) -> (usize, T) {
+    let before = LIVE.load(Relaxed);
+    PEAK.store(before, Relaxed);
+    let out = f();
+    (PEAK.load(Relaxed) - before, out)
+}
+
+/// Working memory of a call from RGBA exemplars to the RGBA result (the wasm path: bytes
+/// in, `Image` conversion, synthesis, bytes out), against the images' own RGBA size.
+fn memory_case(name: &str, exemplars: &[&str], out_side: usize) {
+    let rgba: Vec<_> = exemplars
+        .iter()
+        .map(|n| decode_image(&std::fs::read(format!("tests/fixtures/textures/{n}.png")).unwrap()).unwrap())
+        .collect();
+    let own: usize = rgba.iter().map(|r| r.data.len()).sum::<usize>() + out_side * out_side * 4;
+    let (peak, _) = peak_bytes(|| {
+        let ims: Vec<Image> = rgba.iter().map(|r| Image::from_rgba8(r.width, r.height, &r.data).unwrap()).collect();
+        let base = TextureOptions { width: out_side, height: out_side, seed: 1, ..Default::default() };
+        match &ims[..] {
+            [a] => synthesize_texture(a, &base, &mut Silent).unwrap(),
+            [a, b] => blend_textures(a, b, &BlendOptions { base, ..Default::default() }, &mut Silent).unwrap(),
+            _ => unreachable!(),
+        }
+    });
+    println!(
+        "{{\"case\":\"memory\",\"what\":\"{name}\",\"out\":{out_side},\"images_bytes\":{own},\"peak_bytes\":{peak},\"ratio\":{:.2}}}",
+        peak as f64 / own as f64
+    );
+}
 
 fn load(name: &str, side: usize) -> Image {
     let bytes = std::fs::read(format!("tests/fixtures/textures/{name}.png")).expect(name);
@@ -30,7 +83,8 @@ fn resize(img: &Image, side: usize) -> Image {
     out
 }
 
-fn median_ms(runs: usize, mut f: impl FnMut() -> Image) -> (f64, Image) {
+/// Median time of `runs` calls, and the last output as an `Image` for the measures.
+fn median_ms(runs: usize, mut f: impl FnMut() -> Rgba) -> (f64, Image) {
     let mut times = Vec::new();
     let mut last = None;
     for _ in 0..runs {
@@ -39,7 +93,8 @@ fn median_ms(runs: usize, mut f: impl FnMut() -> Image) -> (f64, Image) {
         times.push(t.elapsed().as_secs_f64() * 1e3);
     }
     times.sort_by(|a, b| a.total_cmp(b));
-    (times[times.len() / 2], last.unwrap())
+    let out = last.unwrap();
+    (times[times.len() / 2], Image::from_rgba8(out.width, out.height, &out.data).unwrap())
 }
 
 fn save(img: &Image, name: &str) {
@@ -85,6 +140,13 @@ fn main() {
                 patch_energy(&out, &ex, 300, (0, out.height), 1),
                 repetition(&out, 24, 1)
             );
+        }
+        return;
+    }
+    if args.get(1).map(String::as_str) == Some("--memory") {
+        for side in [256, 512, 1024] {
+            memory_case("single wood", &["wood"], side);
+            memory_case("blend wood-gravel", &["wood", "gravel"], side);
         }
         return;
     }

@@ -25,7 +25,10 @@ fn main() {
                     let d = decode_image(&std::fs::read(format!("{dir}/{name}-{seed}.png")).unwrap()).unwrap();
                     Image::from_rgba8(d.width, d.height, &d.data).unwrap()
                 }
-                Err(_) => synthesize_texture(&ex, &o, &mut Silent).unwrap(),
+                Err(_) => {
+                    let out = synthesize_texture(&ex, &o, &mut Silent).unwrap();
+                    Image::from_rgba8(out.width, out.height, &out.data).unwrap()
+                }
             };
             times.push(t.elapsed().as_secs_f64() * 1e3);
             if seed == 1 {

@@ -280,7 +280,7 @@ pub fn synthesize_texture(
     let ex = image_from_js(&image, "image")?;
     let opts: raster::TextureOptions = from_js(opts, "texture options")?;
     let out = raster::synthesize_texture(&ex, &opts, &mut JsProgress(on_progress)).map_err(js_error)?;
-    Ok(rgba_to_js(out.width, out.height, &out.to_rgba8()))
+    Ok(rgba_to_js(out.width, out.height, &out.data))
 }
 
 /// The blend options' own keys beside those of `TextureOptions` (read by hand:
@@ -343,7 +343,7 @@ pub fn blend_textures(
     };
     let opts = raster::BlendOptions { base, coefficient };
     let out = raster::blend_textures(&a, &b, &opts, &mut JsProgress(on_progress)).map_err(js_error)?;
-    Ok(rgba_to_js(out.width, out.height, &out.to_rgba8()))
+    Ok(rgba_to_js(out.width, out.height, &out.data))
 }
 
 /// Decodes PNG or JPEG bytes to RGBA.

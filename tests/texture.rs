@@ -5,7 +5,9 @@
 
 use patternsynth::raster::codec::decode_image;
 use patternsynth::raster::energy::{patch_energy, repetition};
-use patternsynth::raster::{blend_textures, synthesize_texture, BlendOptions, Coefficient, Image, TextureOptions};
+use patternsynth::raster::{
+    blend_textures, synthesize_texture, BlendOptions, Coefficient, Image, Rgba, TextureOptions,
+};
 use patternsynth::{Error, Silent};
 
 fn load(name: &str, side: usize) -> Image {
@@ -20,6 +22,11 @@ fn load(name: &str, side: usize) -> Image {
         }
     }
     out
+}
+
+/// An engine's RGBA result as an `Image`, for the measures.
+fn image(out: Rgba) -> Image {
+    Image::from_rgba8(out.width, out.height, &out.data).unwrap()
 }
 
 fn mean(img: &Image) -> [f32; 3] {
@@ -40,7 +47,7 @@ fn blend_resembles_a_at_the_top_and_b_at_the_bottom() {
         base: TextureOptions { width: 96, height: 96, seed: 3, ..Default::default() },
         ..Default::default()
     };
-    let out = blend_textures(&a, &b, &opts, &mut Silent).unwrap();
+    let out = image(blend_textures(&a, &b, &opts, &mut Silent).unwrap());
     assert_eq!((out.width, out.height), (96, 96));
     let top = (0, 16);
     let bottom = (80, 96);
@@ -60,12 +67,8 @@ fn blend_resembles_a_at_the_top_and_b_at_the_bottom() {
 #[test]
 fn single_exemplar_keeps_the_look_without_copying_it_whole() {
     let ex = load("grass", 64);
-    let out = synthesize_texture(
-        &ex,
-        &TextureOptions { width: 128, height: 128, seed: 5, ..Default::default() },
-        &mut Silent,
-    )
-    .unwrap();
+    let opts = TextureOptions { width: 128, height: 128, seed: 5, ..Default::default() };
+    let out = image(synthesize_texture(&ex, &opts, &mut Silent).unwrap());
     let (m, me) = (mean(&out), mean(&ex));
     for c in 0..3 {
         assert!((m[c] - me[c]).abs() < 0.08 * me[c].max(20.0), "mean colour {m:?} vs {me:?}");
@@ -88,7 +91,7 @@ fn single_exemplar_keeps_the_look_without_copying_it_whole() {
 fn tileable_output_wraps_without_a_seam() {
     let ex = load("wood", 64);
     let opts = TextureOptions { width: 96, height: 96, seed: 2, tileable: true, ..Default::default() };
-    let out = synthesize_texture(&ex, &opts, &mut Silent).unwrap();
+    let out = image(synthesize_texture(&ex, &opts, &mut Silent).unwrap());
     let diff = |x0: usize, y0: usize, x1: usize, y1: usize| {
         let (p, q) = (out.at(x0, y0), out.at(x1, y1));
         ((p[0] - q[0]).abs() + (p[1] - q[1]).abs() + (p[2] - q[2]).abs()) as f64
@@ -107,8 +110,8 @@ fn tileable_output_wraps_without_a_seam() {
 fn accelerated_search_stays_close_to_exhaustive() {
     let ex = load("gravel", 32);
     let opts = TextureOptions { width: 48, height: 48, seed: 4, ..Default::default() };
-    let fast = synthesize_texture(&ex, &opts, &mut Silent).unwrap();
-    let full = synthesize_texture(&ex, &TextureOptions { exhaustive: true, ..opts }, &mut Silent).unwrap();
+    let fast = image(synthesize_texture(&ex, &opts, &mut Silent).unwrap());
+    let full = image(synthesize_texture(&ex, &TextureOptions { exhaustive: true, ..opts }, &mut Silent).unwrap());
     let (ef, ee) = (patch_energy(&fast, &ex, 200, (0, 48), 3), patch_energy(&full, &ex, 200, (0, 48), 3));
     println!("accelerated {ef:.2} exhaustive {ee:.2}");
     assert!(ef < 1.25 * ee, "accelerated {ef} vs exhaustive {ee}");
@@ -125,7 +128,7 @@ fn same_seed_same_image() {
 fn bad_input_is_a_clear_error() {
     let ex = load("wood", 32);
     let tiny = Image::new(3, 3);
-    let err = |r: Result<Image, Error>| r.unwrap_err().to_string();
+    let err = |r: Result<Rgba, Error>| r.unwrap_err().to_string();
     assert!(Image::from_rgba8(0, 5, &[]).unwrap_err().to_string().contains("empty"));
     assert!(Image::from_rgba8(2, 2, &[0; 15]).unwrap_err().to_string().contains("needs 16"));
     let o = |w, h| TextureOptions { width: w, height: h, ..Default::default() };

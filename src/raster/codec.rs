@@ -1,18 +1,10 @@
 //! PNG and JPEG in, PNG out, through the image crate, with decoding limits so that a
 //! hostile file cannot allocate without bound.
 
-use super::image::{check_size, MAX_SIDE};
+use super::image::{check_size, Rgba, MAX_SIDE};
 use crate::error::{Error, Result};
 use image::{ColorType, ImageDecoder, ImageEncoder, ImageFormat, Limits};
 use std::io::Cursor;
-
-/// RGBA bytes and their size.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Rgba {
-    pub width: usize,
-    pub height: usize,
-    pub data: Vec<u8>,
-}
 
 pub fn decode_image(bytes: &[u8]) -> Result<Rgba> {
     let format = image::guess_format(bytes)

@@ -10,10 +10,20 @@ pub struct Image {
     pub data: Vec<[f32; 3]>,
 }
 
+/// RGBA bytes (4 per pixel, row major) and their size: what decoders give and the
+/// engines return.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Rgba {
+    pub width: usize,
+    pub height: usize,
+    pub data: Vec<u8>,
+}
+
 /// Largest side of an image the engines accept (memory stays bounded: see `MAX_PIXELS`).
 pub const MAX_SIDE: usize = 4096;
-/// Largest pixel count of an output (2048 x 2048): about 16 bytes of working memory per
-/// pixel and level, well under the browser's wasm memory.
+/// Largest pixel count of an output (2048 x 2048): synthesis needs at most 14 bytes
+/// per output pixel when blending (see `synthesis::synthesize`), about 60 MB here, well
+/// under the browser's wasm memory.
 pub const MAX_PIXELS: usize = 2048 * 2048;
 
 impl Image {

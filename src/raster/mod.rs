@@ -10,5 +10,5 @@ pub mod pyramid;
 pub mod synthesis;
 pub mod texture;
 
-pub use self::image::Image;
+pub use self::image::{Image, Rgba};
 pub use texture::{blend_textures, synthesize_texture, BlendOptions, Coefficient, TextureOptions};

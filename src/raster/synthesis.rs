@@ -1,6 +1,5 @@
-//! Multi-resolution Wei-Levoy synthesis against one or more exemplars, each output pixel
-//! mixing the exemplars' best matches by per-pixel weights (the paper's blending: two
-//! exemplars, weights mu and 1 - mu).
+//! Multi-resolution Wei-Levoy synthesis against one exemplar, or two whose best matches
+//! each output pixel mixes by weights mu and 1 - mu (the paper's blending).
 //!
 //! Coarse to fine; at each level the output is filled in scanline order on a torus. A
 //! pixel's feature is its causal neighbourhood at this level and the full 3x3 block at
@@ -11,12 +10,14 @@
 //! default compares with coherent candidates only (Ashikhmin 2001): for each already
 //! synthesized neighbour, the exemplar position next to the one it copied, so that
 //! patches of the exemplar continue; plus the parent's position scaled up and a few
-//! random positions. The coarsest level, a few hundred positions, is always exhaustive,
-//! which lays the large-scale structure; finer levels refine it coherently. Exemplar
-//! neighbourhoods are read on the fly (no feature tables), so memory stays a few times
-//! the images' size; partial distances stop as soon as they exceed the best so far.
+//! random positions; a candidate that many neighbours propose is preferred. The
+//! coarsest level, a few hundred positions, is always exhaustive, which lays the
+//! large-scale structure; finer levels refine it coherently. Exemplar neighbourhoods are
+//! read on the fly (no feature tables) and the output is kept only as source positions,
+//! so memory stays a few times the images' size; partial distances stop as soon as they
+//! exceed the best so far.
 
-use super::image::{check_output, check_size, torus_index, Image};
+use super::image::{check_output, check_size, torus_index, Image, Rgba};
 use super::neighbourhood::Shape;
 use super::pyramid::{self, Edge};
 use crate::error::{invalid, Result};
@@ -146,21 +147,6 @@ fn block(
     k
 }
 
-/// The output's feature at (x, y): own level read on the torus, parent level too.
-fn feature(out: &[Image], level: usize, x: usize, y: usize, shape: &Shape, with_parent: bool, f: &mut Vec<f32>) {
-    f.clear();
-    let img = &out[level];
-    for &(dx, dy) in &shape.own {
-        f.extend_from_slice(&img.wrapped(x as isize + dx, y as isize + dy));
-    }
-    if with_parent {
-        let p = &out[level + 1];
-        for &(dx, dy) in &shape.parent {
-            f.extend_from_slice(&p.wrapped((x / 2) as isize + dx, (y / 2) as isize + dy));
-        }
-    }
-}
-
 /// Default number of levels: the coarsest exemplar about 16 pixels on its short side
 /// (at least the neighbourhood), the coarsest output at least 8; at most 5.
 fn default_levels(exemplars: &[&Image], width: usize, height: usize, side: usize) -> usize {
@@ -173,19 +159,35 @@ fn default_levels(exemplars: &[&Image], width: usize, height: usize, side: usize
     levels
 }
 
-/// Synthesizes a `width x height` image from `exemplars`, mixing them at each pixel by
-/// `weights` (one value per exemplar per output pixel, row major, pixel-major:
-/// `weights[p * k + e]`), which must sum to 1 at each pixel.
-pub fn synthesize(exemplars: &[&Image], weights: &[f32], params: &Params, progress: &mut Throttle) -> Result<Image> {
+/// What to synthesize from.
+pub enum Sources<'a> {
+    /// More of one texture.
+    One(&'a Image),
+    /// Two exemplars mixed by `mu`, the weight of `a` at each output pixel (row major,
+    /// one value in [0, 1] per pixel; `b` gets 1 - mu).
+    Blend { a: &'a Image, b: &'a Image, mu: Vec<f32> },
+}
+
+/// Synthesizes a `width x height` image from `sources`.
+///
+/// Memory: the output is never stored as colours. Each level keeps, per exemplar and
+/// pixel, the exemplar position it copies (4 bytes), and a pixel's colour is read through
+/// it (mixed by mu when blending). With the parent level's map and mu in 16 bits, that
+/// is at most 5 bytes per output pixel for one exemplar and 12 for two, plus the RGBA
+/// result (4) at the end, when the parent's map is gone.
+pub fn synthesize(sources: Sources, params: &Params, progress: &mut Throttle) -> Result<Rgba> {
     let (width, height) = (params.width, params.height);
     check_output(width, height)?;
-    let n_ex = exemplars.len();
-    if n_ex == 0 {
-        return invalid("Give at least one exemplar image.");
-    }
-    if weights.len() != width * height * n_ex {
-        return invalid("The weight map does not match the output size.");
-    }
+    let (exemplars, mu) = match sources {
+        Sources::One(e) => (vec![e], None),
+        Sources::Blend { a, b, mu } => {
+            if mu.len() != width * height {
+                return invalid("The coefficient map does not match the output size.");
+            }
+            let quantized = mu.iter().map(|&m| (m.clamp(0.0, 1.0) * MU_ONE).round() as u16).collect();
+            (vec![a, b], Some(quantized))
+        }
+    };
     let side = params.neighbourhood;
     if side < 3 || side % 2 == 0 || side > 15 {
         return invalid(format!("The neighbourhood size must be odd, from 3 to 15 (got {side})."));
@@ -204,38 +206,30 @@ pub fn synthesize(exemplars: &[&Image], weights: &[f32], params: &Params, progre
     let levels = match params.levels {
         Some(l) if l == 0 || l > 8 => return invalid("Levels must be from 1 to 8."),
         Some(l) => l,
-        None => default_levels(exemplars, width, height, side),
+        None => default_levels(&exemplars, width, height, side),
     };
     let half = (side / 2) as isize;
     let causal = Shape::causal(half);
     let full = Shape::full(half);
-    let exs: Vec<Exemplar> =
-        exemplars.iter().map(|e| Exemplar { levels: pyramid::build(e, levels, Edge::Clamp) }).collect();
+    let mix = Mixer {
+        exs: exemplars.iter().map(|e| Exemplar { levels: pyramid::build(e, levels, Edge::Clamp) }).collect(),
+        mu,
+        width,
+        height,
+    };
+    let exs = &mix.exs;
     let mut rng = Rng::new(params.seed);
 
-    // Output pyramid, finest first; sizes round up like the exemplars'.
-    let mut out: Vec<Image> = Vec::with_capacity(levels);
-    let (mut w, mut h) = (width, height);
-    for _ in 0..levels {
-        out.push(Image::new(w, h));
-        w = w.div_ceil(2);
-        h = h.div_ceil(2);
-    }
-    let total: usize = out.iter().map(|o| o.width * o.height).sum::<usize>() * (1 + params.corrections);
+    // Output sizes per level, finest first; they round up like the exemplars'.
+    let sizes: Vec<(usize, usize)> = (0..levels).map(|l| (width.div_ceil(1 << l), height.div_ceil(1 << l))).collect();
+    let total: usize = sizes.iter().map(|(w, h)| w * h).sum::<usize>() * (1 + params.corrections);
     let mut done = 0usize;
-    // Source positions per exemplar, at the current level and at its parent.
+    // Source positions per exemplar at the current level and at its parent.
     let mut parent_src: Vec<Vec<u32>> = Vec::new();
 
     for level in (0..levels).rev() {
-        let (lw, lh) = (out[level].width, out[level].height);
-        let with_parent = level + 1 < levels;
-        let scale = 1usize << level;
-        // The weights at this level: sampled at the pixel's footprint in the full output.
-        let wt = |x: usize, y: usize, e: usize| {
-            let (fx, fy) = ((x * scale).min(width - 1), (y * scale).min(height - 1));
-            weights[(fy * width + fx) * n_ex + e]
-        };
-        // Noise from the exemplars' colours, each pixel from an exemplar drawn by weight.
+        let (lw, lh) = sizes[level];
+        // Noise: every pixel copies a random position of each exemplar.
         let mut src: Vec<Vec<u32>> = exs
             .iter()
             .map(|ex| {
@@ -243,23 +237,15 @@ pub fn synthesize(exemplars: &[&Image], weights: &[f32], params: &Params, progre
                 (0..lw * lh).map(|_| rng.below(n) as u32).collect()
             })
             .collect();
-        for y in 0..lh {
-            for x in 0..lw {
-                let mut pick = rng.next_f64() as f32;
-                let mut e = 0;
-                while e + 1 < n_ex && pick > wt(x, y, e) {
-                    pick -= wt(x, y, e);
-                    e += 1;
-                }
-                out[level].data[y * lw + x] = exs[e].levels[level].data[src[e][y * lw + x] as usize];
-            }
-        }
-        let exhaustive = params.exhaustive || level + 1 == levels;
+        let with_parent = level + 1 < levels;
         let pass = Pass {
-            exs: &exs,
+            mix: &mix,
             level,
+            lw,
+            lh,
+            parent_size: sizes.get(level + 1).copied().unwrap_or((1, 1)),
             with_parent,
-            exhaustive,
+            exhaustive: params.exhaustive || level + 1 == levels,
             random: params.random_candidates,
             parent_src: &parent_src,
         };
@@ -270,9 +256,11 @@ pub fn synthesize(exemplars: &[&Image], weights: &[f32], params: &Params, progre
                 (offsets(&causal, ex.levels[level].width, pw), offsets(&full, ex.levels[level].width, pw))
             })
             .collect();
-        let mut f = Vec::with_capacity(full.dim(true));
-        let mut cands = Vec::with_capacity(64);
-        let mut own = Vec::with_capacity(full.dim(true));
+        let mut scratch = Scratch {
+            f: Vec::with_capacity(full.dim(true)),
+            own: Vec::with_capacity(full.dim(true)),
+            cands: Vec::with_capacity(64),
+        };
         // One causal pass, then the correction passes with full neighbourhoods, the first
         // in reverse scanline order: structure then also spreads up and left, from the
         // pixels the causal pass made last (6 seeds: mean energy 8.29 -> 8.12).
@@ -283,9 +271,7 @@ pub fn synthesize(exemplars: &[&Image], weights: &[f32], params: &Params, progre
                 let y = if reverse { lh - 1 - row } else { row };
                 for col in 0..lw {
                     let x = if reverse { lw - 1 - col } else { col };
-                    pass.pixel(
-                        &mut out, &mut src, shape, &offs, use_full, x, y, &wt, &mut rng, &mut f, &mut cands, &mut own,
-                    );
+                    pass.pixel(&mut src, shape, &offs, use_full, x, y, &mut rng, &mut scratch);
                 }
                 done += lw;
                 progress.tick(done as f64 / total as f64)?;
@@ -298,22 +284,95 @@ pub fn synthesize(exemplars: &[&Image], weights: &[f32], params: &Params, progre
             for y in 0..lh {
                 for x in 0..lw {
                     if y < band || x < band || y + band / 2 >= lh || x + band / 2 >= lw {
-                        pass.pixel(
-                            &mut out, &mut src, &full, &offs, true, x, y, &wt, &mut rng, &mut f, &mut cands, &mut own,
-                        );
+                        pass.pixel(&mut src, &full, &offs, true, x, y, &mut rng, &mut scratch);
                     }
                 }
             }
         }
         parent_src = src;
     }
+    // The finest level's sources are `parent_src` now.
     progress.tick(1.0)?;
-    Ok(out.swap_remove(0))
+    let mut data = Vec::with_capacity(width * height * 4);
+    for y in 0..height {
+        for x in 0..width {
+            data.extend(mix.colour(0, &parent_src, width, x, y).iter().map(|&v| v.round().clamp(0.0, 255.0) as u8));
+            data.push(255);
+        }
+    }
+    Ok(Rgba { width, height, data })
+}
+
+/// mu = 1 in the 16-bit map.
+const MU_ONE: f32 = 65535.0;
+
+/// The exemplars and how they mix: output colours are read through source maps.
+struct Mixer {
+    exs: Vec<Exemplar>,
+    /// The weight of exemplar 0 per output pixel, 65535 = 1 (None: one exemplar).
+    mu: Option<Vec<u16>>,
+    /// Full output size.
+    width: usize,
+    height: usize,
+}
+
+impl Mixer {
+    /// The weight of exemplar `e` at (x, y) of `level`: mu sampled at the pixel's
+    /// footprint in the full output.
+    #[inline]
+    fn weight(&self, e: usize, level: usize, x: usize, y: usize) -> f32 {
+        match &self.mu {
+            None => 1.0,
+            Some(mu) => {
+                let (fx, fy) = ((x << level).min(self.width - 1), (y << level).min(self.height - 1));
+                let m = mu[fy * self.width + fx] as f32 / MU_ONE;
+                if e == 0 {
+                    m
+                } else {
+                    1.0 - m
+                }
+            }
+        }
+    }
+
+    /// The output colour at (x, y) of `level` (`w` pixels wide), whose source maps are
+    /// `src`: the sources' colours mixed by weight.
+    #[inline]
+    fn colour(&self, level: usize, src: &[Vec<u32>], w: usize, x: usize, y: usize) -> [f32; 3] {
+        let i = y * w + x;
+        let read = |e: usize| self.exs[e].levels[level].data[src[e][i] as usize];
+        if self.mu.is_none() {
+            return read(0);
+        }
+        let m = self.weight(0, level, x, y);
+        if m >= 1.0 {
+            read(0)
+        } else if m <= 0.0 {
+            read(1)
+        } else {
+            let (a, b) = (read(0), read(1));
+            [0, 1, 2].map(|c| m * a[c] + (1.0 - m) * b[c])
+        }
+    }
+}
+
+/// Per-pixel working vectors, allocated once per level.
+struct Scratch {
+    /// The output's neighbourhood feature.
+    f: Vec<f32>,
+    /// One exemplar's own-choices feature (partial weights).
+    own: Vec<f32>,
+    /// Candidate positions with their numbers of proposals.
+    cands: Vec<(u32, u16)>,
 }
 
 struct Pass<'a> {
-    exs: &'a [Exemplar],
+    mix: &'a Mixer,
     level: usize,
+    /// This level's size and the parent level's.
+    lw: usize,
+    lh: usize,
+    parent_size: (usize, usize),
     with_parent: bool,
     exhaustive: bool,
     random: usize,
@@ -321,29 +380,47 @@ struct Pass<'a> {
 }
 
 impl Pass<'_> {
-    /// Synthesizes output pixel (x, y) at this level.
+    /// The output's feature at (x, y): own level read on the torus, parent level too.
+    fn feature(&self, src: &[Vec<u32>], x: usize, y: usize, shape: &Shape, f: &mut Vec<f32>) {
+        f.clear();
+        let (lw, lh) = (self.lw as isize, self.lh as isize);
+        for &(dx, dy) in &shape.own {
+            let (nx, ny) = ((x as isize + dx).rem_euclid(lw), (y as isize + dy).rem_euclid(lh));
+            f.extend_from_slice(&self.mix.colour(self.level, src, self.lw, nx as usize, ny as usize));
+        }
+        if self.with_parent {
+            let (pw, ph) = (self.parent_size.0 as isize, self.parent_size.1 as isize);
+            for &(dx, dy) in &shape.parent {
+                let (nx, ny) = (((x / 2) as isize + dx).rem_euclid(pw), ((y / 2) as isize + dy).rem_euclid(ph));
+                f.extend_from_slice(&self.mix.colour(
+                    self.level + 1,
+                    self.parent_src,
+                    self.parent_size.0,
+                    nx as usize,
+                    ny as usize,
+                ));
+            }
+        }
+    }
+
+    /// Synthesizes output pixel (x, y) at this level: sets its source in every exemplar.
     #[allow(clippy::too_many_arguments)]
     fn pixel(
         &self,
-        out: &mut [Image],
         src: &mut [Vec<u32>],
         shape: &Shape,
         offs: &[(Offsets, Offsets)],
         use_full: bool,
         x: usize,
         y: usize,
-        wt: &impl Fn(usize, usize, usize) -> f32,
         rng: &mut Rng,
-        f: &mut Vec<f32>,
-        cands: &mut Vec<(u32, u16)>,
-        own: &mut Vec<f32>,
+        scratch: &mut Scratch,
     ) {
         let level = self.level;
-        let (lw, lh) = (out[level].width, out[level].height);
-        feature(out, level, x, y, shape, self.with_parent, f);
-        let mut colour = [0.0f32; 3];
-        for (e, ex) in self.exs.iter().enumerate() {
-            let weight = wt(x, y, e);
+        let Scratch { f, own, cands } = scratch;
+        self.feature(src, x, y, shape, f);
+        for (e, ex) in self.mix.exs.iter().enumerate() {
+            let weight = self.mix.weight(e, level, x, y);
             let img = &ex.levels[level];
             let off = if use_full { &offs[e].1 } else { &offs[e].0 };
             // Where an exemplar has a partial weight, it is matched against the mixed
@@ -352,7 +429,7 @@ impl Pass<'_> {
             // weight falls, a faint exemplar no longer collapses onto the one patch that
             // best imitates the other exemplar's colours (rows of repeated blobs).
             let f: &[f32] = if weight > 0.0 && weight < 1.0 {
-                self.own_feature(src, e, shape, x, y, lw, lh, own);
+                self.own_feature(src, e, shape, x, y, own);
                 for (o, m) in own.iter_mut().zip(f.iter()) {
                     *o = weight * m + (1.0 - weight) * *o;
                 }
@@ -362,7 +439,7 @@ impl Pass<'_> {
             };
             let best = if weight <= 0.0 && !self.exhaustive {
                 // Not visible here: keep a coherent source so neighbours can continue it.
-                self.coherent_candidates(src, e, shape, x, y, lw, lh, img, rng, cands);
+                self.coherent_candidates(src, e, shape, x, y, img, rng, cands);
                 cands[0].0
             } else if self.exhaustive {
                 let mut best = (f32::INFINITY, 0u32);
@@ -374,7 +451,7 @@ impl Pass<'_> {
                 }
                 best.1
             } else {
-                self.coherent_candidates(src, e, shape, x, y, lw, lh, img, rng, cands);
+                self.coherent_candidates(src, e, shape, x, y, img, rng, cands);
                 let n = shape.own.len() as f32;
                 let mut best = (f32::INFINITY, cands[0].0);
                 for &(pos, votes) in cands.iter() {
@@ -386,33 +463,17 @@ impl Pass<'_> {
                 }
                 best.1
             };
-            src[e][y * lw + x] = best;
-            if weight > 0.0 {
-                let p = img.data[best as usize];
-                for c in 0..3 {
-                    colour[c] += weight * p[c];
-                }
-            }
+            src[e][y * self.lw + x] = best;
         }
-        out[level].data[y * lw + x] = colour;
     }
 
     /// The neighbourhood of exemplar `e`'s own choices around (x, y): each neighbour's
     /// source colour, at this level and the parent's.
     #[allow(clippy::too_many_arguments)]
-    fn own_feature(
-        &self,
-        src: &[Vec<u32>],
-        e: usize,
-        shape: &Shape,
-        x: usize,
-        y: usize,
-        lw: usize,
-        lh: usize,
-        v: &mut Vec<f32>,
-    ) {
+    fn own_feature(&self, src: &[Vec<u32>], e: usize, shape: &Shape, x: usize, y: usize, v: &mut Vec<f32>) {
+        let (lw, lh) = (self.lw, self.lh);
         v.clear();
-        let ex = &self.exs[e];
+        let ex = &self.mix.exs[e];
         let img = &ex.levels[self.level];
         for &(dx, dy) in &shape.own {
             let n = torus_index(x as isize + dx, y as isize + dy, lw, lh);
@@ -420,7 +481,7 @@ impl Pass<'_> {
         }
         if self.with_parent {
             let parent = &ex.levels[self.level + 1];
-            let (plw, plh) = (lw.div_ceil(2), lh.div_ceil(2));
+            let (plw, plh) = self.parent_size;
             for &(dx, dy) in &shape.parent {
                 let n = torus_index((x / 2) as isize + dx, (y / 2) as isize + dy, plw, plh);
                 v.extend_from_slice(&parent.data[self.parent_src[e][n] as usize]);
@@ -439,12 +500,11 @@ impl Pass<'_> {
         shape: &Shape,
         x: usize,
         y: usize,
-        lw: usize,
-        lh: usize,
         img: &Image,
         rng: &mut Rng,
         cands: &mut Vec<(u32, u16)>,
     ) {
+        let (lw, lh) = (self.lw, self.lh);
         cands.clear();
         let (ew, eh) = (img.width as isize, img.height as isize);
         let push = |c: u32, cands: &mut Vec<(u32, u16)>| match cands.iter_mut().find(|(q, _)| *q == c) {
@@ -459,8 +519,8 @@ impl Pass<'_> {
             }
         }
         if self.with_parent {
-            let parent = &self.exs[e].levels[self.level + 1];
-            let (pw, plw) = (parent.width as isize, lw.div_ceil(2));
+            let parent = &self.mix.exs[e].levels[self.level + 1];
+            let (pw, plw) = (parent.width as isize, self.parent_size.0);
             let s = self.parent_src[e][(y / 2) * plw + x / 2] as isize;
             let sx = (2 * (s % pw) + (x % 2) as isize).min(ew - 1);
             let sy = (2 * (s / pw) + (y % 2) as isize).min(eh - 1);

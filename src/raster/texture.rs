@@ -2,8 +2,8 @@
 //! texture") and `blend_textures` (two exemplars mixed by a generation coefficient).
 
 use super::coefficient::{self, Transfer};
-use super::image::Image;
-use super::synthesis::{synthesize, Params};
+use super::image::{Image, Rgba};
+use super::synthesis::{synthesize, Params, Sources};
 use crate::error::{invalid, Result};
 use crate::progress::{Progress, Throttle};
 use serde::Deserialize;
@@ -78,10 +78,8 @@ impl TextureOptions {
 }
 
 /// More of one texture: a `width x height` image that looks like `exemplar`.
-pub fn synthesize_texture(exemplar: &Image, opts: &TextureOptions, progress: &mut dyn Progress) -> Result<Image> {
-    super::image::check_output(opts.width, opts.height)?;
-    let weights = vec![1.0f32; opts.width * opts.height];
-    synthesize(&[exemplar], &weights, &opts.params(), &mut Throttle::new(progress))
+pub fn synthesize_texture(exemplar: &Image, opts: &TextureOptions, progress: &mut dyn Progress) -> Result<Rgba> {
+    synthesize(Sources::One(exemplar), &opts.params(), &mut Throttle::new(progress))
 }
 
 /// The coefficient map mu (weight of A) for these options.
@@ -97,13 +95,12 @@ pub fn coefficient_map(c: &Coefficient, width: usize, height: usize) -> Result<V
 
 /// Two exemplars blended: each output pixel takes the best match in A and in B for the
 /// same output neighbourhood and mixes them by mu(x, y) and 1 - mu(x, y).
-pub fn blend_textures(a: &Image, b: &Image, opts: &BlendOptions, progress: &mut dyn Progress) -> Result<Image> {
+pub fn blend_textures(a: &Image, b: &Image, opts: &BlendOptions, progress: &mut dyn Progress) -> Result<Rgba> {
     let base = &opts.base;
     super::image::check_output(base.width, base.height)?;
     let mu = coefficient_map(&opts.coefficient, base.width, base.height)?;
     if mu.is_empty() {
         return invalid("The output is empty.");
     }
-    let weights: Vec<f32> = mu.iter().flat_map(|&m| [m, 1.0 - m]).collect();
-    synthesize(&[a, b], &weights, &base.params(), &mut Throttle::new(progress))
+    synthesize(Sources::Blend { a, b, mu }, &base.params(), &mut Throttle::new(progress))
 }
