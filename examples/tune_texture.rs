@@ -1,14 +1,59 @@
 //! Quality probe for tuning the texture search: mean patch energy over seeds, 128 -> 256,
 //! for the four photographs, and the median time. `cargo run --release --example tune_texture`
+//! (`BLEND=1`: the blends' band energies and repetition in the middle band instead).
 use patternsynth::raster::codec::{decode_image, encode_png};
-use patternsynth::raster::energy::patch_energy;
-use patternsynth::raster::{synthesize_texture, Image, TextureOptions};
+use patternsynth::raster::energy::{patch_energy, repetition};
+use patternsynth::raster::{blend_textures, synthesize_texture, BlendOptions, Image, TextureOptions};
 use patternsynth::Silent;
 use std::time::Instant;
+
+fn load(name: &str) -> Image {
+    let d = decode_image(&std::fs::read(format!("tests/fixtures/textures/{name}.png")).unwrap()).unwrap();
+    Image::from_rgba8(d.width, d.height, &d.data).unwrap()
+}
+
+/// Band energies of the blends (top vs A, bottom vs B, middle vs both) and their times.
+fn blends(seeds: u64, side: usize) {
+    for (a, b) in [("wood", "gravel"), ("brick", "grass")] {
+        let (ea, eb) = (load(a), load(b));
+        let band = side / 6;
+        let mut sums = [0.0; 5];
+        let mut times = Vec::new();
+        for seed in 1..=seeds {
+            let o = BlendOptions {
+                base: TextureOptions { width: side, height: side, seed, ..Default::default() },
+                ..Default::default()
+            };
+            let t = Instant::now();
+            let out = blend_textures(&ea, &eb, &o, &mut Silent).unwrap();
+            times.push(t.elapsed().as_secs_f64() * 1e3);
+            if seed == 1 {
+                std::fs::create_dir_all("out/tune").unwrap();
+                std::fs::write(format!("out/tune/{a}-{b}.png"), encode_png(side, side, &out.data).unwrap()).unwrap();
+            }
+            let out = Image::from_rgba8(out.width, out.height, &out.data).unwrap();
+            let mid = (side / 2 - band / 2, side / 2 + band / 2);
+            sums[0] += patch_energy(&out, &ea, 200, (0, band), seed);
+            sums[1] += patch_energy(&out, &eb, 200, (side - band, side), seed);
+            sums[2] += patch_energy(&out, &ea, 200, mid, seed);
+            sums[3] += patch_energy(&out, &eb, 200, mid, seed);
+            sums[4] += repetition(&out, 24, seed);
+        }
+        times.sort_by(|a, b| a.total_cmp(b));
+        let m = sums.map(|v| v / seeds as f64);
+        println!(
+            "{a}->{b}: top vs A {:.2}, bottom vs B {:.2}, middle vs A {:.2} / B {:.2}, repetition {:.3} | median {:.0} ms",
+            m[0], m[1], m[2], m[3], m[4], times[times.len() / 2]
+        );
+    }
+}
 
 fn main() {
     let seeds: u64 = std::env::var("SEEDS").ok().and_then(|s| s.parse().ok()).unwrap_or(3);
     let side: usize = std::env::var("SIDE").ok().and_then(|s| s.parse().ok()).unwrap_or(256);
+    if std::env::var("BLEND").is_ok() {
+        return blends(seeds, side);
+    }
     let mut all = 0.0;
     let mut times = Vec::new();
     for name in ["wood", "brick", "grass", "gravel"] {

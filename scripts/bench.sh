@@ -3,7 +3,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh >/dev/null
-cargo build --release --example bench_vector --example bench_texture -q
+cargo build --release --example bench_vector --example bench_texture --example tune_texture -q
 echo "== vector strokes"
 node bench/vector.mjs
 echo

@@ -427,8 +427,10 @@ impl Pass<'_> {
             // neighbourhood only in proportion to that weight; the rest is its own
             // choices around the pixel. At weight 1 this is the paper's rule; as the
             // weight falls, a faint exemplar no longer collapses onto the one patch that
-            // best imitates the other exemplar's colours (rows of repeated blobs).
-            let f: &[f32] = if weight > 0.0 && weight < 1.0 {
+            // best imitates the other exemplar's colours (rows of repeated blobs). At
+            // weight 0 it is synthesized against its own choices alone, so that where it
+            // fades in it is already a texture of its own, not one long verbatim copy.
+            let f: &[f32] = if weight < 1.0 {
                 self.own_feature(src, e, shape, x, y, own);
                 for (o, m) in own.iter_mut().zip(f.iter()) {
                     *o = weight * m + (1.0 - weight) * *o;
@@ -437,11 +439,7 @@ impl Pass<'_> {
             } else {
                 f
             };
-            let best = if weight <= 0.0 && !self.exhaustive {
-                // Not visible here: keep a coherent source so neighbours can continue it.
-                self.coherent_candidates(src, e, shape, x, y, img, rng, cands);
-                cands[0].0
-            } else if self.exhaustive {
+            let best = if self.exhaustive {
                 let mut best = (f32::INFINITY, 0u32);
                 for pos in 0..img.data.len() {
                     let d = distance(ex, level, pos, shape, off, f, best.0);

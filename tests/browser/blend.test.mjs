@@ -107,3 +107,27 @@ test('a file that is not an image gets a clear message', async () => {
   await page.setInputFiles('#slot-a input[type=file]', { name: 'notes.png', mimeType: 'image/png', buffer: Buffer.from('hello') });
   await page.waitForFunction(() => /not an image/.test(document.querySelector('#blend-messages').textContent));
 });
+
+test('an opened texture and the painted mask survive a reload', async () => {
+  // A 40x30 PNG made by the package itself: two colour halves.
+  const data = new Uint8ClampedArray(40 * 30 * 4);
+  for (let i = 0; i < 40 * 30; i++) data.set(i % 40 < 20 ? [200, 40, 40, 255] : [40, 40, 200, 255], 4 * i);
+  const { encodePng } = await import('../../pkg/node.js');
+  const png = Buffer.from(encodePng({ width: 40, height: 30, data }));
+  await page.setInputFiles('#slot-b input[type=file]', { name: 'halves.png', mimeType: 'image/png', buffer: png });
+  await page.waitForFunction(() => document.querySelector('#slot-b canvas').width === 40);
+  await page.reload();
+  await page.click('[data-tab="blend"]');
+  await page.waitForFunction(() => document.querySelector('#slot-b canvas').width === 40 && document.querySelector('#slot-a canvas').width === 128);
+  const [left, right] = await page.evaluate(() => {
+    const ctx = document.querySelector('#slot-b canvas').getContext('2d');
+    return [[...ctx.getImageData(5, 15, 1, 1).data], [...ctx.getImageData(35, 15, 1, 1).data]];
+  });
+  assert.deepEqual(left.slice(0, 3), [200, 40, 40]);
+  assert.deepEqual(right.slice(0, 3), [40, 40, 200]);
+  assert.equal(await page.inputValue('#blend-transition'), 'mask');
+  // Picking a built-in again forgets the kept file.
+  await page.selectOption('#slot-b select', 'grass');
+  await page.waitForFunction(() => document.querySelector('#slot-b canvas').width === 128);
+  assert.equal(await page.evaluate(() => localStorage.getItem('patternsynth.blend.exemplar.v1.b')), null);
+});

@@ -9,10 +9,20 @@ export function load(key, fallback) {
   }
 }
 
+/** Stores `value`; false when storage is full or disabled (the work stays in memory). */
 export function store(key, value) {
   try {
     localStorage.setItem(key, JSON.stringify(value));
+    return true;
   } catch {
-    // Storage full or disabled: keep working in memory.
+    return false;
+  }
+}
+
+export function forget(key) {
+  try {
+    localStorage.removeItem(key);
+  } catch {
+    // Disabled storage holds nothing to forget.
   }
 }

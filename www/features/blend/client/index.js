@@ -1,7 +1,7 @@
 // Blend tab: two exemplars (built-in photographs, files, drag and drop), a transition or
 // a painted mask, synthesis in the worker with progress and cancel, PNG download.
-import { defaultOptions, maskKey, maxExemplarSide, maxOutputSide, storageKey, textures } from '../shared/meta.js';
-import { load, store } from '../../../shared/storage.js';
+import { defaultOptions, exemplarKey, maskKey, maxExemplarSide, maxOutputSide, storageKey, textures } from '../shared/meta.js';
+import { forget, load, store } from '../../../shared/storage.js';
 
 /** The coefficient transfers, as the engine defines them (mu of A in [0, 1]). */
 const TRANSFER = {
@@ -51,6 +51,7 @@ export function mountBlend(root, client) {
       if (!slot.select.value) return;
       settings[key] = slot.select.value;
       save();
+      forget(`${exemplarKey}.${key}`);
       await loadBuiltin(key, slot.select.value);
     });
     fig.querySelector('input[type=file]').addEventListener('change', async (e) => {
@@ -109,7 +110,25 @@ export function mountBlend(root, client) {
     }
     setSlot(key, rgbaOf(bitmap, file.name));
     slots[key].select.value = '';
-    say(`Loaded ${file.name} as texture ${key.toUpperCase()}.`);
+    settings[key] = '';
+    save();
+    // Kept across reloads like everything else the person made.
+    const kept = store(`${exemplarKey}.${key}`, { name: file.name, url: slots[key].canvas.toDataURL('image/png') });
+    say(`Loaded ${file.name} as texture ${key.toUpperCase()}.${kept ? '' : ' (Browser storage is full: it will not survive a reload.)'}`, kept ? '' : 'warn');
+  }
+
+  /** A texture kept from an earlier visit; false when there is none. */
+  async function loadKept(key) {
+    const kept = load(`${exemplarKey}.${key}`, null);
+    if (!kept) return false;
+    try {
+      const blob = await (await fetch(kept.url)).blob();
+      setSlot(key, rgbaOf(await createImageBitmap(blob), kept.name));
+      return true;
+    } catch {
+      forget(`${exemplarKey}.${key}`);
+      return false;
+    }
   }
 
   // --- settings ---
@@ -282,8 +301,9 @@ export function mountBlend(root, client) {
     img.onload = () => mctx.drawImage(img, 0, 0, mask.width, mask.height);
     img.src = savedMask;
   } else drawShape();
-  slots.a.select.value = settings.a;
-  slots.b.select.value = settings.b;
-  loadBuiltin('a', settings.a || 'wood');
-  loadBuiltin('b', settings.b || 'gravel');
+  for (const [key, fallback] of [['a', 'wood'], ['b', 'gravel']]) {
+    slots[key].select.value = settings[key];
+    if (settings[key]) loadBuiltin(key, settings[key]);
+    else loadKept(key).then((ok) => ok || loadBuiltin(key, fallback));
+  }
 }

@@ -26,3 +26,5 @@ export const maxOutputSide = 2048;
 
 export const storageKey = 'patternsynth.blend.settings.v1';
 export const maskKey = 'patternsynth.blend.mask.v1';
+/** A texture the person opened or dropped, kept as a PNG data URL: `${exemplarKey}.a`. */
+export const exemplarKey = 'patternsynth.blend.exemplar.v1';
