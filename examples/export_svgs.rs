@@ -1,8 +1,10 @@
 //! Writes the synthesized SVG of every exemplar family (and an irregular example) to
-//! out/, to look at: `cargo run --release --example export_svgs`.
+//! out/, with each family's seamless tile (`<name>-tile.svg`), to look at:
+//! `cargo run --release --example export_svgs`, then e.g.
+//! `node scripts/render-svg.mjs --tile out/tiles.png out/*-tile.svg`.
 use patternsynth::vector::exemplar::families;
 use patternsynth::vector::svg_export::to_svg;
-use patternsynth::vector::{synthesize_strokes, Rgb, Stroke, StrokeOptions};
+use patternsynth::vector::{stroke_tile, synthesize_strokes, Rgb, Stroke, StrokeOptions, TileOptions};
 use patternsynth::Silent;
 
 fn main() -> std::io::Result<()> {
@@ -27,6 +29,9 @@ fn main() -> std::io::Result<()> {
         )
         .expect("synthesis");
         std::fs::write(format!("out/{name}.svg"), &r.svg)?;
+        if let Ok(t) = stroke_tile(&strokes, &TileOptions { repeats: 2, ..Default::default() }) {
+            std::fs::write(format!("out/{name}-tile.svg"), &t.svg)?;
+        }
         std::fs::write(format!("out/{name}-example.svg"), to_svg(&strokes, 480.0, 400.0))?;
     }
     Ok(())

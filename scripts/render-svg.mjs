@@ -1,13 +1,22 @@
 // Renders SVG files to PNG in headless Chromium, side by side: to look at outputs.
-// Usage: node scripts/render-svg.mjs out.png a.svg b.svg ...
+// Usage: node scripts/render-svg.mjs [--tile] out.png a.svg b.svg ...
+// --tile: each SVG repeats as a CSS background over a 400x400 box, at twice its size.
 import { chromium } from 'playwright-core';
 import { readFileSync } from 'node:fs';
 import { CHROMIUM } from '../tests/browser/chromium.mjs';
 
-const [outPng, ...files] = process.argv.slice(2);
+const args = process.argv.slice(2);
+const tile = args[0] === '--tile';
+const [outPng, ...files] = tile ? args.slice(1) : args;
 const browser = await chromium.launch(CHROMIUM);
 const page = await browser.newPage({ viewport: { width: 1000, height: 800 } });
-const cells = files.map((f) => `<figure><figcaption>${f}</figcaption>${readFileSync(f, 'utf8')}</figure>`).join('');
+const background = (f) => {
+  const svg = readFileSync(f, 'utf8');
+  const [, w, h] = svg.match(/width="([\d.]+)" height="([\d.]+)"/);
+  const url = `data:image/svg+xml;base64,${Buffer.from(svg).toString('base64')}`;
+  return `<div style="width:400px;height:400px;background:url(${url}) 0 0/${2 * w}px ${2 * h}px repeat"></div>`;
+};
+const cells = files.map((f) => `<figure><figcaption>${f}</figcaption>${tile ? background(f) : readFileSync(f, 'utf8')}</figure>`).join('');
 await page.setContent(`<style>body{margin:0;display:flex;flex-wrap:wrap;font:12px sans-serif;background:#fff}
   figure{margin:4px;border:1px solid #ccc} svg{width:480px;height:400px;display:block}</style>${cells}`);
 await page.screenshot({ path: outPng, fullPage: true });

@@ -734,6 +734,13 @@ impl<'r, 'a> Target<'r, 'a> {
     }
 }
 
+/// The lattice fitted to `elems` (see `lattice`), or `None` when they are not periodic
+/// enough; an error for input with no spacing at all.
+pub fn fit_lattice(elems: &[Element]) -> Result<Option<lattice::LatticeFit>> {
+    let r = Reference::new(elems)?;
+    Ok(lattice::fit(elems, &r.grid, &r.pair_radius, r.spacing, r.window_radius))
+}
+
 /// Grows the reference `elems` over a `width x height` area.
 pub fn grow(elems: &[Element], opts: &GrowOptions, progress: &mut Throttle) -> Result<(Vec<Placed>, GrowStats)> {
     let raw_elems = elems;
