@@ -52,6 +52,20 @@ export interface BlendOptions extends TextureOptions {
   /** Transfer applied to 'radial' or an angled ramp. */
   transfer?: Transition;
 }
+export interface TileOptions extends ClassifyOptions {
+  variation?: boolean; seed?: number;
+  /** The tile spans this many smallest repeats across and down (1 to 8, default 1). */
+  repeats?: number;
+}
+export interface TileResult {
+  /** In tile coordinates; strokes cut by an edge appear again one period over. */
+  strokes: Stroke[]; classes: number[]; width: number; height: number;
+  /** The tile's exact lattice periods. */
+  periods: [[number, number], [number, number]];
+  sites: number; classification: Classification;
+  /** width x height, repeats without seams as a CSS background. */
+  svg: string;
+}
 export interface StrokeResult {
   strokes: Stroke[]; classes: number[]; sources: number[]; classification: Classification; svg: string;
   growingPoints: number; skippedFull: number; passedOver: number;
@@ -344,6 +358,17 @@ pub fn blend_textures(
     let opts = raster::BlendOptions { base, coefficient };
     let out = raster::blend_textures(&a, &b, &opts, &mut JsProgress(on_progress)).map_err(js_error)?;
     Ok(rgba_to_js(out.width, out.height, &out.data))
+}
+
+/// A seamless SVG tile of the strokes' repeat (SPEC 1.4): repeats as a CSS background.
+#[wasm_bindgen(js_name = strokeTile, unchecked_return_type = "TileResult")]
+pub fn stroke_tile(
+    #[wasm_bindgen(unchecked_param_type = "Stroke[]")] strokes: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "TileOptions")] opts: JsValue,
+) -> Result<JsValue, JsValue> {
+    let strokes = strokes_from_js(strokes)?;
+    let opts: vector::TileOptions = from_js(opts, "tile options")?;
+    to_js(&vector::stroke_tile(&strokes, &opts).map_err(js_error)?)
 }
 
 /// Decodes PNG or JPEG bytes to RGBA.

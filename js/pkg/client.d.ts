@@ -1,5 +1,5 @@
 import type {
-  Stroke, StrokeOptions, StrokeResult, ParseSvgOptions, SvgImport, Classification, ClassifyOptions,
+  Stroke, StrokeOptions, StrokeResult, TileOptions, TileResult, ParseSvgOptions, SvgImport, Classification, ClassifyOptions,
   Rgba, TextureOptions, BlendOptions,
 } from './patternsynth.js';
 
@@ -16,6 +16,7 @@ export class PatternSynthClient {
   parseSvgReport(svg: string, opts?: ParseSvgOptions, options?: CallOptions): Promise<SvgImport>;
   classifyStrokes(strokes: Stroke[], opts?: ClassifyOptions, options?: CallOptions): Promise<Classification>;
   synthesizeStrokes(strokes: Stroke[], opts: StrokeOptions, options?: CallOptions): Promise<StrokeResult>;
+  strokeTile(strokes: Stroke[], opts?: TileOptions, options?: CallOptions): Promise<TileResult>;
   exampleStrokes(options?: CallOptions): Promise<{ name: string; strokes: Stroke[] }[]>;
   synthesizeTexture(image: Rgba, opts: TextureOptions, options?: CallOptions): Promise<Rgba>;
   blendTextures(a: Rgba, b: Rgba, opts: BlendOptions, options?: CallOptions): Promise<Rgba>;

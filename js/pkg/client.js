@@ -23,6 +23,7 @@ export class PatternSynthClient {
   parseSvgReport(svg, opts, options) { return this.run('parseSvgReport', [svg, opts], options); }
   classifyStrokes(strokes, opts, options) { return this.run('classifyStrokes', [strokes, opts], options); }
   synthesizeStrokes(strokes, opts, options) { return this.run('synthesizeStrokes', [strokes, opts], options); }
+  strokeTile(strokes, opts, options) { return this.run('strokeTile', [strokes, opts], options); }
   exampleStrokes(options) { return this.run('exampleStrokes', [], options); }
   synthesizeTexture(image, opts, options) { return this.run('synthesizeTexture', [image, opts], options); }
   blendTextures(a, b, opts, options) { return this.run('blendTextures', [a, b, opts], options); }

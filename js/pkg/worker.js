@@ -9,7 +9,7 @@ import init, * as api from './patternsynth.js';
 
 const ready = init();
 const METHODS = new Set([
-  'parseSvg', 'parseSvgReport', 'classifyStrokes', 'synthesizeStrokes', 'exampleStrokes', 'version',
+  'parseSvg', 'parseSvgReport', 'classifyStrokes', 'synthesizeStrokes', 'strokeTile', 'exampleStrokes', 'version',
   'synthesizeTexture', 'blendTextures', 'decodeImage', 'encodePng',
 ]);
 const WITH_PROGRESS = new Set(['synthesizeStrokes', 'synthesizeTexture', 'blendTextures']);

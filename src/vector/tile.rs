@@ -231,7 +231,8 @@ pub fn stroke_tile(strokes: &[Stroke], opts: &TileOptions) -> Result<TileResult>
         classes,
         width,
         height,
-        periods: [[a2.x, a2.y], [b2.x, b2.y]],
+        // (+ 0.0 turns -0 into 0.)
+        periods: [[a2.x + 0.0, a2.y + 0.0], [b2.x + 0.0, b2.y + 0.0]],
         sites,
         classification,
         svg,

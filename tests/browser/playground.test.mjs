@@ -122,3 +122,23 @@ test('reloading keeps the drawing', async () => {
   await page.reload();
   await page.waitForFunction(() => document.querySelector('#stroke-count').textContent === '20 strokes');
 });
+
+test('a seamless tile of the drawn grid: one period of it, shown 3x3, downloadable', async () => {
+  await page.selectOption('#tile-repeats', '2');
+  await page.click('#make-tile');
+  await page.waitForFunction(() => document.querySelector('#messages').textContent === 'Tile ready.', null, { timeout: 30000 });
+  const [download] = await Promise.all([page.waitForEvent('download'), page.click('#tile-download')]);
+  assert.equal(download.suggestedFilename(), 'tile.svg');
+  const svg = readFileSync(await download.path(), 'utf8');
+  const [, w, h] = svg.match(/width="([\d.]+)" height="([\d.]+)"/).map(Number);
+  // Two drawn spacings each way, within the hand-drawn jitter of the pointer.
+  assert.ok(Math.abs(w - 2 * SPACING) < 0.05 * SPACING && Math.abs(h - 2 * SPACING) < 0.05 * SPACING, `${w} x ${h}`);
+  const strokes = parseSvg(svg);
+  assert.ok(strokes.length >= 4, `${strokes.length} strokes`);
+  assert.match(await page.textContent('#tile-info'), /4 elements/);
+  // The preview repeats it: three tiles across.
+  const box = await page.locator('#tile-preview').boundingBox();
+  const size = await page.evaluate(() => document.querySelector('#tile-preview').style.backgroundSize);
+  assert.ok(Math.abs(box.width - 3 * parseFloat(size)) < 2, `${box.width} vs ${size}`);
+  await page.locator('#tab-strokes .settings').screenshot({ path: 'out/tile.png' });
+});

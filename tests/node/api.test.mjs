@@ -29,6 +29,17 @@ test('synthesizeStrokes returns strokes, classes and valid SVG', () => {
   assert.equal(ps.parseSvg(r.svg).length, r.strokes.length);
 });
 
+test('strokeTile returns a seamless tile of the drawing\'s repeat', () => {
+  const t = ps.strokeTile(grid(), { repeats: 3, seed: 2 });
+  assert.ok(Math.abs(t.width - 90) < 1e-6 && Math.abs(t.height - 90) < 1e-6, `${t.width} x ${t.height}`);
+  assert.equal(t.sites, 9);
+  assert.match(t.svg, /width="90" height="90" viewBox="0 0 90 90"/);
+  assert.equal(ps.parseSvg(t.svg).length, t.strokes.length);
+  assert.deepEqual(t.periods.map((p) => p.map((v) => Math.round(v))), [[30, 0], [0, 30]]);
+  assert.throws(() => ps.strokeTile(grid(), { repeat: 2 }), /unknown option `repeat`/);
+  assert.throws(() => ps.strokeTile([grid()[0], { points: [[90, 10], [95, 12]], width: 1 }], {}), /regular repeat/);
+});
+
 test('returning false from the progress callback cancels', () => {
   assert.throws(() => ps.synthesizeStrokes(grid(), { width: 3000, height: 3000 }, () => false), /Cancelled/);
 });

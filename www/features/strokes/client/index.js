@@ -49,6 +49,7 @@ export function mountStrokes(root, client) {
   bind('variation', 'variation', Boolean, 'checked');
   bind('regularize', 'regularize', Boolean, 'checked');
   bind('seed', 'seed', Number);
+  bind('tile-repeats', 'tileRepeats', Number);
   for (const [key, id] of [['pathTolerance', 'path'], ['widthTolerance', 'width'], ['colorTolerance', 'color']]) {
     const input = $(`tol-${id}`), auto = $(`auto-${id}`);
     auto.checked = settings[key] === null || settings[key] === undefined;
@@ -206,6 +207,38 @@ export function mountStrokes(root, client) {
     }
   });
   $('cancel').addEventListener('click', () => runAbort?.abort());
+
+  // --- seamless tile ---
+  let tileUrl = null;
+  $('make-tile').addEventListener('click', async () => {
+    $('make-tile').disabled = true;
+    try {
+      const opts = { variation: settings.variation, seed: Number(settings.seed) || 0, repeats: Number(settings.tileRepeats) || 1, ...tolerances() };
+      const t = await client.strokeTile(drawing.strokes, opts);
+      if (tileUrl) URL.revokeObjectURL(tileUrl);
+      tileUrl = URL.createObjectURL(new Blob([t.svg], { type: 'image/svg+xml' }));
+      // Shown 3 x 3, scaled to the column (at most 4x); one tile outlined.
+      const preview = $('tile-preview');
+      const k = Math.min(4, (preview.parentElement.clientWidth - 24) / (3 * t.width));
+      const [w, h] = [t.width * k, t.height * k];
+      Object.assign(preview.style, { backgroundImage: `url("${tileUrl}")`, backgroundSize: `${w}px ${h}px`, width: `${3 * w}px`, height: `${3 * h}px` });
+      const one = document.createElement('div');
+      one.className = 'one';
+      Object.assign(one.style, { width: `${w}px`, height: `${h}px` });
+      preview.replaceChildren(one);
+      preview.classList.add('shown');
+      const dl = $('tile-download');
+      dl.href = tileUrl;
+      dl.classList.remove('disabled');
+      dl.removeAttribute('aria-disabled');
+      $('tile-info').textContent = `${+t.width.toFixed(2)}×${+t.height.toFixed(2)} tile, ${t.sites} elements (${t.strokes.length} strokes with the edge copies), shown 3×3.`;
+      say('Tile ready.');
+    } catch (e) {
+      say(e.message, 'error');
+    } finally {
+      $('make-tile').disabled = false;
+    }
+  });
 
   // --- start: the saved drawing, or an example so the page does something at once ---
   const saved = load(storageKey, null);

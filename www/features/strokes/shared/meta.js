@@ -11,6 +11,8 @@ export const defaultOptions = {
   variation: true,
   regularize: true,
   seed: 1,
+  /** Smallest repeats per side of a seamless tile. */
+  tileRepeats: 2,
 };
 
 /** Drawing tool defaults. */
