@@ -3,6 +3,7 @@
 //! Engines are plain Rust with no browser types:
 //! - [`vector`]: near-regular vector patterns grown from a few example strokes.
 //! - [`raster`]: texture synthesis and two-exemplar blending (Wei-Levoy).
+//! - [`seamless`]: seamless colour tiles (E-TFMCM, and toroidal synthesis).
 //!
 //! The `wasm` module (wasm32 only) is the thin JS binding over them.
 
@@ -10,6 +11,7 @@ pub mod error;
 pub mod progress;
 pub mod raster;
 pub mod rng;
+pub mod seamless;
 pub mod vector;
 
 #[cfg(target_arch = "wasm32")]

@@ -1,0 +1,48 @@
+//! Seamless tiles of the four photographs by each method: time (median of 3), the
+//! paper's restoration rate, the seam score and E-TFMCM's decisions, as JSON lines;
+//! each tile also saved repeated 2 x 2 in out/seamless/ to look at the seams.
+//! `cargo run --release --example bench_seamless [size]`
+use patternsynth::raster::codec::{decode_image, encode_png};
+use patternsynth::seamless::{seamless_tile, Method, SeamlessOptions};
+use patternsynth::Silent;
+use std::time::Instant;
+
+fn main() {
+    let size: Option<usize> = std::env::args().nth(1).and_then(|s| s.parse().ok());
+    std::fs::create_dir_all("out/seamless").unwrap();
+    for name in ["wood", "brick", "grass", "gravel"] {
+        let img = decode_image(&std::fs::read(format!("tests/fixtures/textures/{name}.png")).unwrap()).unwrap();
+        for method in [Method::Etfmcm, Method::Tfmcm, Method::Synthesis] {
+            let opts = SeamlessOptions { method, size, seed: 1, ..Default::default() };
+            let mut times = Vec::new();
+            let mut last = None;
+            for _ in 0..3 {
+                let t = Instant::now();
+                last = Some(seamless_tile(&img, &opts, &mut Silent).unwrap());
+                times.push(t.elapsed().as_secs_f64() * 1e3);
+            }
+            times.sort_by(|a, b| a.total_cmp(b));
+            let r = last.unwrap();
+            let n = r.image.width;
+            // 2 x 2 repeat: the seams cross the middle.
+            let mut rep = vec![0u8; 4 * n * n * 4];
+            for y in 0..2 * n {
+                for x in 0..2 * n {
+                    let s = ((y % n) * n + x % n) * 4;
+                    rep[(y * 2 * n + x) * 4..][..4].copy_from_slice(&r.image.data[s..s + 4]);
+                }
+            }
+            let m = format!("{method:?}").to_lowercase();
+            std::fs::write(format!("out/seamless/{name}-{m}.png"), encode_png(2 * n, 2 * n, &rep).unwrap()).unwrap();
+            println!(
+                "{{\"exemplar\":\"{name}\",\"method\":\"{m}\",\"size\":{n},\"ms\":{:.1},\"restoration\":{:.4},\"seam\":{:.3},\"channel\":{:?},\"count_difference\":{:?},\"decisions\":{}}}",
+                times[1],
+                r.restoration_rate,
+                r.seam_score,
+                r.channel.map(String::from).unwrap_or_default(),
+                r.count_difference.map(|(a, b)| format!("{a:.0}->{b:.0}")).unwrap_or_default(),
+                r.decisions.map(|d| format!("{{\"j3\":{:?},\"pairwise\":{},\"mean\":{}}}", d.by_j3, d.pairwise, d.mean)).unwrap_or("null".into())
+            );
+        }
+    }
+}

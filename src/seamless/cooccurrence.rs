@@ -1,0 +1,134 @@
+//! Co-occurrence statistics of a grey exemplar (SPEC 3.2, 3.3).
+//!
+//! `C(i, j; dx, dy)` counts the exemplar positions `(x, y)` with `V(x, y) = i` and
+//! `V(x + dx, y + dy) = j`, both inside the exemplar (not toroidal). Tables are built
+//! on first use, one per offset (256 x 256 counts).
+//!
+//! The multi-distance matrix asks, for one side `(P_a, P_b)` of a square and its apex
+//! (the centre), which apex values `k` occur in the exemplar with `(V_a, V_b)` at the
+//! side: `E_side(k) > 0`. `Triples` holds, for one side's offsets, the sorted distinct
+//! `(V_a, V_b, k)` found in the exemplar, so that the set of `k` for a pair is a binary
+//! search away (memory: at most one `u32` per exemplar pixel and side).
+
+use std::collections::HashMap;
+
+/// A grey image, row major.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Grey {
+    pub width: usize,
+    pub height: usize,
+    pub data: Vec<u8>,
+}
+
+impl Grey {
+    /// The value at `(x + dx, y + dy)` if inside.
+    #[inline]
+    fn at(&self, x: usize, y: usize, dx: isize, dy: isize) -> Option<u8> {
+        let (xx, yy) = (x as isize + dx, y as isize + dy);
+        if xx < 0 || yy < 0 || xx >= self.width as isize || yy >= self.height as isize {
+            return None;
+        }
+        Some(self.data[yy as usize * self.width + xx as usize])
+    }
+
+    /// Pixel count per grey level.
+    pub fn histogram(&self) -> [u32; 256] {
+        let mut h = [0u32; 256];
+        for &v in &self.data {
+            h[v as usize] += 1;
+        }
+        h
+    }
+}
+
+/// Pairwise tables, built per offset on first use.
+pub struct Pairs<'a> {
+    img: &'a Grey,
+    tables: HashMap<(isize, isize), Vec<u32>>,
+}
+
+impl<'a> Pairs<'a> {
+    pub fn new(img: &'a Grey) -> Self {
+        Pairs { img, tables: HashMap::new() }
+    }
+
+    /// The table of `C(i, j; dx, dy)`, indexed `i * 256 + j`.
+    pub fn table(&mut self, dx: isize, dy: isize) -> &[u32] {
+        let img = self.img;
+        self.tables.entry((dx, dy)).or_insert_with(|| {
+            let mut t = vec![0u32; 256 * 256];
+            for y in 0..img.height {
+                for x in 0..img.width {
+                    if let Some(j) = img.at(x, y, dx, dy) {
+                        t[img.data[y * img.width + x] as usize * 256 + j as usize] += 1;
+                    }
+                }
+            }
+            t
+        })
+    }
+}
+
+/// The distinct `(V_a, V_b, k)` of one side: vertices at offsets `a` and `b` from the
+/// apex.
+pub struct Triples {
+    keys: Vec<u32>,
+}
+
+impl Triples {
+    pub fn build(img: &Grey, a: (isize, isize), b: (isize, isize)) -> Self {
+        let mut keys = Vec::with_capacity(img.data.len());
+        for y in 0..img.height {
+            for x in 0..img.width {
+                if let (Some(va), Some(vb)) = (img.at(x, y, a.0, a.1), img.at(x, y, b.0, b.1)) {
+                    let k = img.data[y * img.width + x];
+                    keys.push((va as u32) << 16 | (vb as u32) << 8 | k as u32);
+                }
+            }
+        }
+        keys.sort_unstable();
+        keys.dedup();
+        keys.shrink_to_fit();
+        Triples { keys }
+    }
+
+    /// Calls `f(k)` for every apex value seen with `(va, vb)` at this side.
+    pub fn for_each_apex(&self, va: u8, vb: u8, mut f: impl FnMut(u8)) {
+        let lo = (va as u32) << 16 | (vb as u32) << 8;
+        let start = self.keys.partition_point(|&k| k < lo);
+        for &k in self.keys[start..].iter().take_while(|&&k| k < lo + 256) {
+            f(k as u8);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn counts_pairs_inside_the_image_only() {
+        // 0 1
+        // 2 3
+        let img = Grey { width: 2, height: 2, data: vec![0, 1, 2, 3] };
+        let mut p = Pairs::new(&img);
+        let t = p.table(1, 0);
+        assert_eq!((t[1], t[2 * 256 + 3], t[256]), (1, 1, 0));
+        assert_eq!(t.iter().sum::<u32>(), 2);
+        let t = p.table(-1, 1);
+        assert_eq!((t[256 + 2], t.iter().sum::<u32>()), (1, 1));
+    }
+
+    #[test]
+    fn triples_list_the_apex_values_of_a_side() {
+        // A 3x3 with apex at the centre, vertices left and up.
+        let img = Grey { width: 3, height: 3, data: vec![5, 6, 7, 8, 9, 10, 11, 12, 13] };
+        let t = Triples::build(&img, (-1, 0), (0, -1));
+        let mut seen = Vec::new();
+        t.for_each_apex(8, 6, |k| seen.push(k));
+        assert_eq!(seen, vec![9]);
+        seen.clear();
+        t.for_each_apex(6, 8, |k| seen.push(k));
+        assert!(seen.is_empty());
+    }
+}
