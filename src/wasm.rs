@@ -5,6 +5,7 @@
 use crate::error::Error;
 use crate::progress::Progress;
 use crate::raster::{self, coefficient::Transfer, Coefficient, Image};
+use crate::seamless;
 use crate::vector;
 use serde::de::DeserializeOwned;
 use serde::Serialize;
@@ -65,6 +66,27 @@ export interface TileResult {
   sites: number; classification: Classification;
   /** width x height, repeats without seams as a CSS background. */
   svg: string;
+}
+export interface SeamlessOptions {
+  /** 'etfmcm' (the paper, default), 'tfmcm' (its predecessor) or 'synthesis' (toroidal
+   *  neighbourhood synthesis: keeps structure). */
+  method?: 'etfmcm' | 'tfmcm' | 'synthesis';
+  /** Tile side, a power of two from 8 to 512 (default: the largest the image allows). */
+  size?: number; seed?: number;
+  /** T0 of the density conversion (default 50). */
+  maxCountDifference?: number;
+}
+export interface SeamlessResult {
+  image: Rgba;
+  /** The paper's restoration rate: 1 is the exemplar's colour histogram exactly. */
+  restorationRate: number;
+  /** Wrap-around difference over neighbouring-pixel difference: about 1 is seamless. */
+  seamScore: number;
+  /** What was done to make the input square and a power of two. */
+  warnings: string[];
+  channel: 'r' | 'g' | 'b' | null;
+  countDifference: [number, number] | null;
+  decisions: { byJ3: number[]; pairwise: number; mean: number } | null;
 }
 export interface StrokeResult {
   strokes: Stroke[]; classes: number[]; sources: number[]; classification: Classification; svg: string;
@@ -369,6 +391,23 @@ pub fn stroke_tile(
     let strokes = strokes_from_js(strokes)?;
     let opts: vector::TileOptions = from_js(opts, "tile options")?;
     to_js(&vector::stroke_tile(&strokes, &opts).map_err(js_error)?)
+}
+
+/// A seamless tile (SPEC 3): E-TFMCM, TFMCM or toroidal synthesis.
+#[wasm_bindgen(js_name = seamlessTile, unchecked_return_type = "SeamlessResult")]
+pub fn seamless_tile(
+    #[wasm_bindgen(unchecked_param_type = "Rgba")] image: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "SeamlessOptions")] opts: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "Progress")] on_progress: Option<js_sys::Function>,
+) -> Result<JsValue, JsValue> {
+    let (width, height, data) = rgba_from_js(&image, "image")?;
+    let opts: seamless::SeamlessOptions = from_js(opts, "seamless tile options")?;
+    let input = raster::Rgba { width, height, data };
+    let res = seamless::seamless_tile(&input, &opts, &mut JsProgress(on_progress)).map_err(js_error)?;
+    let out = to_js(&res)?;
+    let image = rgba_to_js(res.image.width, res.image.height, &res.image.data);
+    let _ = js_sys::Reflect::set(&out, &JsValue::from_str("image"), &image);
+    Ok(out)
 }
 
 /// Decodes PNG or JPEG bytes to RGBA.

@@ -2,11 +2,12 @@
 import { PatternSynthClient } from './pkg/client.js';
 import { mountStrokes } from './features/strokes/client/index.js';
 import { mountBlend } from './features/blend/client/index.js';
+import { mountSeamless } from './features/seamless/client/index.js';
 
 const client = new PatternSynthClient(new URL('./pkg/worker.js', import.meta.url));
 window.patternsynth = client; // handy from the console and for tests
 
-const features = { strokes: mountStrokes, blend: mountBlend };
+const features = { strokes: mountStrokes, blend: mountBlend, seamless: mountSeamless };
 for (const section of document.querySelectorAll('[data-feature]')) {
   features[section.dataset.feature]?.(section, client);
 }

@@ -1,6 +1,6 @@
 import type {
   Stroke, StrokeOptions, StrokeResult, TileOptions, TileResult, ParseSvgOptions, SvgImport, Classification, ClassifyOptions,
-  Rgba, TextureOptions, BlendOptions,
+  Rgba, TextureOptions, BlendOptions, SeamlessOptions, SeamlessResult,
 } from './patternsynth.js';
 
 export interface CallOptions {
@@ -20,6 +20,7 @@ export class PatternSynthClient {
   exampleStrokes(options?: CallOptions): Promise<{ name: string; strokes: Stroke[] }[]>;
   synthesizeTexture(image: Rgba, opts: TextureOptions, options?: CallOptions): Promise<Rgba>;
   blendTextures(a: Rgba, b: Rgba, opts: BlendOptions, options?: CallOptions): Promise<Rgba>;
+  seamlessTile(image: Rgba, opts?: SeamlessOptions, options?: CallOptions): Promise<SeamlessResult>;
   decodeImage(bytes: Uint8Array, options?: CallOptions): Promise<Rgba>;
   encodePng(image: Rgba, options?: CallOptions): Promise<Uint8Array>;
   version(): Promise<string>;

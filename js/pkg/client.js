@@ -27,6 +27,7 @@ export class PatternSynthClient {
   exampleStrokes(options) { return this.run('exampleStrokes', [], options); }
   synthesizeTexture(image, opts, options) { return this.run('synthesizeTexture', [image, opts], options); }
   blendTextures(a, b, opts, options) { return this.run('blendTextures', [a, b, opts], options); }
+  seamlessTile(image, opts, options) { return this.run('seamlessTile', [image, opts], options); }
   decodeImage(bytes, options) { return this.run('decodeImage', [bytes], options); }
   encodePng(image, options) { return this.run('encodePng', [image], options); }
   version() { return this.run('version', []); }

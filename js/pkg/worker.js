@@ -10,12 +10,16 @@ import init, * as api from './patternsynth.js';
 const ready = init();
 const METHODS = new Set([
   'parseSvg', 'parseSvgReport', 'classifyStrokes', 'synthesizeStrokes', 'strokeTile', 'exampleStrokes', 'version',
-  'synthesizeTexture', 'blendTextures', 'decodeImage', 'encodePng',
+  'synthesizeTexture', 'blendTextures', 'seamlessTile', 'decodeImage', 'encodePng',
 ]);
-const WITH_PROGRESS = new Set(['synthesizeStrokes', 'synthesizeTexture', 'blendTextures']);
+const WITH_PROGRESS = new Set(['synthesizeStrokes', 'synthesizeTexture', 'blendTextures', 'seamlessTile']);
 
 // Pixel buffers go back by transfer, not by copy.
-const transferables = (r) => (r instanceof Uint8Array ? [r.buffer] : r?.data?.buffer instanceof ArrayBuffer ? [r.data.buffer] : []);
+const transferables = (r) => {
+  const image = r?.image ?? r;
+  if (r instanceof Uint8Array) return [r.buffer];
+  return image?.data?.buffer instanceof ArrayBuffer ? [image.data.buffer] : [];
+};
 
 self.onmessage = async ({ data }) => {
   const { id, method, args = [] } = data;

@@ -72,3 +72,25 @@ test('bad images and options throw clear Errors', () => {
   for (const [fn, want] of cases) assert.throws(fn, (e) => e instanceof Error && want.test(e.message), String(want));
   assert.throws(() => ps.synthesizeTexture(a, { width: 200, height: 200 }, () => false), /Cancelled/);
 });
+
+test('seamlessTile: E-TFMCM and synthesis tiles with their figures, clear errors', () => {
+  const img = crop(load('brick'), 64);
+  const seen = [];
+  const e = ps.seamlessTile(img, { method: 'etfmcm', seed: 3 }, (f) => { seen.push(f); });
+  assert.equal(e.image.width, 64);
+  assert.equal(e.image.data.length, 64 * 64 * 4);
+  assert.ok(e.restorationRate > 0.75 && e.restorationRate <= 1, `${e.restorationRate}`);
+  assert.ok(e.seamScore < 1.3, `${e.seamScore}`);
+  assert.ok(['r', 'g', 'b'].includes(e.channel));
+  assert.equal(e.decisions.byJ3.reduce((a, b) => a + b) + e.decisions.pairwise + e.decisions.mean, 64 * 64 - 2);
+  assert.deepEqual(e.warnings, []);
+  assert.equal(seen.at(-1), 1);
+  const s = ps.seamlessTile(img, { method: 'synthesis', size: 32 });
+  assert.equal(s.image.width, 32);
+  assert.equal(s.channel, null);
+  assert.match(s.warnings[0], /Scaled 64x64 to 32x32/);
+  assert.throws(() => ps.seamlessTile(img, { method: 'fractal' }), /unknown variant `fractal`/);
+  assert.throws(() => ps.seamlessTile(img, { size: 48 }), /power of two/);
+  assert.throws(() => ps.seamlessTile(img, { maxCount: 3 }), /unknown option `maxCount`/);
+  assert.throws(() => ps.seamlessTile({ width: 4, height: 4, data: new Uint8Array(64) }, {}), /at least 8/);
+});

@@ -1,0 +1,91 @@
+// The Seamless tile tab end to end in headless Chromium: a built-in photograph loads,
+// E-TFMCM and toroidal synthesis make tiles in the worker, the PNG downloads and wraps
+// without a seam, a long run is cancelled, a non-square image is cropped with a
+// message. Leaves a screenshot in out/seamless.png.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { mkdirSync, readFileSync } from 'node:fs';
+import { chromium } from 'playwright-core';
+import { CHROMIUM } from './chromium.mjs';
+import { serve } from '../../scripts/static-server.mjs';
+import { decodeImage, encodePng } from '../../pkg/node.js';
+
+let server, browser, page;
+
+before(async () => {
+  server = await serve('www', 0);
+  browser = await chromium.launch(CHROMIUM);
+  const context = await browser.newContext({ acceptDownloads: true, viewport: { width: 1400, height: 1000 } });
+  page = await context.newPage();
+  page.on('pageerror', (e) => console.error('page error:', e.message));
+  await page.goto(`http://127.0.0.1:${server.address().port}/`);
+  await page.click('[data-tab="seamless"]');
+  await page.waitForFunction(() => document.querySelector('#seam-source').width === 128);
+});
+
+after(async () => {
+  await browser?.close();
+  server?.close();
+});
+
+/** Wrap-around difference over neighbouring-pixel difference (about 1: no seam). */
+function seam(img) {
+  const { width: w, height: h, data } = img;
+  const d = (i, j) => Math.abs(data[i] - data[j]) + Math.abs(data[i + 1] - data[j + 1]) + Math.abs(data[i + 2] - data[j + 2]);
+  const at = (x, y) => 4 * (y * w + x);
+  let inner = 0, n = 0, wrap = 0;
+  for (let y = 0; y < h; y++) for (let x = 0; x + 1 < w; x++) { inner += d(at(x, y), at(x + 1, y)); n++; }
+  for (let y = 0; y < h; y++) wrap += d(at(w - 1, y), at(0, y));
+  return (wrap / h) / (inner / n);
+}
+
+async function run() {
+  await page.click('#seam-run');
+  await page.waitForFunction(() => !document.querySelector('#seam-run').disabled && document.querySelector('#seam-progress').value === 1, null, { timeout: 60000 });
+}
+
+test('E-TFMCM tile of the built-in gravel: downloads, wraps without a seam', async () => {
+  await page.selectOption('#seam-method', 'etfmcm');
+  await run();
+  assert.match(await page.textContent('#seam-info'), /128×128, restoration rate \d+\.\d%/);
+  const [download] = await Promise.all([page.waitForEvent('download'), page.click('#seam-download')]);
+  assert.equal(download.suggestedFilename(), 'tile.png');
+  const img = decodeImage(readFileSync(await download.path()));
+  assert.equal(img.width, 128);
+  const s = seam(img);
+  assert.ok(s < 1.3, `seam ${s}`);
+  mkdirSync('out', { recursive: true });
+  await page.screenshot({ path: 'out/seamless.png', fullPage: true });
+});
+
+test('toroidal synthesis at 64 also wraps', async () => {
+  await page.selectOption('#seam-method', 'synthesis');
+  await page.selectOption('#seam-size', '64');
+  await run();
+  assert.match(await page.textContent('#seam-info'), /^64×64/);
+  assert.match(await page.textContent('#seam-messages'), /Scaled 128x128 to 64x64/);
+});
+
+test('a long run can be cancelled', async () => {
+  await page.selectOption('#seam-size', '512');
+  await page.click('#seam-run');
+  await page.waitForFunction(() => document.querySelector('#seam-progress').value > 0.01, null, { timeout: 30000 });
+  await page.click('#seam-cancel');
+  await page.waitForFunction(() => document.querySelector('#seam-messages').textContent === 'Cancelled.');
+  assert.equal(await page.isDisabled('#seam-run'), false);
+  await page.selectOption('#seam-size', '');
+});
+
+test('a non-square image is cropped with a message; not an image is refused', async () => {
+  const data = new Uint8ClampedArray(90 * 40 * 4);
+  for (let i = 0; i < 90 * 40; i++) data.set([(i * 37) % 256, (i * 11) % 256, 90, 255], 4 * i);
+  const png = Buffer.from(encodePng({ width: 90, height: 40, data }));
+  await page.setInputFiles('#seam-file', { name: 'wide.png', mimeType: 'image/png', buffer: png });
+  await page.waitForFunction(() => document.querySelector('#seam-source').width === 90);
+  await page.selectOption('#seam-method', 'etfmcm');
+  await run();
+  assert.match(await page.textContent('#seam-messages'), /Cropped the 90x40 image to its centre 40x40/);
+  assert.match(await page.textContent('#seam-info'), /^32×32/);
+  await page.setInputFiles('#seam-file', { name: 'notes.png', mimeType: 'image/png', buffer: Buffer.from('hello') });
+  await page.waitForFunction(() => /not an image/.test(document.querySelector('#seam-messages').textContent));
+});

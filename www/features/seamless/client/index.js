@@ -1,0 +1,152 @@
+// Seamless tile tab: pick or drop an image, choose the method, make a tile in the
+// worker (progress, cancel), judge it repeated 3x3, download PNG.
+import { defaultOptions, imageKey, maxInputSide, methods, storageKey, textures } from '../shared/meta.js';
+import { forget, load, store } from '../../../shared/storage.js';
+
+export function mountSeamless(root, client) {
+  const $ = (id) => root.querySelector(`#${id}`);
+  const settings = { ...defaultOptions, ...load(storageKey, {}) };
+  const save = () => store(storageKey, settings);
+  const say = (text, kind = '') => {
+    const p = document.createElement('p');
+    p.className = kind;
+    p.textContent = text;
+    $('seam-messages').replaceChildren(p);
+  };
+  let image = null;
+  let abort = null;
+  let resultUrl = null;
+
+  // --- the exemplar ---
+  const select = $('seam-texture');
+  select.append(new Option('Built-in…', ''), ...textures.map((t) => new Option(t, t)));
+  function show(rgba) {
+    const c = $('seam-source');
+    c.width = rgba.width;
+    c.height = rgba.height;
+    c.getContext('2d').putImageData(new ImageData(new Uint8ClampedArray(rgba.data), rgba.width, rgba.height), 0, 0);
+    image = rgba;
+    $('seam-source-info').textContent = `${rgba.width}×${rgba.height}`;
+  }
+  function rgbaOf(bitmap, name) {
+    let { width, height } = bitmap;
+    const k = Math.min(1, maxInputSide / Math.max(width, height));
+    if (k < 1) {
+      say(`${name}: scaled from ${width}×${height} to fit ${maxInputSide} px.`, 'warn');
+      width = Math.max(1, Math.round(width * k));
+      height = Math.max(1, Math.round(height * k));
+    }
+    const ctx = new OffscreenCanvas(width, height).getContext('2d');
+    ctx.drawImage(bitmap, 0, 0, width, height);
+    return { width, height, data: ctx.getImageData(0, 0, width, height).data };
+  }
+  async function loadBuiltin(name) {
+    try {
+      const blob = await (await fetch(new URL(`../../../textures/${name}.png`, import.meta.url))).blob();
+      show(rgbaOf(await createImageBitmap(blob), name));
+    } catch (e) {
+      say(`Could not load the built-in texture '${name}': ${e.message}`, 'error');
+    }
+  }
+  async function loadFile(file) {
+    let bitmap;
+    try {
+      bitmap = await createImageBitmap(file);
+    } catch {
+      return say(`${file.name} is not an image this browser can read (use PNG or JPEG).`, 'error');
+    }
+    show(rgbaOf(bitmap, file.name));
+    select.value = '';
+    settings.texture = '';
+    save();
+    const kept = store(imageKey, { name: file.name, url: $('seam-source').toDataURL('image/png') });
+    say(`Loaded ${file.name}.${kept ? '' : ' (Browser storage is full: it will not survive a reload.)'}`, kept ? '' : 'warn');
+  }
+  select.addEventListener('change', () => {
+    if (!select.value) return;
+    settings.texture = select.value;
+    save();
+    forget(imageKey);
+    loadBuiltin(select.value);
+  });
+  $('seam-file').addEventListener('change', async (e) => {
+    if (e.target.files[0]) await loadFile(e.target.files[0]);
+    e.target.value = '';
+  });
+  const drop = $('seam-drop');
+  drop.addEventListener('dragover', (e) => { e.preventDefault(); drop.classList.add('dragging'); });
+  drop.addEventListener('dragleave', () => drop.classList.remove('dragging'));
+  drop.addEventListener('drop', async (e) => {
+    e.preventDefault();
+    drop.classList.remove('dragging');
+    if (e.dataTransfer.files[0]) await loadFile(e.dataTransfer.files[0]);
+  });
+
+  // --- settings ---
+  const method = $('seam-method');
+  method.append(...methods.map(([v, l]) => new Option(l, v)));
+  for (const [id, key] of [['seam-method', 'method'], ['seam-size', 'size'], ['seam-seed', 'seed'], ['seam-t0', 'maxCountDifference']]) {
+    const el = $(id);
+    el.value = settings[key];
+    el.addEventListener('input', () => { settings[key] = el.value; save(); showMethod(); });
+  }
+  const showMethod = () => { $('seam-t0-row').hidden = settings.method === 'synthesis'; };
+
+  // --- run ---
+  $('seam-run').addEventListener('click', async () => {
+    if (!image) return say('Load an image first.', 'error');
+    abort?.abort();
+    abort = new AbortController();
+    $('seam-run').disabled = true;
+    $('seam-cancel').disabled = false;
+    $('seam-progress').value = 0;
+    say('Making the tile…');
+    const opts = { method: settings.method, seed: Number(settings.seed) || 0 };
+    if (settings.size) opts.size = Number(settings.size);
+    if (settings.method !== 'synthesis') opts.maxCountDifference = Number(settings.maxCountDifference);
+    const t0 = performance.now();
+    try {
+      const r = await client.seamlessTile(image, opts, { signal: abort.signal, onProgress: (f) => { $('seam-progress').value = f; } });
+      const ms = performance.now() - t0;
+      const { width, height } = r.image;
+      const c = $('seam-result');
+      c.width = width;
+      c.height = height;
+      c.getContext('2d').putImageData(new ImageData(new Uint8ClampedArray(r.image.data), width, height), 0, 0);
+      const blob = await new Promise((ok) => c.toBlob(ok, 'image/png'));
+      if (resultUrl) URL.revokeObjectURL(resultUrl);
+      resultUrl = URL.createObjectURL(blob);
+      // The 3x3 repeat, to judge the seams.
+      const k = Math.max(1, Math.floor(Math.min(512, $('seam-repeat').parentElement.clientWidth - 16) / (3 * width)));
+      Object.assign($('seam-repeat').style, { backgroundImage: `url("${resultUrl}")`, backgroundSize: `${k * width}px ${k * height}px`, width: `${3 * k * width}px`, height: `${3 * k * height}px` });
+      $('seam-repeat').classList.add('shown');
+      const dl = $('seam-download');
+      dl.href = resultUrl;
+      dl.classList.remove('disabled');
+      dl.removeAttribute('aria-disabled');
+      $('seam-info').textContent = `${width}×${height}, restoration rate ${(100 * r.restorationRate).toFixed(1)}%, seam score ${r.seamScore.toFixed(2)} (about 1: no seam), ${ms.toFixed(0)} ms`;
+      $('seam-progress').value = 1;
+      say(r.warnings.length ? r.warnings.join(' ') : 'Done.', r.warnings.length ? 'warn' : '');
+    } catch (e) {
+      const cancelled = e.name === 'AbortError';
+      say(cancelled ? 'Cancelled.' : e.message, cancelled ? 'warn' : 'error');
+      $('seam-progress').value = 0;
+    } finally {
+      abort = null;
+      $('seam-run').disabled = false;
+      $('seam-cancel').disabled = true;
+    }
+  });
+  $('seam-cancel').addEventListener('click', () => abort?.abort());
+
+  // --- start ---
+  showMethod();
+  const kept = settings.texture ? null : load(imageKey, null);
+  if (kept) {
+    fetch(kept.url).then((r) => r.blob()).then(createImageBitmap).then((b) => show(rgbaOf(b, kept.name)))
+      .catch(() => { forget(imageKey); loadBuiltin(defaultOptions.texture); });
+  } else {
+    select.value = settings.texture || defaultOptions.texture;
+    loadBuiltin(select.value);
+  }
+}
