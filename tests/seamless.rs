@@ -78,7 +78,13 @@ fn odd_sizes_are_cropped_and_scaled_with_a_message() {
     assert!(r.warnings.iter().any(|w| w.contains("Scaled 70x70 to 64x64")), "{:?}", r.warnings);
     let r = seamless_tile(&img, &SeamlessOptions { size: Some(128), ..Default::default() }, &mut Silent).unwrap();
     assert_eq!(r.image.width, 128);
+    // Synthesis enlarges by making more texture, not by scaling the image up.
     let exact = crop(&fixture("grass"), 64, 64);
+    let o = SeamlessOptions { method: Method::Synthesis, size: Some(128), ..Default::default() };
+    let r = seamless_tile(&exact, &o, &mut Silent).unwrap();
+    assert_eq!(r.image.width, 128);
+    assert!(r.warnings.iter().any(|w| w.contains("from the 64x64 image at its own scale")), "{:?}", r.warnings);
+    assert!(r.seam_score < 1.3, "seam {}", r.seam_score);
     assert!(seamless_tile(&exact, &SeamlessOptions::default(), &mut Silent).unwrap().warnings.is_empty());
 }
 

@@ -66,14 +66,18 @@ const MIN_TILE: usize = 8;
 /// A seamless tile from `input` (RGBA).
 pub fn seamless_tile(input: &Rgba, opts: &SeamlessOptions, progress: &mut dyn Progress) -> Result<SeamlessResult> {
     let mut warnings = Vec::new();
-    let (side, rgb) = prepare(input, opts.size, &mut warnings)?;
+    // Synthesis makes a tile of any size from the image at its own scale; E-TFMCM's
+    // tile is its exemplar's size, so the image is scaled to it.
+    let synthesis = opts.method == Method::Synthesis;
+    let (ex_side, side, rgb) = prepare(input, opts.size, !synthesis, &mut warnings)?;
     if !(opts.max_count_difference.is_finite() && opts.max_count_difference >= 0.0) {
         return invalid("maxCountDifference must be a number of at least 0.");
     }
     let mut progress = Throttle::new(progress);
     let (out, channel, count_difference, decisions) = match opts.method {
         Method::Synthesis => {
-            let img = Image { width: side, height: side, data: rgb.iter().map(|p| p.map(|v| v as f32)).collect() };
+            let img =
+                Image { width: ex_side, height: ex_side, data: rgb.iter().map(|p| p.map(|v| v as f32)).collect() };
             let o = TextureOptions { width: side, height: side, seed: opts.seed, tileable: true, ..Default::default() };
             let out = synthesize_texture(&img, &o, &mut |f| progress.tick(f).is_ok())?;
             let rgb: Vec<[u8; 3]> = out.data.chunks_exact(4).map(|p| [p[0], p[1], p[2]]).collect();
@@ -112,8 +116,15 @@ pub fn seamless_tile(input: &Rgba, opts: &SeamlessOptions, progress: &mut dyn Pr
     })
 }
 
-/// Crops `input` to a centred square and scales it to a power-of-two side, saying so.
-fn prepare(input: &Rgba, size: Option<usize>, warnings: &mut Vec<String>) -> Result<(usize, Vec<[u8; 3]>)> {
+/// Crops `input` to a centred square and scales it to the tile's power-of-two side,
+/// saying so; without `enlarge`, a tile larger than the image keeps the image at its
+/// own size. Returns the exemplar's side, the tile's side and the exemplar.
+fn prepare(
+    input: &Rgba,
+    size: Option<usize>,
+    enlarge: bool,
+    warnings: &mut Vec<String>,
+) -> Result<(usize, usize, Vec<[u8; 3]>)> {
     let (w, h) = (input.width, input.height);
     crate::raster::image::check_size(w, h, "image")?;
     if input.data.len() != w * h * 4 {
@@ -134,17 +145,22 @@ fn prepare(input: &Rgba, size: Option<usize>, warnings: &mut Vec<String>) -> Res
     if w != h {
         warnings.push(format!("Cropped the {w}x{h} image to its centre {short}x{short} (tiles are square)."));
     }
-    if short != side {
+    let ex_side = if enlarge { side } else { side.min(short) };
+    if ex_side < side {
+        warnings
+            .push(format!("The {side}x{side} tile is synthesized from the {short}x{short} image at its own scale."));
+    }
+    if short != ex_side {
         warnings.push(format!(
-            "Scaled {short}x{short} to {side}x{side} (tiles are a power of two on a side{}).",
+            "Scaled {short}x{short} to {ex_side}x{ex_side} (tiles are a power of two on a side{}).",
             if short > MAX_TILE { format!(", at most {MAX_TILE}") } else { String::new() }
         ));
     }
     // Box filter over each output pixel's footprint (bilinear-like when enlarging).
-    let scale = short as f64 / side as f64;
-    let mut rgb = Vec::with_capacity(side * side);
-    for y in 0..side {
-        for x in 0..side {
+    let scale = short as f64 / ex_side as f64;
+    let mut rgb = Vec::with_capacity(ex_side * ex_side);
+    for y in 0..ex_side {
+        for x in 0..ex_side {
             let (fx0, fy0) = (x as f64 * scale, y as f64 * scale);
             let (sx0, sy0) = (fx0.floor() as usize, fy0.floor() as usize);
             let sx1 = ((fx0 + scale).ceil() as usize).clamp(sx0 + 1, short);
@@ -162,5 +178,5 @@ fn prepare(input: &Rgba, size: Option<usize>, warnings: &mut Vec<String>) -> Res
             rgb.push(acc.map(|v| ((v + n / 2) / n) as u8));
         }
     }
-    Ok((side, rgb))
+    Ok((ex_side, side, rgb))
 }
