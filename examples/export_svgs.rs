@@ -2,25 +2,16 @@
 //! out/, with each family's seamless tile (`<name>-tile.svg`), to look at:
 //! `cargo run --release --example export_svgs`, then e.g.
 //! `node scripts/render-svg.mjs --tile out/tiles.png out/*-tile.svg`.
-use patternsynth::vector::exemplar::families;
+use patternsynth::vector::exemplar::{families, irregular_dashes};
 use patternsynth::vector::svg_export::to_svg;
-use patternsynth::vector::{stroke_tile, synthesize_strokes, Rgb, Stroke, StrokeOptions, TileOptions};
+use patternsynth::vector::{stroke_tile, synthesize_strokes, Stroke, StrokeOptions, TileOptions};
 use patternsynth::Silent;
 
 fn main() -> std::io::Result<()> {
     std::fs::create_dir_all("out")?;
     let mut sets: Vec<(String, Vec<Stroke>)> =
         families(0.02, 11).into_iter().map(|e| (e.name.to_string(), e.strokes)).collect();
-    let mut rng = patternsynth::rng::Rng::new(5);
-    sets.push((
-        "irregular".into(),
-        (0..40)
-            .map(|_| {
-                let (x, y) = (rng.next_f64() * 150.0, rng.next_f64() * 150.0);
-                Stroke::new(vec![[x, y], [x + 6.0, y + 6.0]], 1.5, Some(Rgb([30, 30, 30])))
-            })
-            .collect(),
-    ));
+    sets.push(("irregular".into(), irregular_dashes(40, 150.0, 5)));
     for (name, strokes) in sets {
         let r = synthesize_strokes(
             &strokes,

@@ -1,7 +1,7 @@
 //! The vector engine's contract beyond regularity: bad input, caps, determinism,
 //! variation, draw order, irregular input, progress and cancellation.
 
-use patternsynth::vector::exemplar::families;
+use patternsynth::vector::exemplar::{families, irregular_dashes};
 use patternsynth::vector::{synthesize_strokes, Rgb, Stroke, StrokeOptions};
 use patternsynth::{Error, Silent};
 
@@ -121,13 +121,7 @@ fn draw_order_follows_the_example() {
 #[test]
 fn irregular_input_degrades_gracefully() {
     // Random positions: no lattice to find. No crash, no pile-ups, the area still covered.
-    let mut rng = patternsynth::rng::Rng::new(5);
-    let strokes: Vec<Stroke> = (0..40)
-        .map(|_| {
-            let (x, y) = (rng.next_f64() * 150.0, rng.next_f64() * 150.0);
-            Stroke::new(vec![[x, y], [x + 6.0, y + 6.0]], 1.5, Some(Rgb([30, 30, 30])))
-        })
-        .collect();
+    let strokes = irregular_dashes(40, 150.0, 5);
     let r = synthesize_strokes(&strokes, &opts(450.0, 450.0), &mut Silent).unwrap();
     let pts: Vec<_> = r.strokes.iter().map(|s| s.reference_point()).collect();
     let mut nn: Vec<f64> = strokes

@@ -4,8 +4,8 @@
 //! gets a clear error.
 
 use kurbo::{Point, Vec2};
-use patternsynth::vector::exemplar::families;
-use patternsynth::vector::{parse_svg, stroke_tile, ImportOptions, Rgb, Stroke, TileOptions};
+use patternsynth::vector::exemplar::{families, irregular_dashes};
+use patternsynth::vector::{parse_svg, stroke_tile, ImportOptions, Stroke, TileOptions};
 
 /// Whether the lattice `a, b` of the generator has `v` as a period (within `tol`).
 fn is_period(a: Vec2, b: Option<Vec2>, v: Vec2, tol: f64) -> bool {
@@ -100,13 +100,7 @@ fn hexagonal_tile_is_one_period_across_and_two_rows_down() {
 
 #[test]
 fn no_repeat_no_tile() {
-    let mut rng = patternsynth::rng::Rng::new(5);
-    let strokes: Vec<Stroke> = (0..40)
-        .map(|_| {
-            let (x, y) = (rng.next_f64() * 150.0, rng.next_f64() * 150.0);
-            Stroke::new(vec![[x, y], [x + 6.0, y + 6.0]], 1.5, Some(Rgb([30, 30, 30])))
-        })
-        .collect();
+    let strokes = irregular_dashes(40, 150.0, 5);
     let err = stroke_tile(&strokes, &TileOptions::default()).unwrap_err().to_string();
     assert!(err.contains("No regular repeat"), "{err}");
     let err = stroke_tile(&strokes[..1], &TileOptions::default()).unwrap_err().to_string();

@@ -269,3 +269,15 @@ pub fn busy_tile(count: usize, period: f64, gap: f64, reps: i32, seed: u64) -> E
         seed,
     )
 }
+
+/// `count` short dashes at random positions in a `side` square: irregular input, with
+/// no lattice to find (SPEC 1.5's graceful-degradation case).
+pub fn irregular_dashes(count: usize, side: f64, seed: u64) -> Vec<Stroke> {
+    let mut rng = Rng::new(seed);
+    (0..count)
+        .map(|_| {
+            let (x, y) = (rng.next_f64() * side, rng.next_f64() * side);
+            Stroke::new(vec![[x, y], [x + 6.0, y + 6.0]], 1.5, Some(Rgb([30, 30, 30])))
+        })
+        .collect()
+}

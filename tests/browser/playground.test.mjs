@@ -4,29 +4,18 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync, readFileSync } from 'node:fs';
-import { chromium } from 'playwright-core';
-import { CHROMIUM } from './chromium.mjs';
-import { serve } from '../../scripts/static-server.mjs';
+import { openPlayground } from './harness.mjs';
 import { parseSvg } from '../../pkg/node.js';
 
-let server, browser, page, base;
+let page, close;
 const SPACING = 40; // canvas pixels between drawn strokes
 
 before(async () => {
-  server = await serve('www', 0);
-  base = `http://127.0.0.1:${server.address().port}/`;
-  browser = await chromium.launch(CHROMIUM);
-  const context = await browser.newContext({ acceptDownloads: true, viewport: { width: 1400, height: 900 } });
-  page = await context.newPage();
-  page.on('pageerror', (e) => console.error('page error:', e.message));
-  await page.goto(base);
+  ({ page, close } = await openPlayground({ height: 900 }));
   await page.waitForFunction(() => /[1-9]\d* strokes/.test(document.querySelector('#stroke-count').textContent));
 });
 
-after(async () => {
-  await browser?.close();
-  server?.close();
-});
+after(async () => close?.());
 
 async function drawGrid() {
   await page.click('#clear');

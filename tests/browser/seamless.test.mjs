@@ -5,28 +5,17 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync, readFileSync } from 'node:fs';
-import { chromium } from 'playwright-core';
-import { CHROMIUM } from './chromium.mjs';
-import { serve } from '../../scripts/static-server.mjs';
+import { openPlayground } from './harness.mjs';
 import { decodeImage, encodePng } from '../../pkg/node.js';
 
-let server, browser, page;
+let page, close;
 
 before(async () => {
-  server = await serve('www', 0);
-  browser = await chromium.launch(CHROMIUM);
-  const context = await browser.newContext({ acceptDownloads: true, viewport: { width: 1400, height: 1000 } });
-  page = await context.newPage();
-  page.on('pageerror', (e) => console.error('page error:', e.message));
-  await page.goto(`http://127.0.0.1:${server.address().port}/`);
-  await page.click('[data-tab="seamless"]');
+  ({ page, close } = await openPlayground({ tab: 'seamless' }));
   await page.waitForFunction(() => document.querySelector('#seam-source').width === 128);
 });
 
-after(async () => {
-  await browser?.close();
-  server?.close();
-});
+after(async () => close?.());
 
 /** Wrap-around difference over neighbouring-pixel difference (about 1: no seam). */
 function seam(img) {

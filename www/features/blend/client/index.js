@@ -2,6 +2,7 @@
 // a painted mask, synthesis in the worker with progress and cancel, PNG download.
 import { defaultOptions, exemplarKey, maskKey, maxExemplarSide, maxOutputSide, storageKey, textures } from '../shared/meta.js';
 import { forget, load, store } from '../../../shared/storage.js';
+import { builtinBitmap, fileBitmap, keepImage, keptImage, onDropFile, rgbaOf } from '../../../shared/images.js';
 
 /** The coefficient transfers, as the engine defines them (mu of A in [0, 1]). */
 const TRANSFER = {
@@ -58,13 +59,7 @@ export function mountBlend(root, client) {
       if (e.target.files[0]) await loadFile(key, e.target.files[0]);
       e.target.value = '';
     });
-    fig.addEventListener('dragover', (e) => { e.preventDefault(); fig.classList.add('dragging'); });
-    fig.addEventListener('dragleave', () => fig.classList.remove('dragging'));
-    fig.addEventListener('drop', async (e) => {
-      e.preventDefault();
-      fig.classList.remove('dragging');
-      if (e.dataTransfer.files[0]) await loadFile(key, e.dataTransfer.files[0]);
-    });
+    onDropFile(fig, (file) => loadFile(key, file));
   }
 
   function setSlot(key, rgba) {
@@ -75,60 +70,38 @@ export function mountBlend(root, client) {
     slots[key].image = rgba;
   }
 
-  /** Pixels of a bitmap, scaled down uniformly if it is larger than the cap. */
-  function rgbaOf(bitmap, name) {
-    let { width, height } = bitmap;
-    const k = Math.min(1, maxExemplarSide / Math.max(width, height));
-    if (k < 1) {
-      const w = Math.max(1, Math.round(width * k)), h = Math.max(1, Math.round(height * k));
-      say(`${name}: scaled from ${width}×${height} to ${w}×${h} (exemplars are capped at ${maxExemplarSide} px to keep synthesis quick).`, 'warn');
-      width = w;
-      height = h;
-    }
-    const c = new OffscreenCanvas(width, height);
-    const ctx = c.getContext('2d');
-    ctx.drawImage(bitmap, 0, 0, width, height);
-    const d = ctx.getImageData(0, 0, width, height);
-    return { width, height, data: d.data };
+  /** Shows a bitmap in slot `key`, scaled down to the cap with a message. */
+  function useBitmap(key, bitmap, name) {
+    const { rgba, scaledFrom } = rgbaOf(bitmap, maxExemplarSide);
+    if (scaledFrom) say(`${name}: scaled from ${scaledFrom[0]}×${scaledFrom[1]} to ${rgba.width}×${rgba.height} (exemplars are capped at ${maxExemplarSide} px to keep synthesis quick).`, 'warn');
+    setSlot(key, rgba);
   }
 
   async function loadBuiltin(key, name) {
     try {
-      const blob = await (await fetch(new URL(`../../../textures/${name}.png`, import.meta.url))).blob();
-      setSlot(key, rgbaOf(await createImageBitmap(blob), name));
+      useBitmap(key, await builtinBitmap(name), name);
     } catch (e) {
       say(`Could not load the built-in texture '${name}': ${e.message}`, 'error');
     }
   }
 
   async function loadFile(key, file) {
-    let bitmap;
-    try {
-      bitmap = await createImageBitmap(file);
-    } catch {
-      return say(`${file.name} is not an image this browser can read (use PNG or JPEG).`, 'error');
-    }
-    setSlot(key, rgbaOf(bitmap, file.name));
+    const bitmap = await fileBitmap(file);
+    if (!bitmap) return say(`${file.name} is not an image this browser can read (use PNG or JPEG).`, 'error');
+    useBitmap(key, bitmap, file.name);
     slots[key].select.value = '';
     settings[key] = '';
     save();
     // Kept across reloads like everything else the person made.
-    const kept = store(`${exemplarKey}.${key}`, { name: file.name, url: slots[key].canvas.toDataURL('image/png') });
+    const kept = keepImage(`${exemplarKey}.${key}`, file.name, slots[key].canvas);
     say(`Loaded ${file.name} as texture ${key.toUpperCase()}.${kept ? '' : ' (Browser storage is full: it will not survive a reload.)'}`, kept ? '' : 'warn');
   }
 
   /** A texture kept from an earlier visit; false when there is none. */
   async function loadKept(key) {
-    const kept = load(`${exemplarKey}.${key}`, null);
-    if (!kept) return false;
-    try {
-      const blob = await (await fetch(kept.url)).blob();
-      setSlot(key, rgbaOf(await createImageBitmap(blob), kept.name));
-      return true;
-    } catch {
-      forget(`${exemplarKey}.${key}`);
-      return false;
-    }
+    const kept = await keptImage(`${exemplarKey}.${key}`);
+    if (kept) useBitmap(key, kept.bitmap, kept.name);
+    return Boolean(kept);
   }
 
   // --- settings ---

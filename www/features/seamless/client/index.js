@@ -2,6 +2,7 @@
 // worker (progress, cancel), judge it repeated 3x3, download PNG.
 import { defaultOptions, imageKey, maxInputSide, methods, storageKey, textures } from '../shared/meta.js';
 import { forget, load, store } from '../../../shared/storage.js';
+import { builtinBitmap, fileBitmap, keepImage, keptImage, onDropFile, rgbaOf } from '../../../shared/images.js';
 
 export function mountSeamless(root, client) {
   const $ = (id) => root.querySelector(`#${id}`);
@@ -28,38 +29,26 @@ export function mountSeamless(root, client) {
     image = rgba;
     $('seam-source-info').textContent = `${rgba.width}×${rgba.height}`;
   }
-  function rgbaOf(bitmap, name) {
-    let { width, height } = bitmap;
-    const k = Math.min(1, maxInputSide / Math.max(width, height));
-    if (k < 1) {
-      say(`${name}: scaled from ${width}×${height} to fit ${maxInputSide} px.`, 'warn');
-      width = Math.max(1, Math.round(width * k));
-      height = Math.max(1, Math.round(height * k));
-    }
-    const ctx = new OffscreenCanvas(width, height).getContext('2d');
-    ctx.drawImage(bitmap, 0, 0, width, height);
-    return { width, height, data: ctx.getImageData(0, 0, width, height).data };
+  function useBitmap(bitmap, name) {
+    const { rgba, scaledFrom } = rgbaOf(bitmap, maxInputSide);
+    if (scaledFrom) say(`${name}: scaled from ${scaledFrom[0]}×${scaledFrom[1]} to fit ${maxInputSide} px.`, 'warn');
+    show(rgba);
   }
   async function loadBuiltin(name) {
     try {
-      const blob = await (await fetch(new URL(`../../../textures/${name}.png`, import.meta.url))).blob();
-      show(rgbaOf(await createImageBitmap(blob), name));
+      useBitmap(await builtinBitmap(name), name);
     } catch (e) {
       say(`Could not load the built-in texture '${name}': ${e.message}`, 'error');
     }
   }
   async function loadFile(file) {
-    let bitmap;
-    try {
-      bitmap = await createImageBitmap(file);
-    } catch {
-      return say(`${file.name} is not an image this browser can read (use PNG or JPEG).`, 'error');
-    }
-    show(rgbaOf(bitmap, file.name));
+    const bitmap = await fileBitmap(file);
+    if (!bitmap) return say(`${file.name} is not an image this browser can read (use PNG or JPEG).`, 'error');
+    useBitmap(bitmap, file.name);
     select.value = '';
     settings.texture = '';
     save();
-    const kept = store(imageKey, { name: file.name, url: $('seam-source').toDataURL('image/png') });
+    const kept = keepImage(imageKey, file.name, $('seam-source'));
     say(`Loaded ${file.name}.${kept ? '' : ' (Browser storage is full: it will not survive a reload.)'}`, kept ? '' : 'warn');
   }
   select.addEventListener('change', () => {
@@ -73,14 +62,7 @@ export function mountSeamless(root, client) {
     if (e.target.files[0]) await loadFile(e.target.files[0]);
     e.target.value = '';
   });
-  const drop = $('seam-drop');
-  drop.addEventListener('dragover', (e) => { e.preventDefault(); drop.classList.add('dragging'); });
-  drop.addEventListener('dragleave', () => drop.classList.remove('dragging'));
-  drop.addEventListener('drop', async (e) => {
-    e.preventDefault();
-    drop.classList.remove('dragging');
-    if (e.dataTransfer.files[0]) await loadFile(e.dataTransfer.files[0]);
-  });
+  onDropFile($('seam-drop'), loadFile);
 
   // --- settings ---
   const method = $('seam-method');
@@ -141,12 +123,10 @@ export function mountSeamless(root, client) {
 
   // --- start ---
   showMethod();
-  const kept = settings.texture ? null : load(imageKey, null);
-  if (kept) {
-    fetch(kept.url).then((r) => r.blob()).then(createImageBitmap).then((b) => show(rgbaOf(b, kept.name)))
-      .catch(() => { forget(imageKey); loadBuiltin(defaultOptions.texture); });
-  } else {
+  const builtin = () => {
     select.value = settings.texture || defaultOptions.texture;
     loadBuiltin(select.value);
-  }
+  };
+  if (settings.texture) builtin();
+  else keptImage(imageKey).then((kept) => (kept ? useBitmap(kept.bitmap, kept.name) : builtin()));
 }
