@@ -10,8 +10,6 @@
 //! `(V_a, V_b, k)` found in the exemplar, so that the set of `k` for a pair is a binary
 //! search away (memory: at most one `u32` per exemplar pixel and side).
 
-use std::collections::HashMap;
-
 /// A grey image, row major.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Grey {
@@ -41,31 +39,37 @@ impl Grey {
     }
 }
 
-/// Pairwise tables, built per offset on first use.
+/// Pairwise tables, built per offset on first use (a few dozen offsets at most: a
+/// list serves).
 pub struct Pairs<'a> {
     img: &'a Grey,
-    tables: HashMap<(isize, isize), Vec<u32>>,
+    tables: Vec<((isize, isize), Vec<u32>)>,
 }
 
 impl<'a> Pairs<'a> {
     pub fn new(img: &'a Grey) -> Self {
-        Pairs { img, tables: HashMap::new() }
+        Pairs { img, tables: Vec::new() }
     }
 
     /// The table of `C(i, j; dx, dy)`, indexed `i * 256 + j`.
     pub fn table(&mut self, dx: isize, dy: isize) -> &[u32] {
         let img = self.img;
-        self.tables.entry((dx, dy)).or_insert_with(|| {
-            let mut t = vec![0u32; 256 * 256];
-            for y in 0..img.height {
-                for x in 0..img.width {
-                    if let Some(j) = img.at(x, y, dx, dy) {
-                        t[img.data[y * img.width + x] as usize * 256 + j as usize] += 1;
+        let i = match self.tables.iter().position(|(o, _)| *o == (dx, dy)) {
+            Some(i) => i,
+            None => {
+                let mut t = vec![0u32; 256 * 256];
+                for y in 0..img.height {
+                    for x in 0..img.width {
+                        if let Some(j) = img.at(x, y, dx, dy) {
+                            t[img.data[y * img.width + x] as usize * 256 + j as usize] += 1;
+                        }
                     }
                 }
+                self.tables.push(((dx, dy), t));
+                self.tables.len() - 1
             }
-            t
-        })
+        };
+        &self.tables[i].1
     }
 }
 
