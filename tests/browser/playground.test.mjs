@@ -30,9 +30,12 @@ async function drawGrid() {
   }
 }
 
-test('a built-in example is there at once', async () => {
+test('a built-in example is there at once, with the default output size', async () => {
   const text = await page.textContent('#stroke-count');
   assert.match(text, /^[1-9]\d* strokes$/);
+  // The pen's width (3) must not stand in for the output's.
+  assert.equal(await page.inputValue('#out-width'), '1200');
+  assert.equal(await page.inputValue('#out-height'), '800');
 });
 
 test('draw, classify, synthesize, download a periodic SVG', async () => {

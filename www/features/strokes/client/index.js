@@ -9,7 +9,11 @@ export function mountStrokes(root, client) {
   const $ = (id) => root.querySelector(`#${id}`);
   const canvas = $('draw');
   const messages = $('messages');
-  let settings = { ...defaultOptions, ...defaultPen, ...load(SETTINGS_KEY, {}) };
+  // The pen's width is `penWidth` in the settings: `width` is the output's.
+  const { width: _penWidth, ...pen } = defaultPen;
+  let settings = { ...defaultOptions, ...pen, ...load(SETTINGS_KEY, {}) };
+  // Settings saved by an earlier version could hold the pen's width as the output's.
+  for (const k of ['width', 'height']) if (!(Number(settings[k]) >= 10)) settings[k] = defaultOptions[k];
   let classifyAbort = null;
   let runAbort = null;
   let resultUrl = null;
