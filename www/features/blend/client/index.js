@@ -2,6 +2,7 @@
 // a painted mask, synthesis in the worker with progress and cancel, PNG download.
 import { defaultOptions, exemplarKey, maskKey, maxExemplarSide, maxOutputSide, storageKey, textures } from '../shared/meta.js';
 import { forget, load, store } from '../../../shared/storage.js';
+import { offerDownload, runControls } from '../../../shared/run.js';
 import { builtinBitmap, fileBitmap, keepImage, keptImage, onDropFile, rgbaOf } from '../../../shared/images.js';
 
 /** The coefficient transfers, as the engine defines them (mu of A in [0, 1]). */
@@ -39,7 +40,6 @@ export function mountBlend(root, client) {
     p.textContent = text;
     messages.replaceChildren(p);
   };
-  let abort = null;
   let resultUrl = null;
 
   // --- exemplar slots ---
@@ -207,6 +207,7 @@ export function mountBlend(root, client) {
   }
 
   // --- run ---
+  const runs = runControls({ run: $('blend-run'), cancel: $('blend-cancel'), progress: $('blend-progress'), say });
   $('blend-run').addEventListener('click', async () => {
     const width = Number(settings.width), height = Number(settings.height);
     if (!(width >= 8 && height >= 8 && width <= maxOutputSide && height <= maxOutputSide)) {
@@ -214,17 +215,10 @@ export function mountBlend(root, client) {
     }
     const single = settings.mode === 'single';
     if (!slots.a.image || (!single && !slots.b.image)) return say('Load both textures first.', 'error');
-    abort?.abort();
-    abort = new AbortController();
-    $('blend-run').disabled = true;
-    $('blend-cancel').disabled = false;
-    $('blend-progress').value = 0;
-    say('Synthesizing…');
     const base = { width, height, seed: Number(settings.seed) || 0, tileable: settings.tileable, exhaustive: settings.exhaustive, neighbourhood: Number(settings.neighbourhood) };
     if (settings.levels) base.levels = Number(settings.levels);
-    const call = { signal: abort.signal, onProgress: (f) => { $('blend-progress').value = f; } };
     const t0 = performance.now();
-    try {
+    await runs.start('Synthesizing…', async (call) => {
       let out;
       if (single) out = await client.synthesizeTexture(slots.a.image, base, call);
       else {
@@ -246,24 +240,11 @@ export function mountBlend(root, client) {
       const blob = await new Promise((ok) => canvas.toBlob(ok, 'image/png'));
       if (resultUrl) URL.revokeObjectURL(resultUrl);
       resultUrl = URL.createObjectURL(blob);
-      const dl = $('blend-download');
-      dl.href = resultUrl;
-      dl.classList.remove('disabled');
-      dl.removeAttribute('aria-disabled');
+      offerDownload($('blend-download'), resultUrl);
       $('blend-info').textContent = `${out.width}×${out.height}, ${single ? 'single exemplar' : settings.transition}, ${ms.toFixed(0)} ms`;
-      $('blend-progress').value = 1;
       say('Done.');
-    } catch (e) {
-      const cancelled = e.name === 'AbortError';
-      say(cancelled ? 'Cancelled.' : e.message, cancelled ? 'warn' : 'error');
-      $('blend-progress').value = 0;
-    } finally {
-      abort = null;
-      $('blend-run').disabled = false;
-      $('blend-cancel').disabled = true;
-    }
+    });
   });
-  $('blend-cancel').addEventListener('click', () => abort?.abort());
 
   // --- start ---
   showMode();

@@ -2,6 +2,7 @@
 // worker (progress, cancel), judge it repeated 3x3, download PNG.
 import { defaultOptions, imageKey, maxInputSide, methods, storageKey, textures } from '../shared/meta.js';
 import { forget, load, store } from '../../../shared/storage.js';
+import { offerDownload, runControls } from '../../../shared/run.js';
 import { builtinBitmap, fileBitmap, keepImage, keptImage, onDropFile, rgbaOf } from '../../../shared/images.js';
 
 export function mountSeamless(root, client) {
@@ -15,7 +16,6 @@ export function mountSeamless(root, client) {
     $('seam-messages').replaceChildren(p);
   };
   let image = null;
-  let abort = null;
   let resultUrl = null;
 
   // --- the exemplar ---
@@ -75,20 +75,15 @@ export function mountSeamless(root, client) {
   const showMethod = () => { $('seam-t0-row').hidden = settings.method === 'synthesis'; };
 
   // --- run ---
+  const runs = runControls({ run: $('seam-run'), cancel: $('seam-cancel'), progress: $('seam-progress'), say });
   $('seam-run').addEventListener('click', async () => {
     if (!image) return say('Load an image first.', 'error');
-    abort?.abort();
-    abort = new AbortController();
-    $('seam-run').disabled = true;
-    $('seam-cancel').disabled = false;
-    $('seam-progress').value = 0;
-    say('Making the tile…');
     const opts = { method: settings.method, seed: Number(settings.seed) || 0 };
     if (settings.size) opts.size = Number(settings.size);
     if (settings.method !== 'synthesis') opts.maxCountDifference = Number(settings.maxCountDifference);
     const t0 = performance.now();
-    try {
-      const r = await client.seamlessTile(image, opts, { signal: abort.signal, onProgress: (f) => { $('seam-progress').value = f; } });
+    await runs.start('Making the tile…', async (call) => {
+      const r = await client.seamlessTile(image, opts, call);
       const ms = performance.now() - t0;
       const { width, height } = r.image;
       const c = $('seam-result');
@@ -102,24 +97,11 @@ export function mountSeamless(root, client) {
       const k = Math.max(1, Math.floor(Math.min(512, $('seam-repeat').parentElement.clientWidth - 16) / (3 * width)));
       Object.assign($('seam-repeat').style, { backgroundImage: `url("${resultUrl}")`, backgroundSize: `${k * width}px ${k * height}px`, width: `${3 * k * width}px`, height: `${3 * k * height}px` });
       $('seam-repeat').classList.add('shown');
-      const dl = $('seam-download');
-      dl.href = resultUrl;
-      dl.classList.remove('disabled');
-      dl.removeAttribute('aria-disabled');
+      offerDownload($('seam-download'), resultUrl);
       $('seam-info').textContent = `${width}×${height}, restoration rate ${(100 * r.restorationRate).toFixed(1)}%, seam score ${r.seamScore.toFixed(2)} (about 1: no seam), ${ms.toFixed(0)} ms`;
-      $('seam-progress').value = 1;
       say(r.warnings.length ? r.warnings.join(' ') : 'Done.', r.warnings.length ? 'warn' : '');
-    } catch (e) {
-      const cancelled = e.name === 'AbortError';
-      say(cancelled ? 'Cancelled.' : e.message, cancelled ? 'warn' : 'error');
-      $('seam-progress').value = 0;
-    } finally {
-      abort = null;
-      $('seam-run').disabled = false;
-      $('seam-cancel').disabled = true;
-    }
+    });
   });
-  $('seam-cancel').addEventListener('click', () => abort?.abort());
 
   // --- start ---
   showMethod();

@@ -93,18 +93,18 @@ export class Drawing {
   }
 
   undo() {
-    if (!this.past.length) return;
-    this.future.push(this.strokes);
-    this.strokes = this.past.pop();
-    this.classes = null;
-    this.render();
-    this.onChange?.(this.strokes);
+    this.step(this.past, this.future);
   }
 
   redo() {
-    if (!this.future.length) return;
-    this.past.push(this.strokes);
-    this.strokes = this.future.pop();
+    this.step(this.future, this.past);
+  }
+
+  /** Moves one drawing from the `from` history to the screen, the current one to `to`. */
+  step(from, to) {
+    if (!from.length) return;
+    to.push(this.strokes);
+    this.strokes = from.pop();
     this.classes = null;
     this.render();
     this.onChange?.(this.strokes);

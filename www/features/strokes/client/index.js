@@ -2,6 +2,7 @@
 import { Drawing, fitStrokes } from './canvas.js';
 import { classColors, defaultOptions, defaultPen, maxSide, storageKey } from '../shared/meta.js';
 import { load, store as save } from '../../../shared/storage.js';
+import { offerDownload, runControls } from '../../../shared/run.js';
 
 const SETTINGS_KEY = 'patternsynth.strokes.settings.v1';
 
@@ -15,7 +16,6 @@ export function mountStrokes(root, client) {
   // Settings saved by an earlier version could hold the pen's width as the output's.
   for (const k of ['width', 'height']) if (!(Number(settings[k]) >= 10)) settings[k] = defaultOptions[k];
   let classifyAbort = null;
-  let runAbort = null;
   let resultUrl = null;
 
   const say = (text, kind = '') => {
@@ -24,6 +24,7 @@ export function mountStrokes(root, client) {
     p.textContent = text;
     messages.replaceChildren(p);
   };
+  const runs = runControls({ run: $('synthesize'), cancel: $('cancel'), progress: $('progress'), say });
 
   // --- pen and settings inputs ---
   const bind = (id, key, parse = (v) => v, prop = 'value') => {
@@ -102,7 +103,7 @@ export function mountStrokes(root, client) {
       $('legend').replaceChildren();
       return;
     }
-    if (runAbort) return; // the worker is busy synthesizing; classes update afterwards
+    if (runs.busy) return; // the worker is busy synthesizing; classes update afterwards
     classifyAbort = new AbortController();
     try {
       const c = await client.classifyStrokes(strokes, tolerances(), { signal: classifyAbort.signal });
@@ -173,19 +174,10 @@ export function mountStrokes(root, client) {
     if (!(width >= 10 && height >= 10 && width <= maxSide && height <= maxSide)) {
       return say(`Output width and height must be between 10 and ${maxSide}.`, 'error');
     }
-    runAbort?.abort();
-    runAbort = new AbortController();
-    $('synthesize').disabled = true;
-    $('cancel').disabled = false;
-    $('progress').value = 0;
-    say('Synthesizing…');
     const t0 = performance.now();
-    try {
+    await runs.start('Synthesizing…', async (call) => {
       const opts = { width, height, variation: settings.variation, regularize: settings.regularize !== false, seed: Number(settings.seed) || 0, ...tolerances() };
-      const r = await client.synthesizeStrokes(drawing.strokes, opts, {
-        signal: runAbort.signal,
-        onProgress: (f) => { $('progress').value = f; },
-      });
+      const r = await client.synthesizeStrokes(drawing.strokes, opts, call);
       const ms = performance.now() - t0;
       if (resultUrl) URL.revokeObjectURL(resultUrl);
       resultUrl = URL.createObjectURL(new Blob([r.svg], { type: 'image/svg+xml' }));
@@ -193,24 +185,12 @@ export function mountStrokes(root, client) {
       img.src = resultUrl;
       img.alt = 'Synthesized pattern';
       $('preview').replaceChildren(img);
-      const dl = $('download');
-      dl.href = resultUrl;
-      dl.classList.remove('disabled');
-      dl.removeAttribute('aria-disabled');
+      offerDownload($('download'), resultUrl);
       $('result-info').textContent = `${r.strokes.length} strokes, ${r.classification.count} classes, ${width}×${height}, ${ms.toFixed(0)} ms`;
-      $('progress').value = 1;
       say('Done.');
-    } catch (e) {
-      say(e.name === 'AbortError' ? 'Cancelled.' : e.message, e.name === 'AbortError' ? 'warn' : 'error');
-      $('progress').value = 0;
-    } finally {
-      runAbort = null;
-      $('synthesize').disabled = false;
-      $('cancel').disabled = true;
-      scheduleClassify(0);
-    }
+    });
+    scheduleClassify(0);
   });
-  $('cancel').addEventListener('click', () => runAbort?.abort());
 
   // --- seamless tile ---
   let tileUrl = null;
@@ -231,10 +211,7 @@ export function mountStrokes(root, client) {
       Object.assign(one.style, { width: `${w}px`, height: `${h}px` });
       preview.replaceChildren(one);
       preview.classList.add('shown');
-      const dl = $('tile-download');
-      dl.href = tileUrl;
-      dl.classList.remove('disabled');
-      dl.removeAttribute('aria-disabled');
+      offerDownload($('tile-download'), tileUrl);
       $('tile-info').textContent = `${+t.width.toFixed(2)}×${+t.height.toFixed(2)} tile, ${t.sites} elements (${t.strokes.length} strokes with the edge copies), shown 3×3.`;
       say('Tile ready.');
     } catch (e) {

@@ -1,0 +1,43 @@
+// One long worker call at a time behind a Run button, a Cancel button and a progress
+// bar: a new run aborts the one before, Cancel aborts, and a failure or a cancellation
+// is said; the buttons and the bar follow.
+
+/** `els`: { run, cancel, progress, say }. */
+export function runControls({ run, cancel, progress, say }) {
+  let abort = null;
+  cancel.addEventListener('click', () => abort?.abort());
+  return {
+    /** Whether a run is under way. */
+    get busy() {
+      return abort !== null;
+    },
+    /** Says `message`, then awaits `work({ signal, onProgress })`; never throws. */
+    async start(message, work) {
+      abort?.abort();
+      abort = new AbortController();
+      run.disabled = true;
+      cancel.disabled = false;
+      progress.value = 0;
+      say(message);
+      try {
+        await work({ signal: abort.signal, onProgress: (f) => { progress.value = f; } });
+        progress.value = 1;
+      } catch (e) {
+        const cancelled = e.name === 'AbortError';
+        say(cancelled ? 'Cancelled.' : e.message, cancelled ? 'warn' : 'error');
+        progress.value = 0;
+      } finally {
+        abort = null;
+        run.disabled = false;
+        cancel.disabled = true;
+      }
+    },
+  };
+}
+
+/** Points a disabled-looking download link at `url` and enables it. */
+export function offerDownload(link, url) {
+  link.href = url;
+  link.classList.remove('disabled');
+  link.removeAttribute('aria-disabled');
+}
