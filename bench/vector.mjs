@@ -33,5 +33,5 @@ const cols = Object.keys(rows[0]);
 console.log('| ' + cols.join(' | ') + ' |');
 console.log('|' + cols.map(() => '---').join('|') + '|');
 for (const r of rows) console.log('| ' + cols.map((c) => fmt(r[c])).join(' | ') + ' |');
-const wasm = readFileSync('pkg/patternsynth_bg.wasm');
+const wasm = readFileSync('pkg/wasm/full_bg.wasm');
 console.log(`\nwasm module: ${wasm.length} bytes raw, ${gzipSync(wasm, { level: 9 }).length} bytes gzip`);

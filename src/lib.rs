@@ -9,9 +9,12 @@
 
 pub mod error;
 pub mod progress;
+#[cfg(feature = "texture")]
 pub mod raster;
 pub mod rng;
+#[cfg(feature = "texture")]
 pub mod seamless;
+#[cfg(feature = "vector")]
 pub mod vector;
 
 #[cfg(target_arch = "wasm32")]

@@ -182,3 +182,28 @@ fn round_trip_through_our_own_export() {
     assert_eq!(back.strokes[1].points, b.points);
     assert!((back.strokes[1].width - 3.0).abs() < 1e-6);
 }
+
+#[test]
+fn hostile_documents_get_clear_errors_not_overflows() {
+    use patternsynth::vector::{parse_svg, ImportOptions};
+    let opts = ImportOptions::default();
+    let wrap = |body: String| format!("<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 100 100\">{body}</svg>");
+    let nested = wrap(format!("{}<rect width='2' height='2'/>{}", "<g>".repeat(300), "</g>".repeat(300)));
+    let e = parse_svg(&nested, &opts).unwrap_err().to_string();
+    assert!(e.contains("nests 302 levels deep"), "{e}");
+    // Just under the limit still imports (the resolver's stack holds it).
+    let ok = wrap(format!("{}<rect width='2' height='2'/>{}", "<g>".repeat(97), "</g>".repeat(97)));
+    assert_eq!(parse_svg(&ok, &opts).unwrap().strokes.len(), 1);
+    let chain: String = (1..=150).map(|i| format!("<use id='u{i}' href='#u{}'/>", i - 1)).collect();
+    let e =
+        parse_svg(&wrap(format!("<defs><rect id='u0' width='1' height='1'/>{chain}</defs><use href='#u150'/>")), &opts);
+    assert!(e.unwrap_err().to_string().contains("levels deep"));
+    let far = wrap(
+        "<circle r='1e20'/><path d='M0 0 C1e30 1e30 -1e30 1e30 10 10' stroke='#000'/><rect width='3' height='3'/>"
+            .into(),
+    );
+    let tiny = ImportOptions { tolerance: 1e-300, ..ImportOptions::default() };
+    let import = parse_svg(&far, &tiny).unwrap();
+    assert_eq!(import.strokes.len(), 1);
+    assert!(import.warnings.iter().any(|w| w.contains("2 shape(s) lie beyond")), "{:?}", import.warnings);
+}

@@ -1,6 +1,6 @@
 import type {
   Stroke, StrokeOptions, StrokeResult, TileOptions, TileResult, ParseSvgOptions, SvgImport, Classification, ClassifyOptions,
-  Rgba, TextureOptions, BlendOptions, SeamlessOptions, SeamlessResult,
+  Rgba, RgbaImage, TextureOptions, BlendOptions, SeamlessOptions, SeamlessResult, Example,
 } from './patternsynth.js';
 
 export interface CallOptions {
@@ -11,18 +11,20 @@ export interface CallOptions {
 
 /** Runs patternsynth in a module Web Worker; every call takes an AbortSignal. */
 export class PatternSynthClient {
-  constructor(workerUrl?: URL | string);
+  /** The package's own worker by default; or a Worker, a function making Workers, or worker.js's URL. */
+  constructor(worker?: Worker | (() => Worker) | URL | string);
   parseSvg(svg: string, opts?: ParseSvgOptions, options?: CallOptions): Promise<Stroke[]>;
   parseSvgReport(svg: string, opts?: ParseSvgOptions, options?: CallOptions): Promise<SvgImport>;
   classifyStrokes(strokes: Stroke[], opts?: ClassifyOptions, options?: CallOptions): Promise<Classification>;
   synthesizeStrokes(strokes: Stroke[], opts: StrokeOptions, options?: CallOptions): Promise<StrokeResult>;
   strokeTile(strokes: Stroke[], opts?: TileOptions, options?: CallOptions): Promise<TileResult>;
-  exampleStrokes(options?: CallOptions): Promise<{ name: string; strokes: Stroke[] }[]>;
-  synthesizeTexture(image: Rgba, opts: TextureOptions, options?: CallOptions): Promise<Rgba>;
-  blendTextures(a: Rgba, b: Rgba, opts: BlendOptions, options?: CallOptions): Promise<Rgba>;
+  exampleStrokes(options?: CallOptions): Promise<Example[]>;
+  synthesizeTexture(image: Rgba, opts: TextureOptions, options?: CallOptions): Promise<RgbaImage>;
+  blendTextures(a: Rgba, b: Rgba, opts: BlendOptions, options?: CallOptions): Promise<RgbaImage>;
   seamlessTile(image: Rgba, opts?: SeamlessOptions, options?: CallOptions): Promise<SeamlessResult>;
-  decodeImage(bytes: Uint8Array, options?: CallOptions): Promise<Rgba>;
+  decodeImage(bytes: Uint8Array | ArrayBuffer, options?: CallOptions): Promise<RgbaImage>;
   encodePng(image: Rgba, options?: CallOptions): Promise<Uint8Array>;
-  version(): Promise<string>;
+  version(options?: CallOptions): Promise<string>;
+  /** Stops the worker; pending calls are rejected with an AbortError. */
   terminate(): void;
 }

@@ -7,30 +7,41 @@
 //
 // Calls run one at a time in a module worker. Aborting the running call terminates the
 // worker (a synchronous wasm call cannot be interrupted any other way) and the next
-// call starts a fresh one; aborting a queued call just drops it.
+// call starts a fresh one; aborting a queued call just drops it. A worker that fails
+// to start or dies rejects the running call with the cause, and the next call starts
+// a new one.
+import { METHODS } from './api.js';
 
 export class PatternSynthClient {
-  /** @param {URL | string} [workerUrl] where worker.js is served (defaults to beside this file) */
-  constructor(workerUrl = new URL('./worker.js', import.meta.url)) {
-    this.workerUrl = workerUrl;
+  /**
+   * @param {Worker | (() => Worker) | URL | string} [worker] the worker, a function
+   *   that makes one, or the URL of worker.js; by default the package's own worker,
+   *   written in the form bundlers (Vite, webpack 5) turn into a worker chunk.
+   */
+  constructor(worker) {
+    if (worker === undefined) {
+      this.makeWorker = () => new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
+    } else if (typeof worker === 'function') {
+      this.makeWorker = worker;
+    } else if (typeof worker === 'string' || worker instanceof URL) {
+      this.makeWorker = () => new Worker(worker, { type: 'module' });
+    } else if (worker && typeof worker.postMessage === 'function') {
+      // A given Worker is used until it is terminated; then no fresh one can be made.
+      let given = worker;
+      this.makeWorker = () => {
+        if (!given) throw new Error('The Worker passed to PatternSynthClient was terminated (after an abort or a failure); pass a function that makes Workers to allow restarts.');
+        const w = given;
+        given = null;
+        return w;
+      };
+    } else {
+      throw new TypeError('PatternSynthClient takes a Worker, a function returning a Worker, or the URL of worker.js.');
+    }
     this.worker = null;
     this.queue = [];
     this.current = null;
     this.nextId = 1;
   }
-
-  parseSvg(svg, opts, options) { return this.run('parseSvg', [svg, opts], options); }
-  parseSvgReport(svg, opts, options) { return this.run('parseSvgReport', [svg, opts], options); }
-  classifyStrokes(strokes, opts, options) { return this.run('classifyStrokes', [strokes, opts], options); }
-  synthesizeStrokes(strokes, opts, options) { return this.run('synthesizeStrokes', [strokes, opts], options); }
-  strokeTile(strokes, opts, options) { return this.run('strokeTile', [strokes, opts], options); }
-  exampleStrokes(options) { return this.run('exampleStrokes', [], options); }
-  synthesizeTexture(image, opts, options) { return this.run('synthesizeTexture', [image, opts], options); }
-  blendTextures(a, b, opts, options) { return this.run('blendTextures', [a, b, opts], options); }
-  seamlessTile(image, opts, options) { return this.run('seamlessTile', [image, opts], options); }
-  decodeImage(bytes, options) { return this.run('decodeImage', [bytes], options); }
-  encodePng(image, options) { return this.run('encodePng', [image], options); }
-  version() { return this.run('version', []); }
 
   /** Stops the worker; pending calls are rejected. */
   terminate() {
@@ -55,11 +66,7 @@ export class PatternSynthClient {
 
   abort(job) {
     if (this.current === job) {
-      this.worker?.terminate();
-      this.worker = null;
-      this.current = null;
-      job.reject(abortError());
-      this.pump();
+      this.finish(job, abortError(), true);
     } else {
       const i = this.queue.indexOf(job);
       if (i >= 0) {
@@ -72,33 +79,73 @@ export class PatternSynthClient {
   pump() {
     if (this.current || this.queue.length === 0) return;
     const job = (this.current = this.queue.shift());
-    if (!this.worker) {
-      this.worker = new Worker(this.workerUrl, { type: 'module' });
-      this.worker.onmessage = ({ data }) => this.receive(data);
-      this.worker.onerror = (e) => this.fail(new Error(e.message || 'The worker failed to start.'));
+    try {
+      if (!this.worker) {
+        const worker = this.makeWorker();
+        worker.onmessage = ({ data }) => this.receive(worker, data);
+        worker.onerror = (e) => {
+          e.preventDefault?.();
+          this.dead(worker, e);
+        };
+        worker.onmessageerror = () => this.dead(worker, { message: 'a message could not be read' });
+        this.worker = worker;
+      }
+      this.worker.postMessage({ id: job.id, method: job.method, args: job.args });
+    } catch (e) {
+      // e.g. a SecurityError for a worker script on another origin.
+      this.finish(job, new Error(`The patternsynth worker could not start: ${e?.message ?? e}`, { cause: e }), true);
     }
-    this.worker.postMessage({ id: job.id, method: job.method, args: job.args });
   }
 
-  receive(data) {
+  receive(worker, data) {
     const job = this.current;
-    if (!job || data.id !== job.id) return;
+    if (worker !== this.worker || !job || data.id !== job.id) return;
     if ('progress' in data) return void job.onProgress?.(data.progress);
-    job.signal?.removeEventListener('abort', job.onAbort);
-    this.current = null;
-    if ('error' in data) job.reject(new Error(data.error));
-    else job.resolve(data.result);
-    this.pump();
+    if ('error' in data) {
+      const err = new Error(data.error);
+      if (data.name && data.name !== 'Error') err.name = data.name;
+      this.finish(job, err, false);
+    } else {
+      this.finish(job, null, false, data.result);
+    }
   }
 
-  fail(error) {
-    const job = this.current;
-    this.worker?.terminate();
-    this.worker = null;
+  /** The worker failed to load or died: the running call fails with the cause. */
+  dead(worker, event) {
+    if (worker !== this.worker) return;
+    const where = event?.filename ? ` (${event.filename}${event.lineno ? `:${event.lineno}` : ''})` : '';
+    const cause = event?.message || 'its script, or a module it imports, could not be loaded or evaluated; see the browser console';
+    const error = new Error(`The patternsynth worker failed: ${cause}${where}.`);
+    if (this.current) this.finish(this.current, error, true);
+    else {
+      this.worker.terminate();
+      this.worker = null;
+    }
+  }
+
+  /** Settles the running `job`; `stop` also ends its worker (the next call makes one). */
+  finish(job, error, stop, result) {
+    job.signal?.removeEventListener('abort', job.onAbort);
+    if (stop) {
+      this.worker?.terminate();
+      this.worker = null;
+    }
     this.current = null;
-    job?.reject(error);
+    if (error) job.reject(error);
+    else job.resolve(result);
     this.pump();
   }
+}
+
+// One method per entry point of the table, taking its arguments and then CallOptions.
+for (const [name, spec] of Object.entries(METHODS)) {
+  Object.defineProperty(PatternSynthClient.prototype, name, {
+    value: function (...args) {
+      return this.run(name, args.slice(0, spec.args), args[spec.args]);
+    },
+    writable: true,
+    configurable: true,
+  });
 }
 
 function abortError(message = 'The operation was aborted.') {

@@ -1,18 +1,14 @@
-// Web Worker that runs the wasm engines off the main thread. Start it with
-// `new Worker(new URL('patternsynth/worker', import.meta.url), { type: 'module' })`, or
-// let `PatternSynthClient` (patternsynth/client) do it for you.
+// Web Worker that runs the wasm engines off the main thread. `PatternSynthClient`
+// (patternsynth/client) starts it; see the README for bundlers that need it passed in.
 //
 // Protocol: { id, method, args } in; { id, progress } ... then { id, result } or
-// { id, error } out. A synchronous wasm call cannot read messages, so cancelling is done
-// by the client terminating this worker.
+// { id, error, name } out. A synchronous wasm call cannot read messages, so cancelling
+// is done by the client terminating this worker. After a trap the engine replaces its
+// own instance (instance.js), so this worker stays usable.
 import init, * as api from './patternsynth.js';
+import { METHODS } from './api.js';
 
 const ready = init();
-const METHODS = new Set([
-  'parseSvg', 'parseSvgReport', 'classifyStrokes', 'synthesizeStrokes', 'strokeTile', 'exampleStrokes', 'version',
-  'synthesizeTexture', 'blendTextures', 'seamlessTile', 'decodeImage', 'encodePng',
-]);
-const WITH_PROGRESS = new Set(['synthesizeStrokes', 'synthesizeTexture', 'blendTextures', 'seamlessTile']);
 
 // Pixel buffers go back by transfer, not by copy.
 const transferables = (r) => {
@@ -25,12 +21,16 @@ self.onmessage = async ({ data }) => {
   const { id, method, args = [] } = data;
   try {
     await ready;
-    if (!METHODS.has(method)) throw new Error(`Unknown method '${method}'.`);
-    const call = WITH_PROGRESS.has(method)
-      ? api[method](...args, (fraction) => { self.postMessage({ id, progress: fraction }); })
-      : api[method](...args);
-    self.postMessage({ id, result: call }, transferables(call));
+    const spec = Object.hasOwn(METHODS, method) ? METHODS[method] : null;
+    if (!spec) throw new Error(`Unknown method '${method}'.`);
+    const callArgs = args.slice(0, spec.args);
+    if (spec.progress) {
+      callArgs.length = spec.args;
+      callArgs.push((fraction) => { self.postMessage({ id, progress: fraction }); });
+    }
+    const result = api[method](...callArgs);
+    self.postMessage({ id, result }, transferables(result));
   } catch (e) {
-    self.postMessage({ id, error: e instanceof Error ? e.message : String(e) });
+    self.postMessage({ id, error: e instanceof Error ? e.message : String(e), name: e?.name });
   }
 };

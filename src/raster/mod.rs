@@ -1,6 +1,7 @@
 //! Engine 2: texture synthesis and blending (SPEC section 2): Wei-Levoy multi-resolution
 //! neighbourhood matching against one or two exemplars.
 
+#[cfg(feature = "codec")]
 pub mod codec;
 pub mod coefficient;
 pub mod energy;

@@ -20,7 +20,7 @@
 use super::image::{check_output, check_size, torus_index, Image, Rgba};
 use super::neighbourhood::Shape;
 use super::pyramid::{self, Edge};
-use crate::error::{invalid, Result};
+use crate::error::{invalid, Error, Result};
 use crate::progress::Throttle;
 use crate::rng::Rng;
 
@@ -147,6 +147,12 @@ fn block(
     k
 }
 
+/// Output pixels x exemplar positions up to which the coarsest level is searched
+/// exhaustively (a 128-pixel exemplar at 256 x 256 out needs 0.3 M).
+const COARSE_EXHAUSTIVE_BUDGET: usize = 1 << 23;
+/// Output pixels x exemplar positions the exhaustive reference mode may compare.
+const EXHAUSTIVE_BUDGET: f64 = 4e9;
+
 /// Default number of levels: the coarsest exemplar about 16 pixels on its short side
 /// (at least the neighbourhood), the coarsest output at least 8; at most 5.
 fn default_levels(exemplars: &[&Image], width: usize, height: usize, side: usize) -> usize {
@@ -208,6 +214,16 @@ pub fn synthesize(sources: Sources, params: &Params, progress: &mut Throttle) ->
         Some(l) => l,
         None => default_levels(&exemplars, width, height, side),
     };
+    if params.exhaustive {
+        let positions: f64 = exemplars.iter().map(|e| (e.width * e.height) as f64).sum();
+        let comparisons = (width * height) as f64 * positions * 4.0 / 3.0;
+        if comparisons > EXHAUSTIVE_BUDGET {
+            return Err(Error::TooLarge(format!(
+                "Exhaustive search would compare {comparisons:.1e} neighbourhoods (the limit is {EXHAUSTIVE_BUDGET:.0e}, \
+                 minutes of work); use the default search, or smaller images."
+            )));
+        }
+    }
     let half = (side / 2) as isize;
     let causal = Shape::causal(half);
     let full = Shape::full(half);
@@ -245,7 +261,13 @@ pub fn synthesize(sources: Sources, params: &Params, progress: &mut Throttle) ->
             lh,
             parent_size: sizes.get(level + 1).copied().unwrap_or((1, 1)),
             with_parent,
-            exhaustive: params.exhaustive || level + 1 == levels,
+            // The coarsest level is searched exhaustively when that is cheap (a few
+            // hundred exemplar positions); a thin exemplar has only one level, at full
+            // size, where exhaustive search would take minutes: coherent search there.
+            exhaustive: params.exhaustive
+                || (level + 1 == levels
+                    && (lw * lh).saturating_mul(exs.iter().map(|e| e.levels[level].data.len()).sum())
+                        <= COARSE_EXHAUSTIVE_BUDGET),
             random: params.random_candidates,
             parent_src: &parent_src,
         };

@@ -9,6 +9,7 @@ pub mod lattice;
 pub mod regularity;
 pub mod spatial;
 pub mod stroke;
+pub mod svg_budget;
 pub mod svg_export;
 pub mod svg_import;
 pub mod synthesize;

@@ -6,9 +6,11 @@
 
 use super::color::Rgb;
 use super::stroke::Stroke;
+use super::svg_budget;
 use crate::error::{Error, Result};
 use kurbo::{Affine, BezPath, PathEl, Point};
 use serde::{Deserialize, Serialize};
+use usvg::roxmltree;
 use usvg::tiny_skia_path::PathSegment;
 
 #[derive(Clone, Debug, Deserialize)]
@@ -38,6 +40,33 @@ pub struct Import {
     pub height: f64,
 }
 
+/// Largest coordinate (and stroke width) kept, in user units after transforms.
+pub const MAX_COORD: f64 = 1e7;
+/// The flattening tolerance is at least this fraction of a path's extent.
+const MIN_RELATIVE_TOLERANCE: f64 = 1e-6;
+
+/// The extent (largest side of the control-point box) of a path whose every point is
+/// finite and within `MAX_COORD`, or `None`.
+fn extent(bez: &BezPath) -> Option<f64> {
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for el in bez.elements() {
+        let pts: &[Point] = match el {
+            PathEl::MoveTo(a) | PathEl::LineTo(a) => std::slice::from_ref(a),
+            PathEl::QuadTo(a, b) => &[*a, *b],
+            PathEl::CurveTo(a, b, c) => &[*a, *b, *c],
+            PathEl::ClosePath => &[],
+        };
+        for p in pts {
+            if !(p.x.abs() <= MAX_COORD && p.y.abs() <= MAX_COORD) {
+                return None;
+            }
+            lo = [lo[0].min(p.x), lo[1].min(p.y)];
+            hi = [hi[0].max(p.x), hi[1].max(p.y)];
+        }
+    }
+    Some((hi[0] - lo[0]).max(hi[1] - lo[1]).max(0.0))
+}
+
 /// Largest SVG source accepted (bytes): a drawing, not a data dump.
 pub const MAX_SVG_BYTES: usize = 32 << 20;
 
@@ -52,19 +81,30 @@ pub fn parse_svg(svg: &str, opts: &ImportOptions) -> Result<Import> {
     if !(opts.tolerance.is_finite() && opts.tolerance > 0.0) {
         return Err(Error::InvalidInput("The flattening tolerance must be a positive number.".into()));
     }
-    let tree = usvg::Tree::from_str(svg, &usvg::Options::default()).map_err(|e| Error::Svg(describe(&e)))?;
+    svg_budget::check_source(svg)?;
+    let xml = roxmltree::ParsingOptions { allow_dtd: true, ..Default::default() };
+    let doc = roxmltree::Document::parse_with_options(svg, xml)
+        .map_err(|e| Error::Svg(describe(&usvg::Error::ParsingFailed(e))))?;
+    let shape = svg_budget::measure(&doc);
+    svg_budget::check(&shape)?;
+    let tree = usvg::Tree::from_xmltree(&doc, &usvg::Options::default()).map_err(|e| Error::Svg(describe(&e)))?;
     let mut import = Import {
         strokes: Vec::new(),
         warnings: Vec::new(),
         width: tree.size().width() as f64,
         height: tree.size().height() as f64,
     };
-    let mut walker = Walker { opts, out: &mut import, gradients: 0, points: 0 };
+    let mut walker = Walker { opts, out: &mut import, gradients: 0, points: 0, out_of_range: 0 };
     walker.group(tree.root(), 1.0)?;
-    let gradients = walker.gradients;
-    let texts = count_elements(svg, "text");
+    let (gradients, out_of_range) = (walker.gradients, walker.out_of_range);
+    let texts = shape.texts;
     if texts > 0 {
         import.warnings.push(format!("{texts} <text> element(s) were left out: text is not converted to strokes (convert text to paths in your editor first)."));
+    }
+    if out_of_range > 0 {
+        import.warnings.push(format!(
+            "{out_of_range} shape(s) lie beyond ±{MAX_COORD:e} units (after their transforms) and were left out."
+        ));
     }
     if gradients > 0 {
         import.warnings.push(format!("{gradients} gradient or pattern paint(s) were replaced by a single colour."));
@@ -84,19 +124,13 @@ fn describe(e: &usvg::Error) -> String {
     }
 }
 
-/// Elements named `tag` in the document (usvg drops text without its font feature, so
-/// we count them from the XML itself to report them).
-fn count_elements(svg: &str, tag: &str) -> usize {
-    usvg::roxmltree::Document::parse(svg)
-        .map(|d| d.descendants().filter(|n| n.is_element() && n.tag_name().name() == tag).count())
-        .unwrap_or(0)
-}
-
 struct Walker<'a> {
     opts: &'a ImportOptions,
     out: &'a mut Import,
     gradients: usize,
     points: usize,
+    /// Paths left out for coordinates or widths beyond `MAX_COORD`.
+    out_of_range: usize,
 }
 
 impl Walker<'_> {
@@ -145,6 +179,16 @@ impl Walker<'_> {
         }
         bez.apply_affine(affine);
 
+        // Geometry that no drawing has (a radius of 1e20, scale(1e15)) is left out with a
+        // warning: flattening it would need more points than memory holds.
+        let extent = match extent(&bez) {
+            Some(e) => e,
+            None => {
+                self.out_of_range += 1;
+                return Ok(());
+            }
+        };
+
         let mut template = Stroke::new(Vec::new(), 0.0, None);
         template.opacity = opacity.clamp(0.0, 1.0);
         if let Some(f) = p.fill() {
@@ -156,29 +200,45 @@ impl Walker<'_> {
             template.stroke_opacity = s.opacity().get() as f64;
             // A non-uniform scale has no single width: use the geometric mean.
             template.width = s.width().get() as f64 * affine.determinant().abs().sqrt();
+            if !(template.width.is_finite() && template.width <= MAX_COORD) {
+                self.out_of_range += 1;
+                return Ok(());
+            }
         }
 
+        // The tolerance is relative to the path's size too, so that a tiny tolerance on a
+        // large path cannot ask for billions of points; the point cap is checked as the
+        // points come, before they are stored.
+        let tolerance = self.opts.tolerance.max(extent * MIN_RELATIVE_TOLERANCE);
+        let budget = self.opts.max_points.saturating_sub(self.points);
+        let mut count = 0usize;
         let mut subpaths: Vec<(Vec<[f64; 2]>, bool)> = Vec::new();
-        kurbo::flatten(bez, self.opts.tolerance, |el| match el {
-            PathEl::MoveTo(a) => subpaths.push((vec![[a.x, a.y]], false)),
-            PathEl::LineTo(a) => {
-                if let Some((pts, _)) = subpaths.last_mut() {
-                    pts.push([a.x, a.y]);
-                }
+        kurbo::flatten(bez, tolerance, |el| {
+            count += 1;
+            if count > budget {
+                return;
             }
-            PathEl::ClosePath => {
-                if let Some((pts, closed)) = subpaths.last_mut() {
-                    *closed = true;
-                    // The closing point repeats the start: drop it, `closed` redraws it.
-                    if pts.len() > 1 && pts.first() == pts.last() {
-                        pts.pop();
+            match el {
+                PathEl::MoveTo(a) => subpaths.push((vec![[a.x, a.y]], false)),
+                PathEl::LineTo(a) => {
+                    if let Some((pts, _)) = subpaths.last_mut() {
+                        pts.push([a.x, a.y]);
                     }
                 }
+                PathEl::ClosePath => {
+                    if let Some((pts, closed)) = subpaths.last_mut() {
+                        *closed = true;
+                        // The closing point repeats the start: drop it, `closed` redraws it.
+                        if pts.len() > 1 && pts.first() == pts.last() {
+                            pts.pop();
+                        }
+                    }
+                }
+                _ => {}
             }
-            _ => {}
         });
         self.points += subpaths.iter().map(|s| s.0.len()).sum::<usize>();
-        if self.points > self.opts.max_points {
+        if count > budget {
             return Err(Error::TooLarge(format!(
                 "The SVG flattens to more than {} points; raise the tolerance or simplify it.",
                 self.opts.max_points

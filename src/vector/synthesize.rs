@@ -5,7 +5,7 @@ use super::classify::{classify, propose_tolerances, Tolerances};
 use super::grow::{grow, Element, GrowOptions, GrowStats};
 use super::stroke::Stroke;
 use super::svg_export::to_svg;
-use crate::error::{invalid, Result};
+use crate::error::{invalid, Error, Result};
 use crate::progress::{Progress, Throttle};
 use crate::rng::Rng;
 use serde::{Deserialize, Serialize};
@@ -111,6 +111,11 @@ pub fn classify_strokes(
     Ok(Classification { classes, count, tolerances, proposed })
 }
 
+/// The most elements any output may hold, whatever `maxElements` says.
+pub const MAX_ELEMENTS_CEILING: usize = 2_000_000;
+/// The most points an output's strokes may hold together (about 20 bytes each as SVG).
+pub const MAX_OUTPUT_POINTS: usize = 20_000_000;
+
 /// Synthesizes a `width x height` pattern from the example `strokes`.
 pub fn synthesize_strokes(
     strokes: &[Stroke],
@@ -120,7 +125,16 @@ pub fn synthesize_strokes(
     if !(opts.support.is_finite() && opts.support > 0.0 && opts.support <= 1.0) {
         return invalid("The support ratio must be in (0, 1].");
     }
+    if opts.max_elements > MAX_ELEMENTS_CEILING {
+        return Err(Error::TooLarge(format!(
+            "maxElements can be raised to at most {MAX_ELEMENTS_CEILING} (the memory of the output), not {}.",
+            opts.max_elements
+        )));
+    }
     let classification = classify_strokes(strokes, opts.path_tolerance, opts.width_tolerance, opts.color_tolerance)?;
+    // The output's size is its points, not only its elements: busy strokes lower the cap.
+    let mean_points = strokes.iter().map(|s| s.points.len().max(1)).sum::<usize>() / strokes.len().max(1);
+    let max_elements = opts.max_elements.min(MAX_OUTPUT_POINTS / mean_points.max(1));
     Throttle::new(progress).tick(0.02)?;
     let elements: Vec<Element> = strokes
         .iter()
@@ -131,7 +145,7 @@ pub fn synthesize_strokes(
         width: opts.width,
         height: opts.height,
         support: opts.support,
-        max_elements: opts.max_elements,
+        max_elements,
         regularize: opts.regularize,
         ..GrowOptions::default()
     };

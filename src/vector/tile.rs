@@ -20,7 +20,7 @@ use super::grow::{fit_lattice, Element};
 use super::stroke::Stroke;
 use super::svg_export::to_svg;
 use super::synthesize::{classify_strokes, Classification};
-use crate::error::{invalid, Result};
+use crate::error::{invalid, Error, Result};
 use crate::rng::Rng;
 use kurbo::{Point, Rect, Vec2};
 use serde::{Deserialize, Serialize};
@@ -93,6 +93,9 @@ fn axis_combination(a: Vec2, b: Vec2, axis: usize) -> Option<(i64, i64, f64)> {
 }
 
 /// A seamless tile from the example `strokes`.
+/// Most strokes a tile may hold, edge copies included.
+pub const MAX_TILE_STROKES: usize = 100_000;
+
 pub fn stroke_tile(strokes: &[Stroke], opts: &TileOptions) -> Result<TileResult> {
     if !(1..=8).contains(&opts.repeats) {
         return invalid("repeats must be from 1 to 8.");
@@ -207,8 +210,19 @@ pub fn stroke_tile(strokes: &[Stroke], opts: &TileOptions) -> Result<TileResult>
                 // wherever it crosses an edge.
                 let half = 0.5 * moved.width.max(0.0);
                 let bb = moved.bounds().inflate(half, half);
-                let (nx0, nx1) = ((-bb.x1 / width).ceil() as i64, ((width - bb.x0) / width).floor() as i64);
-                let (ny0, ny1) = ((-bb.y1 / height).ceil() as i64, ((height - bb.y0) / height).floor() as i64);
+                let (nx0, nx1) = ((-bb.x1 / width).ceil(), ((width - bb.x0) / width).floor());
+                let (ny0, ny1) = ((-bb.y1 / height).ceil(), ((height - bb.y0) / height).floor());
+                // Counted before any is made: a stroke much wider than the repeat is
+                // copied at every period it covers, (width / period)^2 times.
+                let copies = (nx1 - nx0 + 1.0).max(1.0) * (ny1 - ny0 + 1.0).max(1.0);
+                if copies.is_nan() || placed.len() as f64 + copies > MAX_TILE_STROKES as f64 {
+                    return Err(Error::TooLarge(format!(
+                        "The tile would hold more than {MAX_TILE_STROKES} strokes: strokes much wider than the \
+                         repeat ({:.0} x {:.0}) are repeated at every period they cover. Draw thinner strokes.",
+                        width, height
+                    )));
+                }
+                let (nx0, nx1, ny0, ny1) = (nx0 as i64, nx1 as i64, ny0 as i64, ny1 as i64);
                 for nx in nx0..=nx1 {
                     for ny in ny0..=ny1 {
                         let (dx, dy) = (nx as f64 * width, ny as f64 * height);

@@ -97,7 +97,7 @@ test('the package resolves by name in Node and in a bundler', () => {
   const esbuild = resolve('node_modules/.bin/esbuild');
   execFileSync(esbuild, ['entry.js', '--bundle', '--format=esm', '--platform=browser', '--outfile=bundle.js', '--loader:.wasm=file'], { cwd: dir });
   const bundle = readFileSync(join(dir, 'bundle.js'), 'utf8');
-  assert.match(bundle, /patternsynth_bg\.wasm/);
+  assert.match(bundle, /full_bg\.wasm/);
   assert.doesNotMatch(bundle, /node:fs/);
 
   // Types are shipped.

@@ -1,0 +1,246 @@
+//! What an SVG document will make the parser and the resolver do, measured before they
+//! run, so a hostile document gets a clear refusal instead of a stack overflow or a hang.
+//!
+//! Three costs are not bounded by the document's size alone:
+//! - **Depth.** usvg resolves the tree recursively, one stack frame chain per nesting
+//!   level and per reference hop (`<use>`, `href`, `url(#id)`); a few hundred levels
+//!   overflow the wasm stack, and that kills the instance, not just the call.
+//! - **Attributes per element.** roxmltree compares each attribute of an element with
+//!   every other one (duplicate check), which is quadratic in attributes per element.
+//! - **CSS.** usvg matches every style-sheet rule against every element it builds,
+//!   including the copies `<use>` makes: rules x elements selector matches; and reading
+//!   the style sheet itself takes time quadratic in its rules.
+
+use crate::error::{Error, Result};
+use std::collections::HashMap;
+use usvg::roxmltree::{Document, Node};
+
+/// Deepest nesting accepted, counting element levels and reference hops together.
+/// Real drawings stay below 30; the resolver's stack holds well over twice this.
+pub const MAX_DEPTH: u32 = 100;
+/// Attribute comparisons the XML parser may make (about a second in wasm).
+pub const MAX_ATTRIBUTE_PAIRS: u64 = 20_000_000;
+/// Style-sheet rules accepted: reading a sheet costs the resolver time quadratic in
+/// its rules (8,000 take 6 s in wasm, 2,000 under half a second).
+pub const MAX_CSS_RULES: u64 = 2_000;
+/// CSS selector matches the resolver may make (rules x elements, after `<use>` copies).
+pub const MAX_CSS_MATCHES: u64 = 20_000_000;
+/// Elements after `<use>` expansion (usvg's own limit is a million nodes).
+pub const MAX_EXPANDED_ELEMENTS: u64 = 1_000_000;
+
+/// Attribute comparisons roxmltree's duplicate check will make: the sum over start
+/// tags of n(n-1)/2, with n the `=` signs between `<name` and the tag's end. Counting
+/// `=` inside values too only overestimates. Linear in the source, run before parsing.
+pub fn attribute_pairs(svg: &str) -> u64 {
+    let bytes = svg.as_bytes();
+    let (mut pairs, mut i) = (0u64, 0);
+    while i < bytes.len() {
+        if bytes[i] == b'<' && bytes.get(i + 1).is_some_and(|c| c.is_ascii_alphabetic() || *c == b'_' || *c == b':') {
+            let mut n = 0u64;
+            i += 1;
+            while i < bytes.len() && bytes[i] != b'>' && bytes[i] != b'<' {
+                n += u64::from(bytes[i] == b'=');
+                i += 1;
+            }
+            pairs = pairs.saturating_add(n * n.saturating_sub(1) / 2);
+        } else {
+            i += 1;
+        }
+    }
+    pairs
+}
+
+/// Refuses a source whose attribute check alone would take seconds.
+pub fn check_source(svg: &str) -> Result<()> {
+    let pairs = attribute_pairs(svg);
+    if pairs > MAX_ATTRIBUTE_PAIRS {
+        return Err(Error::TooLarge(format!(
+            "The SVG has elements with thousands of attributes ({pairs} attribute pairs to check; the limit is {MAX_ATTRIBUTE_PAIRS})."
+        )));
+    }
+    Ok(())
+}
+
+/// The shape of a parsed document, as far as the resolver's cost goes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Shape {
+    /// Longest chain of nesting levels and reference hops.
+    pub depth: u32,
+    /// Elements after `<use>` copies (saturating).
+    pub expanded: u64,
+    /// Style-sheet rules (one per selector of a comma list).
+    pub css_rules: u64,
+    /// `<text>` elements (left out without fonts; reported).
+    pub texts: usize,
+}
+
+/// Measures `doc` without recursion: an explicit-stack post-order walk over elements,
+/// their child elements and the elements they reference. A reference cycle counts as
+/// a leaf here (usvg itself drops recursive references).
+pub fn measure(doc: &Document) -> Shape {
+    let nodes: Vec<Node> = doc.descendants().filter(|n| n.is_element()).collect();
+    let index: HashMap<_, usize> = nodes.iter().enumerate().map(|(i, n)| (n.id(), i)).collect();
+    let by_id: HashMap<&str, usize> =
+        nodes.iter().enumerate().filter_map(|(i, n)| n.attribute("id").map(|id| (id, i))).collect();
+
+    // Edges: child elements, then references; `copies` marks the edges usvg expands
+    // into new elements (a `<use>`'s target), the others it converts once.
+    let mut edges: Vec<Vec<(usize, bool)>> = vec![Vec::new(); nodes.len()];
+    let mut css_rules = 0;
+    let mut texts = 0;
+    for (i, n) in nodes.iter().enumerate() {
+        let is_use = n.tag_name().name() == "use";
+        edges[i].extend(n.children().filter_map(|c| index.get(&c.id())).map(|&c| (c, true)));
+        for a in n.attributes() {
+            let value = a.value();
+            let target = if a.name() == "href" { value.strip_prefix('#') } else { None };
+            let targets = target.into_iter().chain(url_refs(value));
+            for t in targets.filter_map(|t| by_id.get(t)) {
+                edges[i].push((*t, is_use && a.name() == "href"));
+            }
+        }
+        match n.tag_name().name() {
+            "style" => css_rules += n.text().map(count_rules).unwrap_or(0),
+            "text" => texts += 1,
+            _ => {}
+        }
+    }
+
+    const NEW: u8 = 0;
+    const OPEN: u8 = 1;
+    const DONE: u8 = 2;
+    let mut state = vec![NEW; nodes.len()];
+    let mut depth = vec![0u32; nodes.len()];
+    let mut size = vec![0u64; nodes.len()];
+    let (mut max_depth, mut expanded) = (0, 0u64);
+    for root in 0..nodes.len() {
+        if state[root] != NEW {
+            continue;
+        }
+        let mut stack = vec![(root, 0usize)];
+        state[root] = OPEN;
+        while let Some(&mut (n, ref mut next)) = stack.last_mut() {
+            if let Some(&(m, _)) = edges[n].get(*next) {
+                *next += 1;
+                if state[m] == NEW {
+                    state[m] = OPEN;
+                    stack.push((m, 0));
+                }
+                continue;
+            }
+            // All edges done: a cycle's open targets count as leaves.
+            let (mut d, mut s) = (0u32, 1u64);
+            for &(m, copies) in &edges[n] {
+                if state[m] == DONE {
+                    d = d.max(depth[m]);
+                    if copies {
+                        s = s.saturating_add(size[m]);
+                    }
+                }
+            }
+            depth[n] = d + 1;
+            size[n] = s;
+            state[n] = DONE;
+            stack.pop();
+        }
+        max_depth = max_depth.max(depth[root]);
+        expanded = expanded.max(size[root]);
+    }
+    Shape { depth: max_depth, expanded, css_rules, texts }
+}
+
+/// Refuses a document whose resolution would overflow the stack or take minutes.
+pub fn check(shape: &Shape) -> Result<()> {
+    if shape.depth > MAX_DEPTH {
+        return Err(Error::TooLarge(format!(
+            "The SVG nests {} levels deep (groups inside groups, or <use> and url(#...) references in a chain); the limit is {MAX_DEPTH}.",
+            shape.depth
+        )));
+    }
+    if shape.expanded > MAX_EXPANDED_ELEMENTS {
+        return Err(Error::TooLarge(format!(
+            "The SVG's <use> copies expand to more than {MAX_EXPANDED_ELEMENTS} elements."
+        )));
+    }
+    if shape.css_rules > MAX_CSS_RULES {
+        return Err(Error::TooLarge(format!(
+            "The SVG's style sheet has {} rules; the limit is {MAX_CSS_RULES}: inline the styles or remove unused rules.",
+            shape.css_rules
+        )));
+    }
+    let matches = shape.expanded.saturating_mul(shape.css_rules);
+    if matches > MAX_CSS_MATCHES {
+        return Err(Error::TooLarge(format!(
+            "The SVG's style sheet has {} rules for {} elements ({matches} selector matches; the limit is {MAX_CSS_MATCHES}): inline the styles or remove unused rules.",
+            shape.css_rules, shape.expanded
+        )));
+    }
+    Ok(())
+}
+
+/// The ids in `url(#id)` references of an attribute value.
+fn url_refs(value: &str) -> impl Iterator<Item = &str> {
+    value.split("url(").skip(1).filter_map(|rest| {
+        let rest = rest.trim_start().trim_start_matches(['"', '\'']).strip_prefix('#')?;
+        rest.split([')', '"', '\'']).next()
+    })
+}
+
+/// Style rules in a sheet: one per selector of each block (`a, b { }` is two), as the
+/// resolver stores them. Comments and strings are not special-cased: an overestimate.
+fn count_rules(css: &str) -> u64 {
+    let (mut rules, mut selectors, mut level) = (0u64, 1u64, 0u32);
+    for c in css.chars() {
+        match c {
+            '{' => {
+                if level == 0 {
+                    rules += selectors;
+                }
+                level += 1;
+            }
+            '}' => {
+                level = level.saturating_sub(1);
+                selectors = 1;
+            }
+            ',' if level == 0 => selectors += 1,
+            _ => {}
+        }
+    }
+    rules
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use usvg::roxmltree::Document;
+
+    fn shape(svg: &str) -> Shape {
+        measure(&Document::parse(svg).unwrap())
+    }
+
+    #[test]
+    fn depth_counts_levels_and_reference_hops() {
+        let nested = format!("<svg>{}<rect/>{}</svg>", "<g>".repeat(10), "</g>".repeat(10));
+        assert_eq!(shape(&nested).depth, 12);
+        let chain: String = (1..=20).map(|i| format!("<use id='u{i}' href='#u{}'/>", i - 1)).collect();
+        let s = shape(&format!("<svg><rect id='u0'/>{chain}</svg>"));
+        assert_eq!(s.depth, 22);
+        assert_eq!(s.expanded, 1 + 21 + 20 * 21 / 2, "each use copies the chain below it");
+        let clip = "<svg><clipPath id='c'><rect clip-path='url(#d)'/></clipPath><clipPath id='d'><rect/></clipPath><g clip-path=\"url('#c')\"/></svg>";
+        assert_eq!(shape(clip).depth, 6, "svg, g, clipPath, rect, clipPath, rect");
+    }
+
+    #[test]
+    fn cycles_terminate() {
+        let s = shape("<svg><use id='a' href='#b'/><use id='b' href='#a'/><g id='c' fill='url(#c)'/></svg>");
+        assert!(s.depth <= 3, "{s:?}");
+    }
+
+    #[test]
+    fn css_rules_and_attribute_pairs() {
+        assert_eq!(count_rules(".a{fill:red} .b, .c {stroke:blue} @media x { .d {} }"), 4);
+        assert_eq!(attribute_pairs("<svg a='1' b='2' c='3'><g x='1'/></svg>"), 3);
+        let many: String = (0..7000).map(|i| format!(" a{i}='1'")).collect();
+        assert!(check_source(&format!("<svg{many}/>")).is_err());
+    }
+}

@@ -1,0 +1,156 @@
+//! Engines 2 and 3's entry points: texture synthesis, blends, seamless tiles.
+
+use super::{error, from_js, from_js_with, js_error, to_js, type_name, JsProgress};
+use crate::raster::{self, coefficient::Transfer, Coefficient, Image};
+use crate::seamless;
+use wasm_bindgen::prelude::*;
+
+/// Reads `{ width, height, data }` (RGBA bytes) from JS into an engine image.
+fn image_from_js(v: &JsValue, what: &str) -> Result<Image, JsValue> {
+    let (w, h, bytes) = rgba_from_js(v, what)?;
+    Image::from_rgba8(w, h, &bytes).map_err(js_error)
+}
+
+/// Reads `{ width, height, data }` as size and RGBA bytes; the data's length is checked
+/// against the size before anything is copied.
+pub(super) fn rgba_from_js(v: &JsValue, what: &str) -> Result<(usize, usize, Vec<u8>), JsValue> {
+    if !v.is_object() {
+        return Err(error(&format!(
+            "The {what} must be an object {{ width, height, data }} (e.g. an ImageData), got {}.",
+            type_name(v)
+        )));
+    }
+    let get = |k: &str| js_sys::Reflect::get(v, &JsValue::from_str(k)).unwrap_or(JsValue::UNDEFINED);
+    let dim = |k: &str| -> Result<usize, JsValue> {
+        let n = get(k).as_f64().ok_or_else(|| error(&format!("The {what}'s {k} must be a number.")))?;
+        if !(n.is_finite() && n >= 0.0 && n.fract() == 0.0 && n <= u32::MAX as f64) {
+            return Err(error(&format!("The {what}'s {k} must be a whole number, got {n}.")));
+        }
+        Ok(n as usize)
+    };
+    let (w, h) = (dim("width")?, dim("height")?);
+    raster::image::check_size(w, h, what).map_err(js_error)?;
+    let data = get("data");
+    let length = if let Some(a) = data.dyn_ref::<js_sys::Uint8ClampedArray>() {
+        a.length()
+    } else if let Some(a) = data.dyn_ref::<js_sys::Uint8Array>() {
+        a.length()
+    } else {
+        return Err(error(&format!(
+            "The {what}'s data must be a Uint8Array or Uint8ClampedArray of RGBA bytes, got {}.",
+            type_name(&data)
+        )));
+    };
+    if length as usize != w * h * 4 {
+        return Err(error(&format!("The {what}'s data holds {length} bytes; {w} x {h} RGBA needs {}.", w * h * 4)));
+    }
+    let bytes = match data.dyn_ref::<js_sys::Uint8ClampedArray>() {
+        Some(a) => a.to_vec(),
+        None => data.unchecked_ref::<js_sys::Uint8Array>().to_vec(),
+    };
+    Ok((w, h, bytes))
+}
+
+pub(super) fn rgba_to_js(width: usize, height: usize, data: &[u8]) -> JsValue {
+    let o = js_sys::Object::new();
+    let set = |k: &str, v: JsValue| {
+        let _ = js_sys::Reflect::set(&o, &JsValue::from_str(k), &v);
+    };
+    set("width", JsValue::from_f64(width as f64));
+    set("height", JsValue::from_f64(height as f64));
+    set("data", js_sys::Uint8ClampedArray::from(data).into());
+    o.into()
+}
+
+/// Options objects that carry the output size must be given.
+fn required(opts: &JsValue, call: &str) -> Result<(), JsValue> {
+    if opts.is_undefined() || opts.is_null() {
+        return Err(error(&format!("{call} needs options with the output size: {{ width, height }}.")));
+    }
+    Ok(())
+}
+
+/// More of one texture ("make more of this texture").
+#[wasm_bindgen(js_name = synthesizeTexture)]
+pub fn synthesize_texture(image: JsValue, opts: JsValue, on_progress: JsValue) -> Result<JsValue, JsValue> {
+    let ex = image_from_js(&image, "image")?;
+    required(&opts, "synthesizeTexture")?;
+    let opts: raster::TextureOptions = from_js(opts, "texture options")?;
+    let mut progress = JsProgress::from_js(on_progress)?;
+    let res = raster::synthesize_texture(&ex, &opts, &mut progress);
+    let out = progress.finish(res)?;
+    Ok(rgba_to_js(out.width, out.height, &out.data))
+}
+
+/// The blend options' own keys beside those of `TextureOptions` (read by hand:
+/// `coefficient` may be a string or a Float32Array).
+const BLEND_KEYS: [&str; 3] = ["coefficient", "angle", "transfer"];
+
+fn transfer(name: &str) -> Result<Transfer, JsValue> {
+    match name {
+        "linear" => Ok(Transfer::Linear),
+        "ease" => Ok(Transfer::Ease),
+        "steep" => Ok(Transfer::Steep),
+        other => Err(error(&format!("Unknown transition '{other}': use 'linear', 'ease' or 'steep'."))),
+    }
+}
+
+/// Two textures blended by a generation coefficient (A where it is 1, B where it is 0).
+#[wasm_bindgen(js_name = blendTextures)]
+pub fn blend_textures(a: JsValue, b: JsValue, opts: JsValue, on_progress: JsValue) -> Result<JsValue, JsValue> {
+    let a = image_from_js(&a, "first image (A)")?;
+    let b = image_from_js(&b, "second image (B)")?;
+    required(&opts, "blendTextures")?;
+    let key = |k: &str| {
+        if opts.is_object() {
+            js_sys::Reflect::get(&opts, &JsValue::from_str(k)).unwrap_or(JsValue::UNDEFINED)
+        } else {
+            JsValue::UNDEFINED
+        }
+    };
+    let (coefficient_js, angle_js, transfer_js) = (key("coefficient"), key("angle"), key("transfer"));
+    let base: raster::TextureOptions = from_js_with(opts, "blend options", &BLEND_KEYS)?;
+    let angle = match angle_js.as_f64() {
+        Some(a) if a.is_finite() => Some(a),
+        None if angle_js.is_undefined() => None,
+        _ => return Err(error("angle must be a finite number of degrees.")),
+    };
+    let t = match transfer_js.as_string() {
+        Some(name) => transfer(&name)?,
+        None if transfer_js.is_undefined() => Transfer::Linear,
+        None => return Err(error("transfer must be 'linear', 'ease' or 'steep'.")),
+    };
+    let coefficient = if let Some(map) = coefficient_js.dyn_ref::<js_sys::Float32Array>() {
+        Coefficient::Map(map.to_vec())
+    } else if let Some(name) = coefficient_js.as_string() {
+        match (name.as_str(), angle) {
+            ("radial", _) => Coefficient::Radial(t),
+            (n, Some(angle)) => Coefficient::Angle(angle, transfer(n)?),
+            (n, None) => Coefficient::Vertical(transfer(n)?),
+        }
+    } else if coefficient_js.is_undefined() {
+        Coefficient::Vertical(Transfer::Linear)
+    } else {
+        return Err(error("coefficient must be 'linear', 'ease', 'steep', 'radial' or a Float32Array."));
+    };
+    let opts = raster::BlendOptions { base, coefficient };
+    let mut progress = JsProgress::from_js(on_progress)?;
+    let res = raster::blend_textures(&a, &b, &opts, &mut progress);
+    let out = progress.finish(res)?;
+    Ok(rgba_to_js(out.width, out.height, &out.data))
+}
+
+/// A seamless tile (SPEC 3): E-TFMCM, TFMCM or toroidal synthesis.
+#[wasm_bindgen(js_name = seamlessTile)]
+pub fn seamless_tile(image: JsValue, opts: JsValue, on_progress: JsValue) -> Result<JsValue, JsValue> {
+    let (width, height, data) = rgba_from_js(&image, "image")?;
+    let opts: seamless::SeamlessOptions = from_js(opts, "seamless tile options")?;
+    let input = raster::Rgba { width, height, data };
+    let mut progress = JsProgress::from_js(on_progress)?;
+    let res = seamless::seamless_tile(&input, &opts, &mut progress);
+    let res = progress.finish(res)?;
+    let out = to_js(&res)?;
+    let image = rgba_to_js(res.image.width, res.image.height, &res.image.data);
+    let _ = js_sys::Reflect::set(&out, &JsValue::from_str("image"), &image);
+    Ok(out)
+}

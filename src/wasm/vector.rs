@@ -1,0 +1,96 @@
+//! Engine 1's entry points: SVG import, classification, synthesis, seamless SVG tiles.
+
+use super::{error, from_js, js_error, to_js, type_name, JsProgress};
+use crate::vector;
+use wasm_bindgen::prelude::*;
+
+/// Reads an SVG document into strokes (one per subpath unless `splitSubpaths: false`).
+#[wasm_bindgen(js_name = parseSvg)]
+pub fn parse_svg(svg: JsValue, opts: JsValue) -> Result<JsValue, JsValue> {
+    to_js(&import(svg, opts)?.strokes)
+}
+
+/// Like `parseSvg`, with the document size and warnings about what was left out.
+#[wasm_bindgen(js_name = parseSvgReport)]
+pub fn parse_svg_report(svg: JsValue, opts: JsValue) -> Result<JsValue, JsValue> {
+    to_js(&import(svg, opts)?)
+}
+
+fn import(svg: JsValue, opts: JsValue) -> Result<vector::Import, JsValue> {
+    let text = string_from_js(&svg, "SVG (the document's text)")?;
+    let opts: vector::ImportOptions = from_js(opts, "SVG options")?;
+    vector::parse_svg(&text, &opts).map_err(js_error)
+}
+
+fn strokes_from_js(v: JsValue) -> Result<Vec<vector::Stroke>, JsValue> {
+    if !js_sys::Array::is_array(&v) {
+        return Err(error(&format!(
+            "Strokes must be an array of {{ points, width, stroke, fill }}, got {}.",
+            type_name(&v)
+        )));
+    }
+    serde_wasm_bindgen::from_value(v).map_err(|e| error(&format!("Invalid stroke: {e}")))
+}
+
+#[derive(serde::Deserialize, Default)]
+#[serde(rename_all = "camelCase", default, deny_unknown_fields)]
+struct ClassifyOptions {
+    path_tolerance: Option<f64>,
+    width_tolerance: Option<f64>,
+    color_tolerance: Option<f64>,
+}
+
+/// Classes of similar strokes, with the tolerances used and the automatic proposal.
+#[wasm_bindgen(js_name = classifyStrokes)]
+pub fn classify_strokes(strokes: JsValue, opts: JsValue) -> Result<JsValue, JsValue> {
+    let strokes = strokes_from_js(strokes)?;
+    let o: ClassifyOptions = from_js(opts, "classification options")?;
+    to_js(
+        &vector::classify_strokes(&strokes, o.path_tolerance, o.width_tolerance, o.color_tolerance)
+            .map_err(js_error)?,
+    )
+}
+
+#[derive(serde::Serialize)]
+struct NamedExample {
+    name: &'static str,
+    strokes: Vec<vector::Stroke>,
+}
+
+/// Built-in example drawings (the families the engine is tested on), for a page to
+/// start from.
+#[wasm_bindgen(js_name = exampleStrokes)]
+pub fn example_strokes() -> Result<JsValue, JsValue> {
+    let list: Vec<NamedExample> = vector::exemplar::families(0.015, 7)
+        .into_iter()
+        .chain(std::iter::once(vector::exemplar::busy_tile(120, 100.0, 7.0, 3, 21)))
+        .map(|e| NamedExample { name: e.name, strokes: e.strokes })
+        .collect();
+    to_js(&list)
+}
+
+/// Grows a `width x height` pattern from example strokes.
+#[wasm_bindgen(js_name = synthesizeStrokes)]
+pub fn synthesize_strokes(strokes: JsValue, opts: JsValue, on_progress: JsValue) -> Result<JsValue, JsValue> {
+    let strokes = strokes_from_js(strokes)?;
+    if opts.is_undefined() || opts.is_null() {
+        return Err(error("synthesizeStrokes needs options with the output size: { width, height }."));
+    }
+    let opts: vector::StrokeOptions = from_js(opts, "synthesis options")?;
+    let mut progress = JsProgress::from_js(on_progress)?;
+    let res = vector::synthesize_strokes(&strokes, &opts, &mut progress);
+    to_js(&progress.finish(res)?)
+}
+
+/// A seamless SVG tile of the strokes' repeat (SPEC 1.4): repeats as a CSS background.
+#[wasm_bindgen(js_name = strokeTile)]
+pub fn stroke_tile(strokes: JsValue, opts: JsValue) -> Result<JsValue, JsValue> {
+    let strokes = strokes_from_js(strokes)?;
+    let opts: vector::TileOptions = from_js(opts, "tile options")?;
+    to_js(&vector::stroke_tile(&strokes, &opts).map_err(js_error)?)
+}
+
+/// A string argument, or an error naming it.
+fn string_from_js(v: &JsValue, what: &str) -> Result<String, JsValue> {
+    v.as_string().ok_or_else(|| error(&format!("The {what} must be a string, got {}.", type_name(v))))
+}
