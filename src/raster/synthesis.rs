@@ -147,10 +147,11 @@ fn block(
     k
 }
 
-/// Output pixels x exemplar positions up to which the coarsest level is searched
-/// exhaustively (a 128-pixel exemplar at 256 x 256 out needs 0.3 M).
-const COARSE_EXHAUSTIVE_BUDGET: usize = 1 << 23;
-/// Output pixels x exemplar positions the exhaustive reference mode may compare.
+/// Output pixels x exemplar positions x neighbourhood pixels up to which the coarsest
+/// level is searched exhaustively (a 128-pixel exemplar at 256 x 256 out needs 7 M).
+const COARSE_EXHAUSTIVE_BUDGET: usize = 25 << 23;
+/// Output pixels x exemplar positions (in 5 x 5 neighbourhoods) the exhaustive
+/// reference mode may compare.
 const EXHAUSTIVE_BUDGET: f64 = 4e9;
 
 /// Default number of levels: the coarsest exemplar about 16 pixels on its short side
@@ -216,7 +217,8 @@ pub fn synthesize(sources: Sources, params: &Params, progress: &mut Throttle) ->
     };
     if params.exhaustive {
         let positions: f64 = exemplars.iter().map(|e| (e.width * e.height) as f64).sum();
-        let comparisons = (width * height) as f64 * positions * 4.0 / 3.0;
+        // In 5 x 5 neighbourhoods: a larger one costs proportionally more.
+        let comparisons = (width * height) as f64 * positions * 4.0 / 3.0 * (side * side) as f64 / 25.0;
         if comparisons > EXHAUSTIVE_BUDGET {
             return Err(Error::TooLarge(format!(
                 "Exhaustive search would compare {comparisons:.1e} neighbourhoods (the limit is {EXHAUSTIVE_BUDGET:.0e}, \
@@ -266,7 +268,9 @@ pub fn synthesize(sources: Sources, params: &Params, progress: &mut Throttle) ->
             // size, where exhaustive search would take minutes: coherent search there.
             exhaustive: params.exhaustive
                 || (level + 1 == levels
-                    && (lw * lh).saturating_mul(exs.iter().map(|e| e.levels[level].data.len()).sum())
+                    && (lw * lh)
+                        .saturating_mul(exs.iter().map(|e| e.levels[level].data.len()).sum())
+                        .saturating_mul(side * side)
                         <= COARSE_EXHAUSTIVE_BUDGET),
             random: params.random_candidates,
             parent_src: &parent_src,

@@ -1,0 +1,39 @@
+// The worker client in Chromium, against the package as the playground serves it: a
+// worker that cannot start rejects the call with the cause, and the next call starts a
+// working one; a bad input in the worker is a clear error and the worker stays usable.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { openPlayground } from './harness.mjs';
+
+test('the client recovers from a worker that fails to start and from bad input', async () => {
+  const { page, close } = await openPlayground();
+  try {
+    const out = await page.evaluate(async () => {
+      const { PatternSynthClient } = await import('./pkg/client.js');
+      let made = 0;
+      const client = new PatternSynthClient(() => {
+        made += 1;
+        return new Worker(made === 1 ? './pkg/no-such-worker.js' : './pkg/worker.js', { type: 'module' });
+      });
+      const grid = Array.from({ length: 9 }, (_, i) => ({ points: [[10 + (i % 3) * 20, 10 + Math.floor(i / 3) * 20], [15 + (i % 3) * 20, 15 + Math.floor(i / 3) * 20]], width: 1 }));
+      const first = await client.synthesizeStrokes(grid, { width: 200, height: 200 }).then(() => 'resolved', (e) => e.message);
+      const second = await client.synthesizeStrokes(grid, { width: 200, height: 200 }).then((r) => r.strokes.length, (e) => e.message);
+      const bad = await client.parseSvg(42).then(() => 'resolved', (e) => `${e.name}: ${e.message}`);
+      const deep = '<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 9 9">' + '<g>'.repeat(300) + '<rect width="1" height="1"/>' + '</g>'.repeat(300) + '</svg>';
+      const nested = await client.parseSvg(deep).then(() => 'resolved', (e) => e.message);
+      const after = await client.parseSvg('<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 9 9"><rect width="1" height="1"/></svg>').then((s) => s.length, (e) => e.message);
+      let sync;
+      try { new PatternSynthClient(42); } catch (e) { sync = e.message; }
+      return { first, second, bad, nested, after, made, sync };
+    });
+    assert.match(out.first, /The patternsynth worker failed/);
+    assert.ok(out.second > 50, `second call: ${out.second}`);
+    assert.equal(out.bad, 'Error: The SVG (the document\'s text) must be a string, got a number.');
+    assert.match(out.nested, /nests 302 levels deep/);
+    assert.equal(out.after, 1);
+    assert.equal(out.made, 2, 'one failed worker, one that kept working');
+    assert.match(out.sync, /takes a Worker, a function returning a Worker, or the URL/);
+  } finally {
+    await close();
+  }
+});
