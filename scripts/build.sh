@@ -14,7 +14,7 @@ node scripts/patch-glue.mjs pkg/wasm/full.js
 node_modules/.bin/wasm-opt -Oz --converge --strip-debug --strip-producers --enable-bulk-memory --enable-nontrapping-float-to-int --enable-sign-ext \
   --enable-mutable-globals --enable-reference-types --enable-multivalue \
   pkg/wasm/full_bg.wasm -o pkg/wasm/full_bg.wasm
-cp js/pkg/* pkg/
+cp js/pkg/* LICENSE-MIT LICENSE-APACHE pkg/
 rm -f pkg/.gitignore
 rm -rf www/pkg && cp -r pkg www/pkg
 # The playground's built-in textures: the CC0 photographs the tests use.

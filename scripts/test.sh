@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Runs every test: formatting and lints, the engines natively, the built package under
-# Node, and the playground end to end in headless Chromium. Installs what it needs.
+# Node, the playground end to end in headless Chromium, and the packed package in
+# bundlers' production builds. Installs what it needs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh --browser
@@ -22,3 +23,6 @@ node --test tests/node/
 echo "== playground in headless Chromium"
 mkdir -p out
 node --test tests/browser/
+
+echo "== the packed package in Vite, webpack and esbuild production builds, and tsc --strict"
+node --test tests/bundlers/

@@ -23,7 +23,7 @@ export class PatternSynthClient {
   blendTextures(a: Rgba, b: Rgba, opts: BlendOptions, options?: CallOptions): Promise<RgbaImage>;
   seamlessTile(image: Rgba, opts?: SeamlessOptions, options?: CallOptions): Promise<SeamlessResult>;
   decodeImage(bytes: Uint8Array | ArrayBuffer, options?: CallOptions): Promise<RgbaImage>;
-  encodePng(image: Rgba, options?: CallOptions): Promise<Uint8Array>;
+  encodePng(image: Rgba, options?: CallOptions): Promise<Uint8Array<ArrayBuffer>>;
   version(options?: CallOptions): Promise<string>;
   /** Stops the worker; pending calls are rejected with an AbortError. */
   terminate(): void;

@@ -30,7 +30,7 @@ export interface StrokeOptions extends ClassifyOptions {
 /** An image in: RGBA bytes, like a canvas ImageData. */
 export interface Rgba { width: number; height: number; data: Uint8Array | Uint8ClampedArray }
 /** An image out: `new ImageData(out.data, out.width, out.height)` works. */
-export interface RgbaImage { width: number; height: number; data: Uint8ClampedArray }
+export interface RgbaImage { width: number; height: number; data: Uint8ClampedArray<ArrayBuffer> }
 export interface TextureOptions {
   width: number; height: number; seed?: number; tileable?: boolean; exhaustive?: boolean;
   levels?: number; neighbourhood?: number;
@@ -106,4 +106,4 @@ export function synthesizeTexture(image: Rgba, opts: TextureOptions, onProgress?
 export function blendTextures(a: Rgba, b: Rgba, opts: BlendOptions, onProgress?: Progress): RgbaImage;
 export function seamlessTile(image: Rgba, opts?: SeamlessOptions, onProgress?: Progress): SeamlessResult;
 export function decodeImage(bytes: Uint8Array | ArrayBuffer): RgbaImage;
-export function encodePng(image: Rgba): Uint8Array;
+export function encodePng(image: Rgba): Uint8Array<ArrayBuffer>;

@@ -104,3 +104,13 @@ test('the package resolves by name in Node and in a bundler', () => {
   const dts = readFileSync('pkg/patternsynth.d.ts', 'utf8');
   for (const name of ['parseSvg', 'synthesizeStrokes', 'classifyStrokes', 'interface Stroke']) assert.ok(dts.includes(name), name);
 });
+
+test('the entry points are declared once: the entry, the wasm glue and api.js agree', async () => {
+  const { METHODS } = await import('../../pkg/api.js');
+  const glue = await import('../../pkg/wasm/full.js');
+  const table = Object.keys(METHODS).sort();
+  assert.deepEqual(Object.keys(ps).filter((k) => !['default', 'initSync', 'restarts'].includes(k)).sort(), table);
+  assert.deepEqual(Object.keys(glue).filter((k) => !['default', 'initSync', 'start', '__wbg_reset'].includes(k)).sort(), table);
+  const { PatternSynthClient } = await import('../../pkg/client.js');
+  for (const name of table) assert.equal(typeof PatternSynthClient.prototype[name], 'function', name);
+});

@@ -1,0 +1,86 @@
+// The packed npm tarball in a small site (site/main.js) built for production by Vite,
+// webpack 5 and esbuild, opened in headless Chromium: strokes on the main thread, a
+// texture through the worker client with progress, an abort that rejects with
+// AbortError, and a call after the abort that works. Vite and webpack need nothing
+// (the client builds its worker in the form they bundle); esbuild bundles no workers,
+// so the site serves the package's files and passes the worker's URL (README recipe).
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import { cpSync, mkdirSync, mkdtempSync, readFileSync, renameSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join, resolve } from 'node:path';
+import { chromium } from 'playwright-core';
+import { CHROMIUM } from '../browser/chromium.mjs';
+import { serve } from '../../scripts/static-server.mjs';
+
+const root = resolve(import.meta.dirname, '../..');
+const bin = (name) => join(root, 'node_modules/.bin', name);
+
+/** A fresh site folder with the tarball installed as node_modules/patternsynth. */
+function site() {
+  const work = mkdtempSync(join(tmpdir(), 'patternsynth-site-'));
+  const tgz = execFileSync('npm', ['pack', join(root, 'pkg'), '--pack-destination', work, '--silent'], { encoding: 'utf8' }).trim().split('\n').at(-1);
+  cpSync(join(import.meta.dirname, 'site'), join(work, 'site'), { recursive: true });
+  mkdirSync(join(work, 'site/node_modules'));
+  execFileSync('tar', ['-xzf', join(work, tgz), '-C', join(work, 'site/node_modules')]);
+  renameSync(join(work, 'site/node_modules/package'), join(work, 'site/node_modules/patternsynth'));
+  return work;
+}
+
+async function open(dir) {
+  const server = await serve(dir, 0);
+  const browser = await chromium.launch(CHROMIUM);
+  try {
+    const page = await browser.newPage();
+    const errors = [];
+    page.on('pageerror', (e) => errors.push(e.message));
+    await page.goto(`http://127.0.0.1:${server.address().port}/`);
+    const result = await page.evaluate(() => window.result);
+    return { result, errors };
+  } finally {
+    await browser.close();
+    server.close();
+  }
+}
+
+function check({ result, errors }) {
+  assert.deepEqual(errors, []);
+  assert.equal(result.error, undefined, result.error);
+  assert.ok(result.strokes > 200, `strokes: ${result.strokes}`);
+  assert.deepEqual(result.texture, [64, 64, 'Uint8ClampedArray']);
+  assert.ok(result.progress > 3 && result.lastProgress === 1, `progress events: ${result.progress}`);
+  assert.equal(result.aborted, 'AbortError');
+  assert.deepEqual(result.after, [48, 40]);
+}
+
+const work = site();
+
+test('Vite production build: the worker client works with no configuration', async () => {
+  execFileSync(bin('vite'), ['build', join(work, 'site'), '--outDir', join(work, 'dist-vite'), '--emptyOutDir', '--logLevel', 'warn']);
+  check(await open(join(work, 'dist-vite')));
+});
+
+test('webpack 5 production build: the worker client works with no configuration', async () => {
+  execFileSync(bin('webpack'), ['--config', join(import.meta.dirname, 'webpack.config.cjs'), '--env', `work=${work}`], { stdio: 'pipe' });
+  writeFileSync(join(work, 'dist-webpack/index.html'), readFileSync(join(work, 'site/index.html'), 'utf8').replace('type="module" ', ''));
+  check(await open(join(work, 'dist-webpack')));
+});
+
+test('esbuild bundle: the package files served beside it, the worker passed by URL', async () => {
+  const out = join(work, 'dist-esbuild');
+  execFileSync(bin('esbuild'), [join(work, 'site/main.js'), '--bundle', '--format=esm', `--outfile=${join(out, 'main.js')}`, '--log-level=warning']);
+  cpSync(join(work, 'site/node_modules/patternsynth'), join(out, 'patternsynth'), { recursive: true });
+  // The recipe: init() with the wasm's URL, the client with the worker's URL.
+  writeFileSync(join(out, 'index.html'), `<!doctype html><meta charset="utf-8">
+    <script>globalThis.wasmUrl = new URL('./patternsynth/wasm/full_bg.wasm', location.href);
+      globalThis.makeClient = (Client) => new Client(new URL('./patternsynth/worker.js', location.href));</script>
+    <script type="module" src="./main.js"></script>`);
+  check(await open(out));
+});
+
+test('a TypeScript consumer type-checks with tsc --strict against the shipped types', () => {
+  cpSync(join(import.meta.dirname, 'site/consumer.ts'), join(work, 'site/consumer.ts'));
+  execFileSync(bin('tsc'), ['--strict', '--noEmit', '--target', 'es2022', '--module', 'esnext', '--moduleResolution', 'bundler',
+    '--lib', 'es2022,dom', join(work, 'site/consumer.ts')], { stdio: 'pipe' });
+});
