@@ -1,7 +1,7 @@
 // The fuzzer of tests/node/fuzz.test.mjs, run longer: prints the counts by outcome, the
 // slowest single input and every failure (with its seed, to replay).
 //   node bench/fuzz.mjs [iterations=20000] [seed=1]
-import * as ps from '../pkg/node.js';
+import * as ps from '../pkg/node/index.js';
 import { fuzz } from '../tests/node/fuzz.mjs';
 
 const iterations = Number(process.argv[2] ?? 20000);

@@ -3,7 +3,7 @@
 // the four photographs, and the same cases timed in wasm under Node (median of 3).
 import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
-import { decodeImage, seamlessTile } from '../pkg/node.js';
+import { decodeImage, seamlessTile } from '../pkg/node/index.js';
 
 const median = (f, runs = 3) => {
   const t = [];

@@ -5,7 +5,7 @@ import { execFileSync, spawnSync } from 'node:child_process';
 import { mkdtempSync, readFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { decodeImage, synthesizeTexture, blendTextures } from '../pkg/node.js';
+import { decodeImage, synthesizeTexture, blendTextures } from '../pkg/node/index.js';
 
 const native = execFileSync('target/release/examples/bench_texture', { encoding: 'utf8' }).trim().split('\n').map((l) => JSON.parse(l));
 

@@ -3,7 +3,7 @@
 import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
 import { gzipSync } from 'node:zlib';
-import { synthesizeStrokes, exampleStrokes } from '../pkg/node.js';
+import { synthesizeStrokes, exampleStrokes } from '../pkg/node/index.js';
 
 const native = execFileSync('target/release/examples/bench_vector', { encoding: 'utf8' })
   .trim().split('\n').map((l) => JSON.parse(l));

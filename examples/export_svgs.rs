@@ -3,7 +3,7 @@
 //! `cargo run --release --example export_svgs`, then e.g.
 //! `node scripts/render-svg.mjs --tile out/tiles.png out/*-tile.svg`.
 use patternsynth::vector::exemplar::{families, irregular_dashes};
-use patternsynth::vector::svg_export::to_svg;
+use patternsynth::vector::svg::to_svg;
 use patternsynth::vector::{stroke_tile, synthesize_strokes, Stroke, StrokeOptions, TileOptions};
 use patternsynth::Silent;
 

@@ -9,7 +9,7 @@
 
 pub mod error;
 pub mod progress;
-#[cfg(feature = "texture")]
+#[cfg(any(feature = "texture", feature = "codec"))]
 pub mod raster;
 pub mod rng;
 #[cfg(feature = "texture")]

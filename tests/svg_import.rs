@@ -147,7 +147,7 @@ fn bad_and_hostile_input_gets_clear_errors() {
         let e = parse_svg(svg, &ImportOptions::default()).expect_err(svg).to_string();
         assert!(e.starts_with("Could not read the SVG") && e.contains(want), "{svg:?}: {e}");
     }
-    // No size at all: usvg sizes the document by its content rather than failing.
+    // No size at all: the document is sized by its content rather than failing.
     let sizeless = r#"<svg xmlns="http://www.w3.org/2000/svg"><rect width="1" height="1"/></svg>"#;
     assert_eq!(parse_svg(sizeless, &ImportOptions::default()).unwrap().strokes.len(), 1);
     // Entity expansion bombs are refused by the XML parser, not expanded.
@@ -166,7 +166,7 @@ fn bad_and_hostile_input_gets_clear_errors() {
 
 #[test]
 fn round_trip_through_our_own_export() {
-    use patternsynth::vector::svg_export::to_svg;
+    use patternsynth::vector::svg::to_svg;
     let mut a = Stroke::new(vec![[1.0, 2.0], [3.0, 4.0], [5.0, 2.0]], 1.5, Some(Rgb([10, 20, 30])));
     a.fill = Some(Rgb([200, 100, 0]));
     a.fill_opacity = 0.5;
@@ -206,4 +206,26 @@ fn hostile_documents_get_clear_errors_not_overflows() {
     let import = parse_svg(&far, &tiny).unwrap();
     assert_eq!(import.strokes.len(), 1);
     assert!(import.warnings.iter().any(|w| w.contains("2 shape(s) lie beyond")), "{:?}", import.warnings);
+}
+
+#[test]
+fn holes_stay_with_their_outline_and_the_report_says_so() {
+    let svg = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/fixtures/svg/constructs/holes.svg"))
+        .unwrap();
+    let r = parse_svg(&svg, &ImportOptions::default()).unwrap();
+    // A frame (even-odd), a ring (non-zero, counter-wound hole), and a path holding a
+    // framed square beside a separate small square.
+    assert_eq!(r.strokes.len(), 4, "{:?}", r.strokes.iter().map(|s| s.bounds()).collect::<Vec<_>>());
+    assert_eq!(r.strokes[0].breaks.len(), 1);
+    assert_eq!(r.strokes[0].fill_rule, patternsynth::vector::FillRule::Evenodd);
+    assert_eq!(r.strokes[1].breaks.len(), 1);
+    assert_eq!(r.strokes[1].fill_rule, patternsynth::vector::FillRule::Nonzero);
+    assert_eq!((r.strokes[2].breaks.len(), r.strokes[3].breaks.len()), (1, 0));
+    assert!(close(bounds(&r.strokes[3]), (125.0, 3.0, 131.0, 9.0), 1e-6));
+    assert!(r.warnings.iter().any(|w| w.starts_with("3 shape(s) with holes")), "{:?}", r.warnings);
+    assert!(r.warnings.iter().any(|w| w.starts_with("1 compound path(s) were split")), "{:?}", r.warnings);
+    // The export keeps each as one path with its fill rule.
+    let svg = patternsynth::vector::svg::to_svg(&r.strokes, r.width, r.height);
+    assert_eq!(svg.matches("<path").count(), 4);
+    assert_eq!(svg.matches("fill-rule=\"evenodd\"").count(), 1);
 }

@@ -185,7 +185,7 @@ fn progress_is_monotone_and_cancel_stops() {
 #[test]
 fn svg_output_is_valid_xml_with_finite_numbers() {
     let r = synthesize_strokes(&grid(), &opts(200.0, 150.0), &mut Silent).unwrap();
-    let doc = usvg::roxmltree::Document::parse(&r.svg).expect("well-formed XML");
+    let doc = roxmltree::Document::parse(&r.svg).expect("well-formed XML");
     let root = doc.root_element();
     assert_eq!(root.attribute("viewBox"), Some("0 0 200 150"));
     let paths: Vec<_> = root.children().filter(|n| n.has_tag_name("path")).collect();

@@ -1,7 +1,7 @@
 import type {
   Stroke, StrokeOptions, StrokeResult, TileOptions, TileResult, ParseSvgOptions, SvgImport, Classification, ClassifyOptions,
   Rgba, RgbaImage, TextureOptions, BlendOptions, SeamlessOptions, SeamlessResult, Example,
-} from './patternsynth.js';
+} from './types.js';
 
 export interface CallOptions {
   signal?: AbortSignal;

@@ -6,8 +6,9 @@
 // call works.
 
 /** `glue`: the wasm-bindgen module (web target, with `__wbg_reset` added by the build);
- *  `defaultUrl`: where its .wasm is served. */
-export function engine(glue, defaultUrl, name) {
+ *  `defaultUrl`: where its .wasm is served; `name` and `hint` make the message for a
+ *  call before loading. */
+export function engine(glue, defaultUrl, name, hint = '`await init()` first (or call initSync)') {
   let module = null;
   let loading = null;
   let restarts = 0;
@@ -59,7 +60,7 @@ export function engine(glue, defaultUrl, name) {
   /** Calls `glue[method]`, replacing the instance if the call traps. */
   function call(method, args) {
     if (!module) {
-      throw new Error(`patternsynth: ${method}() was called before the engine was loaded; \`await init()\` first (or call initSync).`);
+      throw new Error(`${name}: ${method}() was called before the engine was loaded; ${hint}.`);
     }
     try {
       return glue[method](...args);

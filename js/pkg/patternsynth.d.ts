@@ -1,109 +1,16 @@
-// Types of the patternsynth package (every entry point: see api.js for the list).
+// patternsynth: the vector and texture engines in one module (see patternsynth.js);
+// the codecs load separately (initCodecs).
+import type { Init, InitSync } from './types.js';
+export type * from './types.js';
 
-export type Rgb = string;
-export interface Stroke {
-  points: [number, number][];
-  width: number;
-  stroke?: Rgb | null;
-  fill?: Rgb | null;
-  opacity?: number;
-  strokeOpacity?: number;
-  fillOpacity?: number;
-  closed?: boolean;
-  /** Compound paths kept whole: indices in `points` where a subpath starts. */
-  breaks?: number[];
-}
-/** Called with the fraction done in [0, 1]; return false to cancel. */
-export type Progress = (fraction: number) => boolean | void;
-export interface ParseSvgOptions { tolerance?: number; splitSubpaths?: boolean; maxPoints?: number }
-export interface SvgImport { strokes: Stroke[]; warnings: string[]; width: number; height: number }
-export interface Tolerances { path: number; width: number; color: number }
-export interface Classification { classes: number[]; count: number; tolerances: Tolerances; proposed: Tolerances }
-export interface ClassifyOptions { pathTolerance?: number; widthTolerance?: number; colorTolerance?: number }
-export interface StrokeOptions extends ClassifyOptions {
-  width: number; height: number; variation?: boolean; seed?: number; support?: number;
-  /** Refuse outputs estimated above this many elements (default 500,000; at most 2,000,000). */
-  maxElements?: number;
-  /** Grow on the drawing's fitted lattice (default true): no drift on large outputs. */
-  regularize?: boolean;
-}
-/** An image in: RGBA bytes, like a canvas ImageData. */
-export interface Rgba { width: number; height: number; data: Uint8Array | Uint8ClampedArray }
-/** An image out: `new ImageData(out.data, out.width, out.height)` works. */
-export interface RgbaImage { width: number; height: number; data: Uint8ClampedArray<ArrayBuffer> }
-export interface TextureOptions {
-  width: number; height: number; seed?: number; tileable?: boolean; exhaustive?: boolean;
-  levels?: number; neighbourhood?: number;
-}
-export type Transition = 'linear' | 'ease' | 'steep';
-export interface BlendOptions extends TextureOptions {
-  /** mu, the weight of A: 'linear' (1 at the top, 0 at the bottom, as in the paper), its
-   *  'ease' and 'steep' transfers, 'radial' (A at the centre), or one value per pixel. */
-  coefficient?: Transition | 'radial' | Float32Array;
-  /** Direction of the ramp in degrees (90 = top to bottom, 0 = left to right). */
-  angle?: number;
-  /** Transfer applied to 'radial' or an angled ramp. */
-  transfer?: Transition;
-}
-export interface TileOptions extends ClassifyOptions {
-  variation?: boolean; seed?: number;
-  /** The tile spans this many smallest repeats across and down (1 to 8, default 1). */
-  repeats?: number;
-}
-export interface TileResult {
-  /** In tile coordinates; strokes cut by an edge appear again one period over. */
-  strokes: Stroke[]; classes: number[]; width: number; height: number;
-  /** The tile's exact lattice periods. */
-  periods: [[number, number], [number, number]];
-  sites: number; classification: Classification;
-  /** width x height, repeats without seams as a CSS background. */
-  svg: string;
-}
-export interface SeamlessOptions {
-  /** 'etfmcm' (the paper, default), 'tfmcm' (its predecessor) or 'synthesis' (toroidal
-   *  neighbourhood synthesis: keeps structure). */
-  method?: 'etfmcm' | 'tfmcm' | 'synthesis';
-  /** Tile side, a power of two from 8 to 512 (default: the largest the image allows). */
-  size?: number; seed?: number;
-  /** T0 of the density conversion (default 50). */
-  maxCountDifference?: number;
-}
-export interface SeamlessResult {
-  image: RgbaImage;
-  /** The paper's restoration rate: 1 is the exemplar's colour histogram exactly. */
-  restorationRate: number;
-  /** Wrap-around difference over neighbouring-pixel difference: about 1 is seamless. */
-  seamScore: number;
-  /** What was done to make the input square and a power of two. */
-  warnings: string[];
-  channel: 'r' | 'g' | 'b' | null;
-  countDifference: [number, number] | null;
-  decisions: { byJ3: number[]; pairwise: number; mean: number } | null;
-}
-export interface StrokeResult {
-  strokes: Stroke[]; classes: number[]; sources: number[]; classification: Classification; svg: string;
-  growingPoints: number; skippedFull: number; passedOver: number;
-}
-export interface Example { name: string; strokes: Stroke[] }
-
-/** Where the .wasm comes from: a URL (default: beside the module), a Response, bytes or a compiled module. */
-export type InitInput = string | URL | Request | Response | Promise<Response> | BufferSource | WebAssembly.Module;
-/** Fetches and instantiates the engine; call (and await) once before anything else. */
-export default function init(input?: InitInput | { module_or_path: InitInput }): Promise<void>;
-/** Instantiates synchronously from bytes or a compiled module (Node, workers). */
-export function initSync(input: BufferSource | WebAssembly.Module | { module: BufferSource | WebAssembly.Module }): void;
+declare const init: Init;
+export default init;
+export declare const initSync: InitSync;
 /** How many times a trap (a bug) made the engine restart. */
 export function restarts(): number;
-
-export function version(): string;
-export function parseSvg(svg: string, opts?: ParseSvgOptions): Stroke[];
-export function parseSvgReport(svg: string, opts?: ParseSvgOptions): SvgImport;
-export function classifyStrokes(strokes: Stroke[], opts?: ClassifyOptions): Classification;
-export function synthesizeStrokes(strokes: Stroke[], opts: StrokeOptions, onProgress?: Progress): StrokeResult;
-export function strokeTile(strokes: Stroke[], opts?: TileOptions): TileResult;
-export function exampleStrokes(): Example[];
-export function synthesizeTexture(image: Rgba, opts: TextureOptions, onProgress?: Progress): RgbaImage;
-export function blendTextures(a: Rgba, b: Rgba, opts: BlendOptions, onProgress?: Progress): RgbaImage;
-export function seamlessTile(image: Rgba, opts?: SeamlessOptions, onProgress?: Progress): SeamlessResult;
-export function decodeImage(bytes: Uint8Array | ArrayBuffer): RgbaImage;
-export function encodePng(image: Rgba): Uint8Array<ArrayBuffer>;
+/** Loads the image codec module (decodeImage, encodePng); Node loads it at import. */
+export declare const initCodecs: Init;
+export declare const initCodecsSync: InitSync;
+export { version, parseSvg, parseSvgReport, classifyStrokes, synthesizeStrokes, strokeTile, exampleStrokes } from './vector.js';
+export { synthesizeTexture, blendTextures, seamlessTile } from './texture.js';
+export { decodeImage, encodePng } from './codec.js';

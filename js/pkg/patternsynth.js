@@ -1,5 +1,7 @@
-// The package's main entry: every engine in one wasm module. `await init()` once (or
-// `initSync({ module })`), then call the functions; see README.md.
+// The package's main entry: the vector and texture engines in one wasm module. `await
+// init()` once (or `initSync({ module })`), then call the functions; see README.md.
+// The image codecs are a separate module: `await initCodecs()` before decodeImage or
+// encodePng in a browser (Node loads them at import).
 import * as glue from './wasm/full.js';
 import { engine } from './instance.js';
 
@@ -10,6 +12,7 @@ export default full.init;
 export const initSync = full.initSync;
 /** How many times a trap (a bug) made the engine restart, for diagnostics. */
 export const restarts = () => full.restarts;
+export { default as initCodecs, initSync as initCodecsSync, decodeImage, encodePng } from './codec.js';
 
 export const version = call('version');
 export const parseSvg = call('parseSvg');
@@ -21,5 +24,3 @@ export const exampleStrokes = call('exampleStrokes');
 export const synthesizeTexture = call('synthesizeTexture');
 export const blendTextures = call('blendTextures');
 export const seamlessTile = call('seamlessTile');
-export const decodeImage = call('decodeImage');
-export const encodePng = call('encodePng');

@@ -9,6 +9,8 @@ import init, * as api from './patternsynth.js';
 import { METHODS } from './api.js';
 
 const ready = init();
+// The codecs load on first use only: browsers rarely need them.
+let codecs = null;
 
 // Pixel buffers go back by transfer, not by copy.
 const transferables = (r) => {
@@ -20,9 +22,10 @@ const transferables = (r) => {
 self.onmessage = async ({ data }) => {
   const { id, method, args = [] } = data;
   try {
-    await ready;
     const spec = Object.hasOwn(METHODS, method) ? METHODS[method] : null;
     if (!spec) throw new Error(`Unknown method '${method}'.`);
+    if (spec.module === 'codec') await (codecs ??= api.initCodecs().catch((e) => { codecs = null; throw e; }));
+    else await ready;
     const callArgs = args.slice(0, spec.args);
     if (spec.progress) {
       callArgs.length = spec.args;

@@ -3,13 +3,20 @@
 
 #[cfg(feature = "codec")]
 pub mod codec;
+#[cfg(feature = "texture")]
 pub mod coefficient;
+#[cfg(feature = "texture")]
 pub mod energy;
 pub mod image;
+#[cfg(feature = "texture")]
 pub mod neighbourhood;
+#[cfg(feature = "texture")]
 pub mod pyramid;
+#[cfg(feature = "texture")]
 pub mod synthesis;
+#[cfg(feature = "texture")]
 pub mod texture;
 
 pub use self::image::{Image, Rgba};
+#[cfg(feature = "texture")]
 pub use texture::{blend_textures, synthesize_texture, BlendOptions, Coefficient, TextureOptions};

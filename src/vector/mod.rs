@@ -9,15 +9,13 @@ pub mod lattice;
 pub mod regularity;
 pub mod spatial;
 pub mod stroke;
-pub mod svg_budget;
-pub mod svg_export;
-pub mod svg_import;
+pub mod svg;
 pub mod synthesize;
 pub mod tile;
 
 pub use classify::Tolerances;
 pub use color::Rgb;
-pub use stroke::Stroke;
-pub use svg_import::{parse_svg, Import, ImportOptions};
+pub use stroke::{FillRule, Stroke};
+pub use svg::{parse_svg, Import, ImportOptions};
 pub use synthesize::{classify_strokes, synthesize_strokes, Classification, StrokeOptions, StrokeResult};
 pub use tile::{stroke_tile, TileOptions, TileResult};

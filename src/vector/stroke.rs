@@ -9,6 +9,21 @@ fn one() -> f64 {
     1.0
 }
 
+/// How a compound stroke's subpaths fill: SVG's `fill-rule`.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum FillRule {
+    #[default]
+    Nonzero,
+    Evenodd,
+}
+
+impl FillRule {
+    fn is_nonzero(&self) -> bool {
+        *self == FillRule::Nonzero
+    }
+}
+
 /// A polyline with its paint. Curves are flattened before they get here.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase")]
@@ -34,6 +49,9 @@ pub struct Stroke {
     /// starts (after the first). Empty for an ordinary polyline.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub breaks: Vec<usize>,
+    /// Which areas of a compound stroke are holes.
+    #[serde(default, skip_serializing_if = "FillRule::is_nonzero")]
+    pub fill_rule: FillRule,
 }
 
 impl Stroke {
@@ -48,6 +66,7 @@ impl Stroke {
             fill_opacity: 1.0,
             closed: false,
             breaks: Vec::new(),
+            fill_rule: FillRule::Nonzero,
         }
     }
 

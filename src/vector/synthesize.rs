@@ -4,7 +4,7 @@
 use super::classify::{classify, propose_tolerances, Tolerances};
 use super::grow::{grow, Element, GrowOptions, GrowStats};
 use super::stroke::Stroke;
-use super::svg_export::to_svg;
+use super::svg::to_svg;
 use crate::error::{invalid, Error, Result};
 use crate::progress::{Progress, Throttle};
 use crate::rng::Rng;

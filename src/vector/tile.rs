@@ -18,7 +18,7 @@
 
 use super::grow::{fit_lattice, Element};
 use super::stroke::Stroke;
-use super::svg_export::to_svg;
+use super::svg::to_svg;
 use super::synthesize::{classify_strokes, Classification};
 use crate::error::{invalid, Error, Result};
 use crate::rng::Rng;

@@ -1,6 +1,6 @@
 //! PNG and JPEG in wasm, for Node and for pages that want bytes without a canvas.
 
-use super::texture::{rgba_from_js, rgba_to_js};
+use super::rgba::{rgba_from_js, rgba_to_js};
 use super::{error, js_error, type_name};
 use crate::raster;
 use wasm_bindgen::prelude::*;

@@ -3,8 +3,11 @@
 //! naming the argument; engine errors become `Error`s with the engine's message. A
 //! panic (a bug) traps; the package's JS entry re-instantiates the module after one.
 //!
-//! The TypeScript types of the package live in `js/pkg/types.d.ts`, beside the table of
+//! The TypeScript types of the package live in `js/pkg/*.d.ts`, beside the table of
 //! entry points (`js/pkg/api.js`) that the entries, the worker and the client share.
+
+// A codec-only module uses none of the option and progress plumbing.
+#![cfg_attr(not(any(feature = "vector", feature = "texture")), allow(dead_code))]
 
 use crate::error::Error;
 use crate::progress::Progress;
@@ -14,6 +17,8 @@ use wasm_bindgen::prelude::*;
 
 #[cfg(feature = "codec")]
 mod codec;
+#[cfg(any(feature = "texture", feature = "codec"))]
+mod rgba;
 #[cfg(feature = "texture")]
 mod texture;
 #[cfg(feature = "vector")]

@@ -6,7 +6,7 @@ import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync, readFileSync } from 'node:fs';
 import { openPlayground } from './harness.mjs';
-import { decodeImage } from '../../pkg/node.js';
+import { decodeImage } from '../../pkg/node/index.js';
 
 let page, close;
 
@@ -101,7 +101,7 @@ test('an opened texture and the painted mask survive a reload', async () => {
   // A 40x30 PNG made by the package itself: two colour halves.
   const data = new Uint8ClampedArray(40 * 30 * 4);
   for (let i = 0; i < 40 * 30; i++) data.set(i % 40 < 20 ? [200, 40, 40, 255] : [40, 40, 200, 255], 4 * i);
-  const { encodePng } = await import('../../pkg/node.js');
+  const { encodePng } = await import('../../pkg/node/index.js');
   const png = Buffer.from(encodePng({ width: 40, height: 30, data }));
   await page.setInputFiles('#slot-b input[type=file]', { name: 'halves.png', mimeType: 'image/png', buffer: png });
   await page.waitForFunction(() => document.querySelector('#slot-b canvas').width === 40);

@@ -5,7 +5,7 @@ import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync, readFileSync } from 'node:fs';
 import { openPlayground } from './harness.mjs';
-import { parseSvg } from '../../pkg/node.js';
+import { parseSvg } from '../../pkg/node/index.js';
 
 let page, close;
 const SPACING = 40; // canvas pixels between drawn strokes

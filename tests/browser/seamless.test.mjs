@@ -6,7 +6,7 @@ import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync, readFileSync } from 'node:fs';
 import { openPlayground } from './harness.mjs';
-import { decodeImage, encodePng } from '../../pkg/node.js';
+import { decodeImage, encodePng } from '../../pkg/node/index.js';
 
 let page, close;
 

@@ -1,7 +1,7 @@
 // The packed npm tarball in a small site (site/main.js) built for production by Vite,
 // webpack 5 and esbuild, opened in headless Chromium: strokes on the main thread, a
 // texture through the worker client with progress, an abort that rejects with
-// AbortError, and a call after the abort that works. Vite and webpack need nothing
+// AbortError, a call after the abort that works, and the codecs loaded on demand. Vite and webpack need nothing
 // (the client builds its worker in the form they bundle); esbuild bundles no workers,
 // so the site serves the package's files and passes the worker's URL (README recipe).
 import { test } from 'node:test';
@@ -32,19 +32,23 @@ async function open(dir) {
   const server = await serve(dir, 0);
   const browser = await chromium.launch(CHROMIUM);
   try {
-    const page = await browser.newPage();
+    const context = await browser.newContext();
+    const page = await context.newPage();
     const errors = [];
+    const wasm = new Set();
     page.on('pageerror', (e) => errors.push(e.message));
+    // Requests of the page and of its workers: which wasm modules the site loaded.
+    context.on('request', (r) => { if (/\.wasm$/.test(r.url())) wasm.add(r.url().split('/').at(-1).replace(/-[\w-]{8}\.wasm$|\.[0-9a-f]{8,}\.wasm$/, '.wasm')); });
     await page.goto(`http://127.0.0.1:${server.address().port}/`);
     const result = await page.evaluate(() => window.result);
-    return { result, errors };
+    return { result, errors, wasm: [...wasm].sort() };
   } finally {
     await browser.close();
     server.close();
   }
 }
 
-function check({ result, errors }) {
+function check({ result, errors, wasm }) {
   assert.deepEqual(errors, []);
   assert.equal(result.error, undefined, result.error);
   assert.ok(result.strokes > 200, `strokes: ${result.strokes}`);
@@ -52,6 +56,12 @@ function check({ result, errors }) {
   assert.ok(result.progress > 3 && result.lastProgress === 1, `progress events: ${result.progress}`);
   assert.equal(result.aborted, 'AbortError');
   assert.deepEqual(result.after, [48, 40]);
+  assert.deepEqual(result.decoded, [8, 6]);
+  // The page's own module is the vector one; the worker loads the full one, then the
+  // codecs when first asked (names as the bundler emitted them, hashes aside).
+  console.log(`wasm loaded: ${wasm.join(', ')}`);
+  assert.equal(wasm.length, 3, wasm.join(', '));
+  for (const name of ['vector', 'full', 'codec']) assert.ok(wasm.some((w) => w.includes(name)), `${name}: ${wasm.join(', ')}`);
 }
 
 const work = site();
@@ -73,7 +83,7 @@ test('esbuild bundle: the package files served beside it, the worker passed by U
   cpSync(join(work, 'site/node_modules/patternsynth'), join(out, 'patternsynth'), { recursive: true });
   // The recipe: init() with the wasm's URL, the client with the worker's URL.
   writeFileSync(join(out, 'index.html'), `<!doctype html><meta charset="utf-8">
-    <script>globalThis.wasmUrl = new URL('./patternsynth/wasm/full_bg.wasm', location.href);
+    <script>globalThis.wasmUrl = new URL('./patternsynth/wasm/vector_bg.wasm', location.href);
       globalThis.makeClient = (Client) => new Client(new URL('./patternsynth/worker.js', location.href));</script>
     <script type="module" src="./main.js"></script>`);
   check(await open(out));

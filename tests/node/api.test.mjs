@@ -7,7 +7,7 @@ import { execFileSync } from 'node:child_process';
 import { mkdtempSync, mkdirSync, readFileSync, symlinkSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
-import * as ps from '../../pkg/node.js';
+import * as ps from '../../pkg/node/index.js';
 
 const grid = () => {
   const s = [];
@@ -101,16 +101,38 @@ test('the package resolves by name in Node and in a bundler', () => {
   assert.doesNotMatch(bundle, /node:fs/);
 
   // Types are shipped.
-  const dts = readFileSync('pkg/patternsynth.d.ts', 'utf8');
+  const dts = readFileSync('pkg/patternsynth.d.ts', 'utf8') + readFileSync('pkg/vector.d.ts', 'utf8') + readFileSync('pkg/types.d.ts', 'utf8');
   for (const name of ['parseSvg', 'synthesizeStrokes', 'classifyStrokes', 'interface Stroke']) assert.ok(dts.includes(name), name);
 });
 
-test('the entry points are declared once: the entry, the wasm glue and api.js agree', async () => {
+test('the entry points are declared once: every entry, its wasm glue and api.js agree', async () => {
   const { METHODS } = await import('../../pkg/api.js');
-  const glue = await import('../../pkg/wasm/full.js');
-  const table = Object.keys(METHODS).sort();
-  assert.deepEqual(Object.keys(ps).filter((k) => !['default', 'initSync', 'restarts'].includes(k)).sort(), table);
-  assert.deepEqual(Object.keys(glue).filter((k) => !['default', 'initSync', 'start', '__wbg_reset'].includes(k)).sort(), table);
+  const names = (module) => Object.keys(METHODS).filter((k) => !METHODS[k].module || module.includes(METHODS[k].module)).sort();
+  const own = ['default', 'initSync', 'restarts'];
+  const exported = (m, extra = []) => Object.keys(m).filter((k) => ![...own, ...extra].includes(k)).sort();
+  const glueNames = (m) => Object.keys(m).filter((k) => !['default', 'initSync', 'start', '__wbg_reset'].includes(k)).sort();
+  assert.deepEqual(exported(ps, ['initCodecs', 'initCodecsSync']), Object.keys(METHODS).sort());
+  assert.deepEqual(glueNames(await import('../../pkg/wasm/full.js')), names(['vector', 'texture']));
+  for (const entry of ['vector', 'texture', 'codec']) {
+    assert.deepEqual(exported(await import(`../../pkg/node/${entry}.js`)), names([entry]), entry);
+    assert.deepEqual(glueNames(await import(`../../pkg/wasm/${entry}.js`)), names([entry]), `${entry} glue`);
+  }
   const { PatternSynthClient } = await import('../../pkg/client.js');
-  for (const name of table) assert.equal(typeof PatternSynthClient.prototype[name], 'function', name);
+  for (const name of Object.keys(METHODS)) assert.equal(typeof PatternSynthClient.prototype[name], 'function', name);
+});
+
+test('each engine entry works alone in Node, and the browser entry asks for init first', async () => {
+  const vector = await import('../../pkg/node/vector.js');
+  const texture = await import('../../pkg/node/texture.js');
+  const codec = await import('../../pkg/node/codec.js');
+  assert.equal(vector.parseSvg('<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 9 9"><rect width="2" height="2"/></svg>').length, 1);
+  const img = { width: 16, height: 16, data: new Uint8ClampedArray(16 * 16 * 4).fill(200) };
+  assert.equal(texture.synthesizeTexture(img, { width: 20, height: 20, seed: 1 }).width, 20);
+  assert.equal(codec.decodeImage(codec.encodePng(img)).width, 16);
+  // The browser entries, not initialised (in a process of their own: the Node entries
+  // initialise the same modules).
+  const call = (entry, expr) => execFileSync(process.execPath, ['--input-type=module', '-e',
+    `import * as m from './pkg/${entry}.js'; try { ${expr}; } catch (e) { console.log(e.message); }`], { encoding: 'utf8' });
+  assert.match(call('texture', 'm.seamlessTile({})'), /patternsynth\/texture: seamlessTile\(\) was called before the engine was loaded; `await init\(\)` first/);
+  assert.match(call('patternsynth', 'm.decodeImage(new Uint8Array(4))'), /decodeImage\(\) was called before the engine was loaded; `await initCodecs\(\)` first/);
 });

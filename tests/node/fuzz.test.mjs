@@ -2,7 +2,7 @@
 // no input traps, leaves the instance broken, or throws anything but a clear Error.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import * as ps from '../../pkg/node.js';
+import * as ps from '../../pkg/node/index.js';
 import { fuzz } from './fuzz.mjs';
 
 test('2,000 mutated inputs: clean errors or results, never a trap, the instance always works', () => {

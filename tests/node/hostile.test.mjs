@@ -4,7 +4,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
-import * as ps from '../../pkg/node.js';
+import * as ps from '../../pkg/node/index.js';
 import * as glue from '../../pkg/wasm/full.js';
 import { engine } from '../../pkg/instance.js';
 import { CASES } from '../../bench/hostile.mjs';

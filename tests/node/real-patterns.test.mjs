@@ -3,7 +3,7 @@
 // filled with the right element, nothing stray, nothing stacked, no drift.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { parseSvg, synthesizeStrokes } from '../../pkg/node.js';
+import { parseSvg, synthesizeStrokes } from '../../pkg/node/index.js';
 import { STYLES, tile } from './real-patterns.mjs';
 
 const centre = (s) => {

@@ -2,7 +2,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
-import * as ps from '../../pkg/node.js';
+import * as ps from '../../pkg/node/index.js';
 
 const load = (name) => ps.decodeImage(readFileSync(new URL(`../fixtures/textures/${name}.png`, import.meta.url)));
 

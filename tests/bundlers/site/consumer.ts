@@ -1,8 +1,15 @@
 // A TypeScript site's use of the package, checked with tsc --strict.
-import init, { synthesizeStrokes, parseSvg, decodeImage, encodePng, type Stroke, type Progress } from 'patternsynth';
+import init, { synthesizeStrokes, parseSvg, decodeImage, encodePng, initCodecs, type Stroke, type Progress } from 'patternsynth';
+import initVector, { strokeTile, type TileResult } from 'patternsynth/vector';
+import initTexture, { seamlessTile, type SeamlessResult } from 'patternsynth/texture';
+import initCodec, { decodeImage as decode } from 'patternsynth/codec';
 import { PatternSynthClient } from 'patternsynth/client';
 
 await init();
+await initCodecs();
+await Promise.all([initVector(new URL('x.wasm', import.meta.url)), initTexture(), initCodec()]);
+const repeat: TileResult = strokeTile([], { repeats: 2 });
+const seamless: SeamlessResult = seamlessTile(decode(new Uint8Array(8)), { method: 'synthesis' });
 const strokes: Stroke[] = parseSvg('<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 9 9"/>');
 const onProgress: Progress = (f) => { console.log(f); };
 const result = synthesizeStrokes(strokes, { width: 100, height: 100 }, onProgress);
@@ -19,4 +26,6 @@ const worker = new PatternSynthClient(() => new Worker(new URL('patternsynth/wor
 synthesizeStrokes(strokes, {});
 // @ts-expect-error images are { width, height, data }
 client.synthesizeTexture(new Uint8Array(4), { width: 8, height: 8 });
-export { count, shown, png, worker };
+// @ts-expect-error the vector entry has no texture engine
+import('patternsynth/vector').then((m) => m.synthesizeTexture);
+export { count, shown, png, worker, repeat, seamless };

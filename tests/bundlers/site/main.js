@@ -1,5 +1,6 @@
-// A site that embeds patternsynth: strokes on the main thread, a texture in the worker.
-import init, { synthesizeStrokes } from 'patternsynth';
+// A site that embeds patternsynth: strokes on the main thread with the vector-only
+// module, a texture and the image codecs in the worker (which loads them on demand).
+import init, { synthesizeStrokes } from 'patternsynth/vector';
 import { PatternSynthClient } from 'patternsynth/client';
 
 const grid = Array.from({ length: 16 }, (_, i) => ({ points: [[10 + (i % 4) * 20, 10 + Math.floor(i / 4) * 20], [16 + (i % 4) * 20, 16 + Math.floor(i / 4) * 20]], width: 2, stroke: '#224466' }));
@@ -16,6 +17,7 @@ async function run() {
   setTimeout(() => controller.abort(), 100);
   const aborted = await long.then(() => 'resolved', (e) => e.name);
   const after = await client.synthesizeTexture(image(32, 32), { width: 48, height: 40 });
-  return { strokes, texture: [texture.width, texture.height, texture.data.constructor.name], progress: progress.length, lastProgress: progress.at(-1), aborted, after: [after.width, after.height] };
+  const decoded = await client.decodeImage(await client.encodePng(image(8, 6)));
+  return { strokes, texture: [texture.width, texture.height, texture.data.constructor.name], progress: progress.length, lastProgress: progress.at(-1), aborted, after: [after.width, after.height], decoded: [decoded.width, decoded.height] };
 }
 window.result = run().catch((e) => ({ error: `${e.name}: ${e.message}` }));

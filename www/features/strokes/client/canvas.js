@@ -18,7 +18,7 @@ export function drawStroke(ctx, s) {
   if (s.fill) {
     ctx.globalAlpha = alpha * (s.fillOpacity ?? 1);
     ctx.fillStyle = s.fill;
-    ctx.fill();
+    ctx.fill(s.fillRule === 'evenodd' ? 'evenodd' : 'nonzero');
   }
   if (s.stroke) {
     ctx.globalAlpha = alpha * (s.strokeOpacity ?? 1);

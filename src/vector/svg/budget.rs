@@ -2,30 +2,29 @@
 //! run, so a hostile document gets a clear refusal instead of a stack overflow or a hang.
 //!
 //! Three costs are not bounded by the document's size alone:
-//! - **Depth.** usvg resolves the tree recursively, one stack frame chain per nesting
-//!   level and per reference hop (`<use>`, `href`, `url(#id)`); a few hundred levels
+//! - **Depth.** The importer resolves the tree recursively, one stack frame chain per
+//!   nesting level and per reference hop (`<use>`, `href`); a few thousand levels
 //!   overflow the wasm stack, and that kills the instance, not just the call.
 //! - **Attributes per element.** roxmltree compares each attribute of an element with
 //!   every other one (duplicate check), which is quadratic in attributes per element.
-//! - **CSS.** usvg matches every style-sheet rule against every element it builds,
-//!   including the copies `<use>` makes: rules x elements selector matches; and reading
-//!   the style sheet itself takes time quadratic in its rules.
+//! - **CSS.** The importer matches every style-sheet rule against every element it
+//!   draws, including the copies `<use>` makes: rules x elements selector matches.
 
 use crate::error::{Error, Result};
+use roxmltree::{Document, Node};
 use std::collections::HashMap;
-use usvg::roxmltree::{Document, Node};
 
 /// Deepest nesting accepted, counting element levels and reference hops together.
 /// Real drawings stay below 30; the resolver's stack holds well over twice this.
 pub const MAX_DEPTH: u32 = 100;
 /// Attribute comparisons the XML parser may make (about a second in wasm).
 pub const MAX_ATTRIBUTE_PAIRS: u64 = 20_000_000;
-/// Style-sheet rules accepted: reading a sheet costs the resolver time quadratic in
-/// its rules (8,000 take 6 s in wasm, 2,000 under half a second).
+/// Style-sheet rules accepted: far beyond any drawing's, and every rule is matched
+/// against every element drawn.
 pub const MAX_CSS_RULES: u64 = 2_000;
 /// CSS selector matches the resolver may make (rules x elements, after `<use>` copies).
 pub const MAX_CSS_MATCHES: u64 = 20_000_000;
-/// Elements after `<use>` expansion (usvg's own limit is a million nodes).
+/// Elements after `<use>` expansion.
 pub const MAX_EXPANDED_ELEMENTS: u64 = 1_000_000;
 
 /// Attribute comparisons roxmltree's duplicate check will make: the sum over start
@@ -76,14 +75,14 @@ pub struct Shape {
 
 /// Measures `doc` without recursion: an explicit-stack post-order walk over elements,
 /// their child elements and the elements they reference. A reference cycle counts as
-/// a leaf here (usvg itself drops recursive references).
+/// a leaf here (the importer draws nothing for a recursive reference).
 pub fn measure(doc: &Document) -> Shape {
     let nodes: Vec<Node> = doc.descendants().filter(|n| n.is_element()).collect();
     let index: HashMap<_, usize> = nodes.iter().enumerate().map(|(i, n)| (n.id(), i)).collect();
     let by_id: HashMap<&str, usize> =
         nodes.iter().enumerate().filter_map(|(i, n)| n.attribute("id").map(|id| (id, i))).collect();
 
-    // Edges: child elements, then references; `copies` marks the edges usvg expands
+    // Edges: child elements, then references; `copies` marks the edges the importer expands
     // into new elements (a `<use>`'s target), the others it converts once.
     let mut edges: Vec<Vec<(usize, bool)>> = vec![Vec::new(); nodes.len()];
     let mut css_rules = 0;
@@ -212,7 +211,7 @@ fn count_rules(css: &str) -> u64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use usvg::roxmltree::Document;
+    use roxmltree::Document;
 
     fn shape(svg: &str) -> Shape {
         measure(&Document::parse(svg).unwrap())

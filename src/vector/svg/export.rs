@@ -2,7 +2,7 @@
 //! Numbers are written finite and short; nothing from the input reaches the XML except
 //! numbers and colours we format ourselves, so the document is always well formed.
 
-use super::stroke::Stroke;
+use crate::vector::stroke::{FillRule, Stroke};
 use std::fmt::Write;
 
 /// Formats a coordinate with at most 3 decimals and no trailing zeros.
@@ -27,7 +27,7 @@ pub fn path_data(s: &Stroke) -> String {
         if starts && i > 0 && s.closed {
             d.push_str(" Z");
         }
-        let _ = writeln!(
+        let _ = write!(
             d,
             "{}{} {}",
             if i == 0 {
@@ -58,6 +58,9 @@ pub fn path_element(s: &Stroke) -> String {
             let _ = write!(e, " fill=\"{}\"", c.to_hex());
             if s.fill_opacity < 1.0 {
                 let _ = write!(e, " fill-opacity=\"{}\"", num(s.fill_opacity));
+            }
+            if s.fill_rule == FillRule::Evenodd {
+                e.push_str(" fill-rule=\"evenodd\"");
             }
         }
         None => e.push_str(" fill=\"none\""),
@@ -98,8 +101,8 @@ pub fn to_svg(strokes: &[Stroke], width: f64, height: f64) -> String {
 
 #[cfg(test)]
 mod tests {
-    use super::super::color::Rgb;
     use super::*;
+    use crate::vector::color::Rgb;
 
     #[test]
     fn writes_finite_short_numbers() {

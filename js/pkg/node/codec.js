@@ -1,0 +1,8 @@
+// Node entry of patternsynth/codec: ready at import.
+import { initSync } from '../codec.js';
+import { load } from './load.js';
+
+load(initSync, 'codec');
+
+export * from '../codec.js';
+export { default } from '../codec.js';

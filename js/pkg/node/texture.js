@@ -1,0 +1,8 @@
+// Node entry of patternsynth/texture: ready at import.
+import { initSync } from '../texture.js';
+import { load } from './load.js';
+
+load(initSync, 'texture');
+
+export * from '../texture.js';
+export { default } from '../texture.js';

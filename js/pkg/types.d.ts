@@ -1,0 +1,107 @@
+// Types shared by the patternsynth entries (the functions: patternsynth.d.ts, vector.d.ts,
+// texture.d.ts, codec.d.ts; the list of entry points: api.js).
+
+export type Rgb = string;
+export interface Stroke {
+  points: [number, number][];
+  width: number;
+  stroke?: Rgb | null;
+  fill?: Rgb | null;
+  opacity?: number;
+  strokeOpacity?: number;
+  fillOpacity?: number;
+  closed?: boolean;
+  /** Compound shapes (a ring, a letter with counters): indices in `points` where a
+   *  subpath starts after the first. */
+  breaks?: number[];
+  /** Which areas of a compound shape are holes (SVG `fill-rule`; default 'nonzero'). */
+  fillRule?: 'nonzero' | 'evenodd';
+}
+/** Called with the fraction done in [0, 1]; return false to cancel. */
+export type Progress = (fraction: number) => boolean | void;
+export interface ParseSvgOptions {
+  /** Largest distance between a curve and its flattened polyline (user units; 0.25). */
+  tolerance?: number;
+  /** Split compound paths into their separate parts (default true; holes and crossing
+   *  parts stay with their outline), or keep every path whole. */
+  splitSubpaths?: boolean;
+  maxPoints?: number;
+}
+export interface SvgImport { strokes: Stroke[]; warnings: string[]; width: number; height: number }
+export interface Tolerances { path: number; width: number; color: number }
+export interface Classification { classes: number[]; count: number; tolerances: Tolerances; proposed: Tolerances }
+export interface ClassifyOptions { pathTolerance?: number; widthTolerance?: number; colorTolerance?: number }
+export interface StrokeOptions extends ClassifyOptions {
+  width: number; height: number; variation?: boolean; seed?: number; support?: number;
+  /** Refuse outputs estimated above this many elements (default 500,000; at most 2,000,000). */
+  maxElements?: number;
+  /** Grow on the drawing's fitted lattice (default true): no drift on large outputs. */
+  regularize?: boolean;
+}
+/** An image in: RGBA bytes, like a canvas ImageData. */
+export interface Rgba { width: number; height: number; data: Uint8Array | Uint8ClampedArray }
+/** An image out: `new ImageData(out.data, out.width, out.height)` works. */
+export interface RgbaImage { width: number; height: number; data: Uint8ClampedArray<ArrayBuffer> }
+export interface TextureOptions {
+  width: number; height: number; seed?: number; tileable?: boolean; exhaustive?: boolean;
+  levels?: number; neighbourhood?: number;
+}
+export type Transition = 'linear' | 'ease' | 'steep';
+export interface BlendOptions extends TextureOptions {
+  /** mu, the weight of A: 'linear' (1 at the top, 0 at the bottom, as in the paper), its
+   *  'ease' and 'steep' transfers, 'radial' (A at the centre), or one value per pixel. */
+  coefficient?: Transition | 'radial' | Float32Array;
+  /** Direction of the ramp in degrees (90 = top to bottom, 0 = left to right). */
+  angle?: number;
+  /** Transfer applied to 'radial' or an angled ramp. */
+  transfer?: Transition;
+}
+export interface TileOptions extends ClassifyOptions {
+  variation?: boolean; seed?: number;
+  /** The tile spans this many smallest repeats across and down (1 to 8, default 1). */
+  repeats?: number;
+}
+export interface TileResult {
+  /** In tile coordinates; strokes cut by an edge appear again one period over. */
+  strokes: Stroke[]; classes: number[]; width: number; height: number;
+  /** The tile's exact lattice periods. */
+  periods: [[number, number], [number, number]];
+  sites: number; classification: Classification;
+  /** width x height, repeats without seams as a CSS background. */
+  svg: string;
+}
+export interface SeamlessOptions {
+  /** 'etfmcm' (the paper, default), 'tfmcm' (its predecessor) or 'synthesis' (toroidal
+   *  neighbourhood synthesis: keeps structure). */
+  method?: 'etfmcm' | 'tfmcm' | 'synthesis';
+  /** Tile side, a power of two from 8 to 512 (default: the largest the image allows). */
+  size?: number; seed?: number;
+  /** T0 of the density conversion (default 50). */
+  maxCountDifference?: number;
+}
+export interface SeamlessResult {
+  image: RgbaImage;
+  /** The paper's restoration rate: 1 is the exemplar's colour histogram exactly. */
+  restorationRate: number;
+  /** Wrap-around difference over neighbouring-pixel difference: about 1 is seamless. */
+  seamScore: number;
+  /** What was done to make the input square and a power of two. */
+  warnings: string[];
+  channel: 'r' | 'g' | 'b' | null;
+  countDifference: [number, number] | null;
+  decisions: { byJ3: number[]; pairwise: number; mean: number } | null;
+}
+export interface StrokeResult {
+  strokes: Stroke[]; classes: number[]; sources: number[]; classification: Classification; svg: string;
+  growingPoints: number; skippedFull: number; passedOver: number;
+}
+export interface Example { name: string; strokes: Stroke[] }
+
+/** Where the .wasm comes from: a URL (default: beside the module), a Response, bytes or a compiled module. */
+export type InitInput = string | URL | Request | Response | Promise<Response> | BufferSource | WebAssembly.Module;
+/** Fetches and instantiates an entry's wasm module; call (and await) once before anything
+ *  else (Node entries are ready at import). */
+export type Init = (input?: InitInput | { module_or_path: InitInput }) => Promise<void>;
+/** Instantiates synchronously from bytes or a compiled module (Node, workers). */
+export type InitSync = (input: BufferSource | WebAssembly.Module | { module: BufferSource | WebAssembly.Module }) => void;
+

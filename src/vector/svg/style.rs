@@ -1,0 +1,132 @@
+//! The CSS cascade for the presentation properties the importer reads. An element's
+//! declared value of a property comes from, lowest to highest: its presentation
+//! attribute, matching `<style>` rules (by specificity, then source order), its `style`
+//! attribute, and `!important` rules. Inheritance is the walker's job.
+
+use roxmltree::{Document, Node};
+use simplecss::{AttributeOperator, Declaration, DeclarationTokenizer, PseudoClass, Selector, StyleSheet};
+
+/// The properties the importer reads; others are not looked up.
+const PROPERTIES: [&str; 14] = [
+    "color",
+    "display",
+    "fill",
+    "fill-opacity",
+    "fill-rule",
+    "font-size",
+    "opacity",
+    "stop-color",
+    "stop-opacity",
+    "stroke",
+    "stroke-opacity",
+    "stroke-width",
+    "transform",
+    "visibility",
+];
+
+/// The document's style sheet: every `<style>` element's rules, sorted by specificity
+/// (stable, so source order breaks ties).
+pub struct Sheet<'a> {
+    rules: Vec<(Selector<'a>, Vec<Declaration<'a>>)>,
+}
+
+/// Declared values of one element: (property, value), at most one per property.
+pub type Declared<'a> = Vec<(&'static str, &'a str)>;
+
+impl<'a> Sheet<'a> {
+    pub fn new(doc: &'a Document) -> Sheet<'a> {
+        let mut sheet = StyleSheet::new();
+        for node in doc.descendants().filter(|n| n.tag_name().name() == "style") {
+            let css = node.attribute("type").is_none_or(|t| t.is_empty() || t == "text/css");
+            if css {
+                for text in node.children().filter_map(|c| c.text()) {
+                    sheet.parse_more(text);
+                }
+            }
+        }
+        let mut rules: Vec<_> = sheet.rules.into_iter().map(|r| (r.selector, r.declarations)).collect();
+        rules.sort_by_key(|(s, _)| s.specificity());
+        Sheet { rules }
+    }
+
+    /// The values `node` declares for the properties the importer reads.
+    pub fn declared(&self, node: Node<'a, '_>) -> Declared<'a> {
+        let mut out: Declared<'a> = Vec::new();
+        for a in node.attributes().filter(|a| a.namespace().is_none()) {
+            set(&mut out, a.name(), a.value());
+        }
+        let element = Element(node);
+        let matched: Vec<&[Declaration<'a>]> =
+            self.rules.iter().filter(|(s, _)| s.matches(&element)).map(|(_, d)| d.as_slice()).collect();
+        for d in matched.iter().flat_map(|d| d.iter()).filter(|d| !d.important) {
+            set(&mut out, d.name, d.value);
+        }
+        if let Some(style) = node.attribute("style") {
+            for d in DeclarationTokenizer::from(style) {
+                set(&mut out, d.name, d.value);
+            }
+        }
+        for d in matched.iter().flat_map(|d| d.iter()).filter(|d| d.important) {
+            set(&mut out, d.name, d.value);
+        }
+        out
+    }
+}
+
+/// The declared value of `name`, if any.
+pub fn get<'a>(declared: &Declared<'a>, name: &str) -> Option<&'a str> {
+    declared.iter().find(|(n, _)| *n == name).map(|(_, v)| v.trim())
+}
+
+fn set<'a>(out: &mut Declared<'a>, name: &str, value: &'a str) {
+    let Some(&name) = PROPERTIES.iter().find(|&&p| p == name) else { return };
+    match out.iter_mut().find(|(n, _)| *n == name) {
+        Some(slot) => slot.1 = value,
+        None => out.push((name, value)),
+    }
+}
+
+/// A roxmltree element as simplecss sees it.
+struct Element<'a, 'input>(Node<'a, 'input>);
+
+impl simplecss::Element for Element<'_, '_> {
+    fn parent_element(&self) -> Option<Self> {
+        self.0.parent_element().map(Element)
+    }
+
+    fn prev_sibling_element(&self) -> Option<Self> {
+        self.0.prev_sibling_element().map(Element)
+    }
+
+    fn has_local_name(&self, name: &str) -> bool {
+        self.0.tag_name().name() == name
+    }
+
+    fn attribute_matches(&self, local_name: &str, operator: AttributeOperator<'_>) -> bool {
+        self.0.attribute(local_name).is_some_and(|v| operator.matches(v))
+    }
+
+    fn pseudo_class_matches(&self, class: PseudoClass<'_>) -> bool {
+        matches!(class, PseudoClass::FirstChild) && self.0.prev_sibling_element().is_none()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn attribute_then_rules_by_specificity_then_style_then_important() {
+        let svg = r#"<svg xmlns="http://www.w3.org/2000/svg"><style>
+            #a { fill: blue } rect { fill: red; stroke: green } .c { stroke: gold !important }
+            </style><rect id="a" class="c" fill="black" stroke="black" style="stroke: pink; opacity: .5"/></svg>"#;
+        let doc = Document::parse(svg).unwrap();
+        let sheet = Sheet::new(&doc);
+        let rect = doc.descendants().find(|n| n.tag_name().name() == "rect").unwrap();
+        let d = sheet.declared(rect);
+        assert_eq!(get(&d, "fill"), Some("blue"), "id beats type selector and attribute");
+        assert_eq!(get(&d, "stroke"), Some("gold"), "!important beats the style attribute");
+        assert_eq!(get(&d, "opacity"), Some(".5"));
+        assert_eq!(get(&d, "id"), None, "only the properties the importer reads");
+    }
+}
