@@ -7,7 +7,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
-import { cpSync, mkdirSync, mkdtempSync, readFileSync, renameSync, writeFileSync } from 'node:fs';
+import { cpSync, mkdirSync, mkdtempSync, readFileSync, readdirSync, renameSync, statSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
 import { chromium } from 'playwright-core';
@@ -38,9 +38,13 @@ async function open(dir) {
     const wasm = new Set();
     page.on('pageerror', (e) => errors.push(e.message));
     // Requests of the page and of its workers: which wasm modules the site loaded.
-    context.on('request', (r) => { if (/\.wasm$/.test(r.url())) wasm.add(r.url().split('/').at(-1).replace(/-[\w-]{8}\.wasm$|\.[0-9a-f]{8,}\.wasm$/, '.wasm')); });
+    // Bundlers rename them (webpack: a content hash), so they are told apart by size.
+    const bySize = new Map(readdirSync(join(root, 'pkg/wasm')).filter((f) => f.endsWith('.wasm')).map((f) => [statSync(join(root, 'pkg/wasm', f)).size, f]));
+    const bodies = [];
+    context.on('response', (r) => { if (/\.wasm$/.test(r.url())) bodies.push(r.body().then((b) => wasm.add(bySize.get(b.length) ?? r.url()), () => {})); });
     await page.goto(`http://127.0.0.1:${server.address().port}/`);
     const result = await page.evaluate(() => window.result);
+    await Promise.all(bodies);
     return { result, errors, wasm: [...wasm].sort() };
   } finally {
     await browser.close();

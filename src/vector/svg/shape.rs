@@ -170,7 +170,7 @@ pub fn path_data(d: &str) -> Result<BezPath, OutOfRange> {
 /// before the arcs are converted (their cost grows with the radius).
 fn check_range(d: &str) -> Result<(), OutOfRange> {
     let (mut x, mut y, mut start) = (0.0f64, 0.0f64, (0.0f64, 0.0f64));
-    let far = |v: f64| !(v.abs() <= MAX_COORD);
+    let far = |v: f64| v.is_nan() || v.abs() > MAX_COORD;
     for segment in PathParser::from(d) {
         let Ok(segment) = segment else { break };
         let base = |abs: bool, x0: f64, y0: f64| if abs { (0.0, 0.0) } else { (x0, y0) };
