@@ -172,7 +172,7 @@ fn between_shells(elems: &[Element], grid: &Grid, radius: f64) -> f64 {
             }
         });
     }
-    d.sort_by(|a, b| a.total_cmp(b));
+    d.sort_unstable_by(f64::total_cmp);
     let (a, b) =
         d.windows(2).map(|w| (w[0], w[1])).max_by(|x, y| (x.1 - x.0).total_cmp(&(y.1 - y.0))).unwrap_or((lo, hi));
     0.5 * (a + b)
@@ -234,13 +234,13 @@ impl<'a> Reference<'a> {
                     });
                     ds.retain(|&x| x <= radius);
                     if ds.len() >= k || radius > extent * 4.0 {
-                        ds.sort_by(|a, b| a.total_cmp(b));
+                        ds.sort_unstable_by(f64::total_cmp);
                         return ds.get(k - 1).copied().unwrap_or(radius);
                     }
                     radius *= 2.0;
                 })
                 .collect();
-            d.sort_by(|a, b| a.total_cmp(b));
+            d.sort_unstable_by(f64::total_cmp);
             d[((d.len() - 1) as f64 * q) as usize]
         };
         let window_radius = (3.0 * spacing).max(kth(k_window, 0.5)) * 1.05;

@@ -156,7 +156,7 @@ pub fn fit(elems: &[Element], grid: &Grid, pair_radius: &[f64], spacing: f64, re
         .collect();
     // Accept only a fit that explains the drawing: residuals small against the spacing.
     let mut residuals: Vec<f64> = snapped.iter().zip(elems).map(|(s, e)| s.distance(e.pos)).collect();
-    residuals.sort_by(|x, y| x.total_cmp(y));
+    residuals.sort_unstable_by(f64::total_cmp);
     if residuals[residuals.len() / 2] > 0.15 * spacing {
         return None;
     }

@@ -136,3 +136,39 @@ test('each engine entry works alone in Node, and the browser entry asks for init
   assert.match(call('texture', 'm.seamlessTile({})'), /patternsynth\/texture: seamlessTile\(\) was called before the engine was loaded; `await init\(\)` first/);
   assert.match(call('patternsynth', 'm.decodeImage(new Uint8Array(4))'), /decodeImage\(\) was called before the engine was loaded; `await initCodecs\(\)` first/);
 });
+
+test('the option types declare exactly the options the engine reads', () => {
+  const dts = readFileSync('pkg/types.d.ts', 'utf8').replace(/\/\*\*[\s\S]*?\*\//g, '');
+  // The keys of an interface, with those of the interface it extends.
+  const keys = (name) => {
+    const m = dts.match(new RegExp(`interface ${name}(?: extends (\\w+))? \\{([^}]*)\\}`));
+    assert.ok(m, name);
+    const own = [...m[2].matchAll(/(\w+)\??:/g)].map((k) => k[1]);
+    return [...(m[1] ? keys(m[1]) : []), ...own].sort();
+  };
+  // The engine names the options it knows when it meets one it does not.
+  const known = (call) => {
+    try {
+      call({ notAnOption: 1 });
+    } catch (e) {
+      const m = e.message.match(/unknown option `notAnOption` \(expected one of ([^)]*)\)/);
+      assert.ok(m, e.message);
+      return m[1].split(', ').sort();
+    }
+    assert.fail('accepted an unknown option');
+  };
+  const img = { width: 8, height: 8, data: new Uint8Array(256) };
+  const grid = [{ points: [[0, 0], [4, 4]], width: 1, stroke: '#000000' }];
+  const blendOwn = ['angle', 'coefficient', 'transfer'];
+  const cases = [
+    ['ParseSvgOptions', (o) => ps.parseSvg('<svg xmlns="http://www.w3.org/2000/svg"/>', o)],
+    ['ClassifyOptions', (o) => ps.classifyStrokes(grid, o)],
+    ['StrokeOptions', (o) => ps.synthesizeStrokes(grid, { width: 9, height: 9, ...o })],
+    ['TileOptions', (o) => ps.strokeTile(grid, o)],
+    ['TextureOptions', (o) => ps.synthesizeTexture(img, { width: 9, height: 9, ...o })],
+    ['SeamlessOptions', (o) => ps.seamlessTile(img, o)],
+  ];
+  for (const [name, call] of cases) assert.deepEqual(keys(name), known(call), name);
+  // Blend options: the texture options (read by serde) and three read by hand.
+  assert.deepEqual(keys('BlendOptions'), [...known((o) => ps.blendTextures(img, img, { width: 9, height: 9, ...o })), ...blendOwn].sort());
+});

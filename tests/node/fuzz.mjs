@@ -4,7 +4,7 @@
 // duplicating bytes, nesting deeply and planting huge numbers. Every call must return
 // or throw an `Error` with a message (not a TypeError from the glue, not a trap), and
 // the instance must still work afterwards.
-import { readFileSync } from 'node:fs';
+import { readFileSync, readdirSync } from 'node:fs';
 import { STYLES, tile } from './real-patterns.mjs';
 
 /** mulberry32: small, fast, seeded. */
@@ -34,9 +34,12 @@ const HANDMADE = [
   '<?xml version="1.0"?><!DOCTYPE svg [<!ENTITY e "<rect width=\'3\' height=\'3\'/>">]>' + wrap('&e;<g transform="translate(10 10)">&e;</g>'),
 ];
 
-/** The seed documents: the svg-patterns tiles (3x3) and the hand-made ones. */
+/** The seed documents: the svg-patterns tiles (3x3), the hand-made ones, and the
+ *  import's reference constructs (symbols, nested viewports, CSS, gradients, holes). */
 export function svgSeeds() {
-  return [...Object.keys(STYLES).map((name) => tile(name, 30).svg), ...HANDMADE];
+  const dir = new URL('../fixtures/svg/constructs/', import.meta.url);
+  const constructs = readdirSync(dir).sort().map((f) => readFileSync(new URL(f, dir), 'utf8'));
+  return [...Object.keys(STYLES).map((name) => tile(name, 30).svg), ...HANDMADE, ...constructs];
 }
 
 const HUGE = ['1e30', '-1e30', '1e308', '1e-300', 'NaN', 'Infinity', '-0', '99999999999', '0', '-5'];

@@ -78,7 +78,8 @@ pub fn parse_svg(svg: &str, opts: &ImportOptions) -> Result<Import> {
 
     let sheet = Sheet::new(&doc);
     let by_id = doc.descendants().filter_map(|n| Some((n.attribute("id")?, n))).collect();
-    let mut walker = Walker { opts, sheet, by_id, using: Vec::new(), out: Vec::new(), report: Report::default() };
+    let mut walker =
+        Walker { opts, sheet, by_id, using: Vec::new(), out: Vec::new(), points: 0, report: Report::default() };
     let declared = walker.sheet.declared(root);
     let base = Context::initial();
     let ctx = base.inherit(&declared, &base.units);
@@ -331,6 +332,8 @@ struct Walker<'a, 'input> {
     /// The `<use>` targets being expanded, to drop recursive references.
     using: Vec<NodeId>,
     out: Vec<Stroke>,
+    /// Points in `out` so far, against `max_points`.
+    points: usize,
     report: Report,
 }
 
@@ -539,7 +542,7 @@ impl<'a, 'input> Walker<'a, 'input> {
     /// tolerance on a large path cannot ask for billions of points.
     fn flatten(&mut self, bez: BezPath, extent: f64) -> Result<Vec<(Vec<[f64; 2]>, bool)>> {
         let tolerance = self.opts.tolerance.max(extent * MIN_RELATIVE_TOLERANCE);
-        let budget = self.opts.max_points.saturating_sub(self.out.iter().map(|s| s.points.len()).sum());
+        let budget = self.opts.max_points.saturating_sub(self.points);
         let mut count = 0usize;
         let mut subpaths: Vec<(Vec<[f64; 2]>, bool)> = Vec::new();
         kurbo::flatten(bez, tolerance, |el| {
@@ -575,6 +578,7 @@ impl<'a, 'input> Walker<'a, 'input> {
         if subpaths.last().is_some_and(|(p, closed)| p.len() == 1 && !closed) {
             subpaths.pop();
         }
+        self.points += subpaths.iter().map(|s| s.0.len()).sum::<usize>();
         if count > budget {
             return Err(Error::TooLarge(format!(
                 "The SVG flattens to more than {} points; raise the tolerance or simplify it.",
