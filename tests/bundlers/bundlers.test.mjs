@@ -63,6 +63,7 @@ function check({ result, errors, wasm }) {
   assert.deepEqual(result.decoded, [8, 6]);
   // The page's own module is the vector one; the worker loads the full one, then the
   // codecs when first asked (names as the bundler emitted them, hashes aside).
+  if (!wasm) return;
   console.log(`wasm loaded: ${wasm.join(', ')}`);
   assert.equal(wasm.length, 3, wasm.join(', '));
   for (const name of ['vector', 'full', 'codec']) assert.ok(wasm.some((w) => w.includes(name)), `${name}: ${wasm.join(', ')}`);
@@ -97,4 +98,22 @@ test('a TypeScript consumer type-checks with tsc --strict against the shipped ty
   cpSync(join(import.meta.dirname, 'site/consumer.ts'), join(work, 'site/consumer.ts'));
   execFileSync(bin('tsc'), ['--strict', '--noEmit', '--target', 'es2022', '--module', 'esnext', '--moduleResolution', 'bundler',
     '--lib', 'es2022,dom', join(work, 'site/consumer.ts')], { stdio: 'pipe' });
+});
+
+test('Vite dev server: the same site works unbuilt', async () => {
+  const { createServer } = await import('vite');
+  const server = await createServer({ root: join(work, 'site'), logLevel: 'warn', server: { port: 0, host: '127.0.0.1' } });
+  await server.listen();
+  const browser = await chromium.launch(CHROMIUM);
+  try {
+    const page = await browser.newPage();
+    const errors = [];
+    page.on('pageerror', (e) => errors.push(e.message));
+    await page.goto(`http://127.0.0.1:${server.httpServer.address().port}/`);
+    const result = await page.evaluate(() => window.result);
+    check({ result, errors });
+  } finally {
+    await browser.close();
+    await server.close();
+  }
 });
