@@ -18,6 +18,7 @@
 
 use super::classify::median;
 use super::lattice;
+use super::period;
 use super::spatial::Grid;
 use crate::error::{invalid, Error, Result};
 use crate::progress::Throttle;
@@ -751,6 +752,21 @@ pub fn grow(elems: &[Element], opts: &GrowOptions, progress: &mut Throttle) -> R
         return invalid(format!("Element {i} has a position that is not a finite number."));
     }
     let drawn = Reference::new(elems)?;
+    // A periodic example (a tile repeated, a hand-drawn grid) needs no growth: its
+    // exact periodic extension has every site and no drift (see `period`).
+    if opts.regularize {
+        if let Some(periods) = period::find(elems) {
+            let area = Rect::new(0.0, 0.0, opts.width, opts.height);
+            let placed = period::extend(elems, &periods, area, opts.max_elements).map_err(|estimate| {
+                Error::TooLarge(format!(
+                    "This output would hold about {estimate:.0} elements; the limit is {}. Use a smaller output or larger strokes.",
+                    opts.max_elements
+                ))
+            })?;
+            progress.tick(1.0)?;
+            return Ok((placed, GrowStats::default()));
+        }
+    }
     let fit = if opts.regularize {
         lattice::fit(elems, &drawn.grid, &drawn.pair_radius, drawn.spacing, drawn.window_radius)
     } else {

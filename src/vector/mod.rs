@@ -6,6 +6,7 @@ pub mod exemplar;
 pub mod frechet;
 pub mod grow;
 pub mod lattice;
+pub mod period;
 pub mod regularity;
 pub mod spatial;
 pub mod stroke;

@@ -1,0 +1,441 @@
+//! The translational periods of a whole example, and its exact periodic extension.
+//!
+//! A tile repeated 3x3 may hold dozens of unlike elements per period, so the period is
+//! far longer than any neighbour's offset. Here candidate periods are the displacements
+//! between members of the rarest class (a true period maps every class onto itself, so
+//! it is among them), shortest first; a candidate is a period when it maps (almost)
+//! every element whose image lies inside the example onto a same-class element. The
+//! shortest such vector and the shortest one not parallel to it, reduced (Lagrange-
+//! Gauss), are verified against all elements.
+//!
+//! The extension then places every *motif position* (the elements reached from one
+//! another by whole periods) at every lattice translate inside the output: no growth,
+//! so no drift, no stalled bands and no strays. Each output element copies the example
+//! element at the same place in the example's block of periods, with that element's
+//! own deviation from the lattice, so hand-drawn jitter is kept as drawn.
+
+use super::grow::{Element, Placed};
+use super::spatial::Grid;
+use kurbo::{Point, Rect, Vec2};
+use std::collections::HashSet;
+
+/// The share of elements (whose image lies inside the example) a period must map onto
+/// same-class elements: all but a few hand-drawn outliers.
+const FULL_SUPPORT: f64 = 0.97;
+/// Members of the rarest class whose displacements to the others are candidates.
+const ANCHORS: usize = 6;
+/// Elements a candidate is screened on before it is verified on all of them.
+const SAMPLE: usize = 400;
+/// Matching radius as a fraction of the median nearest-neighbour distance.
+const TOLERANCE: f64 = 0.2;
+
+/// An example's lattice: its reduced periods and, per element, the motif position it
+/// belongs to and its cell `(k, l)` (its offset from the motif's origin in periods).
+#[derive(Clone, Debug)]
+pub struct Periods {
+    pub a: Vec2,
+    pub b: Vec2,
+    pub motif: Vec<u32>,
+    pub cell: Vec<(i32, i32)>,
+    /// Per motif position: class and origin (the least-squares position of cell (0, 0)).
+    pub motifs: Vec<(u32, Point)>,
+}
+
+struct Index<'a> {
+    elems: &'a [Element],
+    grid: Grid,
+    bounds: Rect,
+    tolerance: f64,
+    reach: f64,
+}
+
+impl Index<'_> {
+    /// The same-class element nearest `p`, within the tolerance.
+    fn partner(&self, i: usize, v: Vec2) -> Option<usize> {
+        let e = &self.elems[i];
+        let p = e.pos + v;
+        let mut best: Option<(usize, f64)> = None;
+        let t2 = self.tolerance * self.tolerance;
+        self.grid.for_each_near(p, self.tolerance, |j| {
+            let o = &self.elems[j as usize];
+            let d2 = (o.pos - p).hypot2();
+            if o.class == e.class && d2 <= t2 && best.is_none_or(|b| d2 < b.1) {
+                best = Some((j as usize, d2));
+            }
+        });
+        best.map(|b| b.0)
+    }
+
+    /// Whether `p` lies inside the example: within its box and near some element.
+    fn inside(&self, p: Point) -> bool {
+        let b = self.bounds.inset(-self.tolerance);
+        if !(p.x >= b.x0 && p.x <= b.x1 && p.y >= b.y0 && p.y <= b.y1) {
+            return false;
+        }
+        let mut near = false;
+        let r2 = self.reach * self.reach;
+        self.grid.for_each_near(p, self.reach, |j| near |= (self.elems[j as usize].pos - p).hypot2() <= r2);
+        near
+    }
+
+    /// Whether `v` maps the elements `set` onto same-class elements, all but a few of
+    /// those whose image is inside; stops at the first few misses.
+    fn supports(&self, v: Vec2, set: &[usize]) -> bool {
+        let (mut inside, mut misses) = (0usize, 0usize);
+        for &i in set {
+            if !self.inside(self.elems[i].pos + v) {
+                continue;
+            }
+            inside += 1;
+            if self.partner(i, v).is_none() {
+                misses += 1;
+                if misses as f64 > 2.0 + (1.0 - FULL_SUPPORT) * set.len() as f64 {
+                    return false;
+                }
+            }
+        }
+        // The image must overlap a fair part of the example, not a corner of it.
+        inside * 4 >= set.len() && (misses as f64) <= (1.0 - FULL_SUPPORT) * inside as f64 + 1.0
+    }
+}
+
+/// The median distance from an element to its nearest neighbour (any class) that is
+/// not on top of it, over a sample.
+fn spacing(elems: &[Element], grid: &Grid, extent: f64) -> f64 {
+    let step = elems.len().div_ceil(SAMPLE).max(1);
+    let mut d: Vec<f64> = Vec::new();
+    for i in (0..elems.len()).step_by(step) {
+        let p = elems[i].pos;
+        let mut radius = extent / (elems.len() as f64).sqrt().max(1.0);
+        loop {
+            let mut best = f64::INFINITY;
+            grid.for_each_near(p, radius, |j| {
+                let q = (elems[j as usize].pos - p).hypot();
+                if q > 1e-9 * extent && q < best {
+                    best = q;
+                }
+            });
+            if best <= radius || radius > 2.0 * extent {
+                if best.is_finite() {
+                    d.push(best);
+                }
+                break;
+            }
+            radius *= 2.0;
+        }
+    }
+    super::classify::median(&mut d)
+}
+
+/// Finds the two periods of `elems`, or `None` when the example is not periodic in
+/// two directions (a single copy, a row, irregular or too jittery input).
+pub fn find(elems: &[Element]) -> Option<Periods> {
+    let n = elems.len();
+    if n < 4 {
+        return None;
+    }
+    let bounds = elems.iter().fold(Rect::from_points(elems[0].pos, elems[0].pos), |r, e| r.union_pt(e.pos));
+    let extent = bounds.width().max(bounds.height());
+    if !(extent > 0.0 && extent.is_finite()) {
+        return None;
+    }
+    let mut grid = Grid::new(bounds, extent / (n as f64).sqrt(), 4 * n + 16);
+    for (i, e) in elems.iter().enumerate() {
+        grid.insert(i as u32, e.pos);
+    }
+    let spacing = spacing(elems, &grid, extent);
+    if !(spacing > 0.0 && spacing.is_finite()) {
+        return None;
+    }
+    let index = Index { elems, grid, bounds, tolerance: TOLERANCE * spacing, reach: 1.5 * spacing };
+
+    // Candidates: displacements from a few central members of the rarest class (with
+    // at least two members) to all its members, one per half-plane, shortest first.
+    let classes = elems.iter().map(|e| e.class).max()? as usize + 1;
+    let mut members = vec![Vec::new(); classes];
+    for (i, e) in elems.iter().enumerate() {
+        members[e.class as usize].push(i);
+    }
+    let rare = members.iter().filter(|m| m.len() >= 2).min_by_key(|m| m.len())?;
+    let centre = bounds.center();
+    let mut anchors = rare.clone();
+    anchors.sort_unstable_by(|&i, &j| (elems[i].pos - centre).hypot2().total_cmp(&(elems[j].pos - centre).hypot2()));
+    anchors.truncate(ANCHORS);
+    let quantum = index.tolerance.max(1e-12);
+    let mut seen = HashSet::new();
+    let mut candidates: Vec<Vec2> = Vec::new();
+    for &i in &anchors {
+        for &j in rare {
+            let mut v = elems[j].pos - elems[i].pos;
+            if v.x < 0.0 || (v.x == 0.0 && v.y < 0.0) {
+                v = -v;
+            }
+            if v.hypot() <= 2.0 * index.tolerance {
+                continue;
+            }
+            if seen.insert(((v.x / quantum).round() as i64, (v.y / quantum).round() as i64)) {
+                candidates.push(v);
+            }
+        }
+    }
+    candidates.sort_unstable_by(|a, b| a.hypot2().total_cmp(&b.hypot2()));
+
+    let step = n.div_ceil(SAMPLE).max(1);
+    let sample: Vec<usize> = (0..n).step_by(step).collect();
+    let all: Vec<usize> = (0..n).collect();
+    let is_period = |v: Vec2| index.supports(v, &sample) && index.supports(v, &all);
+    let a = *candidates.iter().find(|&&v| is_period(v))?;
+    let b = *candidates.iter().find(|&&v| a.cross(v).abs() > 0.1 * a.hypot() * v.hypot() && is_period(v))?;
+    let (a, b) = reduce(a, b);
+    if !(is_period(a) && is_period(b) && is_period(a + b) && is_period(a - b)) {
+        return None;
+    }
+    motifs(&index, a, b)
+}
+
+/// The periods that best explain the drawn positions, given each element's motif and
+/// cell: minimises the squared distances of `pos = origin(motif) + k a + l b` (the
+/// origins eliminated by centring each motif), so jitter averages out instead of the
+/// one displacement the search found setting the period (which would drift).
+fn least_squares(elems: &[Element], motif: &[u32], cell: &[(i32, i32)], motifs: usize) -> Option<(Vec2, Vec2)> {
+    let mut mean = vec![(0.0, 0.0, Vec2::ZERO, 0.0); motifs];
+    for (i, e) in elems.iter().enumerate() {
+        let m = &mut mean[motif[i] as usize];
+        m.0 += cell[i].0 as f64;
+        m.1 += cell[i].1 as f64;
+        m.2 += e.pos.to_vec2();
+        m.3 += 1.0;
+    }
+    let (mut uu, mut uv, mut vv, mut uy, mut vy) = (0.0, 0.0, 0.0, Vec2::ZERO, Vec2::ZERO);
+    for (i, e) in elems.iter().enumerate() {
+        let m = &mean[motif[i] as usize];
+        let (u, v) = (cell[i].0 as f64 - m.0 / m.3, cell[i].1 as f64 - m.1 / m.3);
+        let y = e.pos.to_vec2() - m.2 / m.3;
+        (uu, uv, vv) = (uu + u * u, uv + u * v, vv + v * v);
+        uy += y * u;
+        vy += y * v;
+    }
+    let det = uu * vv - uv * uv;
+    if !(det.abs() > 1e-9 * (uu * vv).max(1e-300)) {
+        return None;
+    }
+    Some(((uy * vv - vy * uv) / det, (vy * uu - uy * uv) / det))
+}
+
+/// Lagrange-Gauss reduction: the shortest basis of the lattice `a`, `b` spans.
+fn reduce(mut a: Vec2, mut b: Vec2) -> (Vec2, Vec2) {
+    if a.hypot2() > b.hypot2() {
+        std::mem::swap(&mut a, &mut b);
+    }
+    for _ in 0..64 {
+        let m = (a.dot(b) / a.hypot2()).round();
+        if m == 0.0 {
+            break;
+        }
+        b -= a * m;
+        if b.hypot2() >= a.hypot2() {
+            break;
+        }
+        std::mem::swap(&mut a, &mut b);
+    }
+    (a, b)
+}
+
+/// Groups elements into motif positions (joined by the periods), gives each element its
+/// cell, and each motif its least-squares origin; motifs that land on one another
+/// modulo the lattice (a partner missed by jitter) are merged.
+fn motifs(index: &Index, a: Vec2, b: Vec2) -> Option<Periods> {
+    let elems = index.elems;
+    let n = elems.len();
+    let steps = [(a, (1, 0)), (-a, (-1, 0)), (b, (0, 1)), (-b, (0, -1))];
+    let mut cell: Vec<Option<(i32, i32)>> = vec![None; n];
+    let mut motif = vec![u32::MAX; n];
+    let mut roots = Vec::new();
+    for root in 0..n {
+        if cell[root].is_some() {
+            continue;
+        }
+        let m = roots.len() as u32;
+        roots.push(root);
+        cell[root] = Some((0, 0));
+        motif[root] = m;
+        let mut stack = vec![root];
+        while let Some(i) = stack.pop() {
+            let (k, l) = cell[i]?;
+            for (v, (dk, dl)) in steps {
+                if let Some(j) = index.partner(i, v) {
+                    if cell[j].is_none() {
+                        cell[j] = Some((k + dk, l + dl));
+                        motif[j] = m;
+                        stack.push(j);
+                    }
+                }
+            }
+        }
+    }
+    let cell: Vec<(i32, i32)> = cell.into_iter().collect::<Option<_>>()?;
+    let (a, b) = least_squares(elems, &motif, &cell, roots.len()).unwrap_or((a, b));
+    let origin_of = |i: usize| elems[i].pos - a * cell[i].0 as f64 - b * cell[i].1 as f64;
+    let mut sums = vec![(Vec2::ZERO, 0usize); roots.len()];
+    for i in 0..n {
+        let s = &mut sums[motif[i] as usize];
+        s.0 += origin_of(i).to_vec2();
+        s.1 += 1;
+    }
+    let mut motifs: Vec<(u32, Point)> =
+        roots.iter().zip(&sums).map(|(&r, s)| (elems[r].class, (s.0 / s.1 as f64).to_point())).collect();
+
+    // Merge motif positions that coincide modulo the lattice.
+    let det = a.cross(b);
+    let to_lattice = |v: Vec2| (v.cross(b) / det, a.cross(v) / det);
+    let mut merged: Vec<u32> = (0..motifs.len() as u32).collect();
+    if motifs.len() <= 4000 {
+        for x in 0..motifs.len() {
+            if merged[x] != x as u32 {
+                continue;
+            }
+            for y in x + 1..motifs.len() {
+                if merged[y] != y as u32 || motifs[x].0 != motifs[y].0 {
+                    continue;
+                }
+                let d = motifs[y].1 - motifs[x].1;
+                let (s, t) = to_lattice(d);
+                let (ks, kt) = (s.round(), t.round());
+                if (d - a * ks - b * kt).hypot() <= index.tolerance {
+                    merged[y] = x as u32;
+                }
+            }
+        }
+    }
+    // Renumber (a merged motif's members join the one it lands on), and recompute each
+    // element's cell from its position.
+    let mut renumber = vec![u32::MAX; motifs.len()];
+    let mut kept = Vec::new();
+    for (x, m) in motifs.drain(..).enumerate() {
+        if merged[x] == x as u32 {
+            renumber[x] = kept.len() as u32;
+            kept.push(m);
+        }
+    }
+    let mut cells = cell;
+    for i in 0..n {
+        let m = renumber[merged[motif[i] as usize] as usize] as usize;
+        motif[i] = m as u32;
+        let (s, t) = to_lattice(elems[i].pos - kept[m].1);
+        cells[i] = (s.round() as i32, t.round() as i32);
+    }
+    Some(Periods { a, b, motif, cell: cells, motifs: kept })
+}
+
+/// The periodic extension of the example over `area`: every motif position at every
+/// lattice translate whose position lies inside, the example block centred as growth
+/// centres it. Refuses (returns the estimate) above `max_elements`.
+pub fn extend(elems: &[Element], p: &Periods, area: Rect, max_elements: usize) -> Result<Vec<Placed>, f64> {
+    let det = p.a.cross(p.b).abs();
+    let estimate = p.motifs.len() as f64 * area.area() / det;
+    if !(estimate <= max_elements as f64) {
+        return Err(estimate);
+    }
+    let bounds = elems.iter().fold(Rect::from_points(elems[0].pos, elems[0].pos), |r, e| r.union_pt(e.pos));
+    let shift = area.center() - bounds.center();
+    let (kmin, kmax) = p.cell.iter().fold((i32::MAX, i32::MIN), |(lo, hi), c| (lo.min(c.0), hi.max(c.0)));
+    let (lmin, lmax) = p.cell.iter().fold((i32::MAX, i32::MIN), |(lo, hi), c| (lo.min(c.1), hi.max(c.1)));
+    let (kn, ln) = (kmax - kmin + 1, lmax - lmin + 1);
+    let mut members = vec![Vec::new(); p.motifs.len()];
+    for (i, &m) in p.motif.iter().enumerate() {
+        members[m as usize].push(i);
+    }
+    let sdet = p.a.cross(p.b);
+    let to_lattice = |v: Vec2| (v.cross(p.b) / sdet, p.a.cross(v) / sdet);
+    let corners =
+        [area.origin(), Point::new(area.x1, area.y0), Point::new(area.x0, area.y1), Point::new(area.x1, area.y1)];
+    let mut out = Vec::with_capacity(estimate as usize + 16);
+    for (m, &(class, origin)) in p.motifs.iter().enumerate() {
+        let o = origin + shift;
+        let (mut s0, mut s1, mut t0, mut t1) = (f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY);
+        for c in corners {
+            let (s, t) = to_lattice(c - o);
+            (s0, s1, t0, t1) = (s0.min(s), s1.max(s), t0.min(t), t1.max(t));
+        }
+        for l in t0.floor() as i32..=t1.ceil() as i32 {
+            for k in s0.floor() as i32..=s1.ceil() as i32 {
+                let ideal = o + p.a * k as f64 + p.b * l as f64;
+                if !(ideal.x >= area.x0 && ideal.x <= area.x1 && ideal.y >= area.y0 && ideal.y <= area.y1) {
+                    continue;
+                }
+                // The example element at the same place in the example's block.
+                let want = (kmin + (k - kmin).rem_euclid(kn), lmin + (l - lmin).rem_euclid(ln));
+                let source = *members[m]
+                    .iter()
+                    .min_by_key(|&&i| (p.cell[i].0 - want.0).abs() + (p.cell[i].1 - want.1).abs())
+                    .expect("a motif position has members");
+                let c = p.cell[source];
+                let deviation = elems[source].pos - (origin + p.a * c.0 as f64 + p.b * c.1 as f64);
+                out.push(Placed { pos: ideal + deviation, class, source: source as u32 });
+            }
+        }
+    }
+    Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A tile of `motif` elements (positions in the unit cell, classes) repeated nx x ny.
+    fn repeat(motif: &[(f64, f64, u32)], a: Vec2, b: Vec2, nx: i32, ny: i32) -> Vec<Element> {
+        let mut v = Vec::new();
+        for j in 0..ny {
+            for i in 0..nx {
+                for &(x, y, class) in motif {
+                    v.push(Element { pos: Point::new(x, y) + a * i as f64 + b * j as f64, class });
+                }
+            }
+        }
+        v
+    }
+
+    #[test]
+    fn finds_long_periods_of_busy_irregular_tiles() {
+        // 30 scattered elements of 3 classes in a 100 x 80 tile: neighbours are ~15
+        // apart, the period is 100.
+        let mut r = crate::rng::Rng::new(5);
+        let motif: Vec<(f64, f64, u32)> =
+            (0..30).map(|i| (r.next_f64() * 100.0, r.next_f64() * 80.0, (i % 3) as u32)).collect();
+        let (a, b) = (Vec2::new(100.0, 0.0), Vec2::new(0.0, 80.0));
+        let elems = repeat(&motif, a, b, 3, 3);
+        let p = find(&elems).expect("periodic");
+        let mut got = [p.a, p.b];
+        got.sort_by(|x, y| x.x.abs().total_cmp(&y.x.abs()));
+        assert!((got[0].x.abs() < 1e-6 && (got[0].y.abs() - 80.0).abs() < 1e-6), "{got:?}");
+        assert!(((got[1].x.abs() - 100.0).abs() < 1e-6 && got[1].y.abs() < 1e-6), "{got:?}");
+        assert_eq!(p.motifs.len(), 30);
+        let out = extend(&elems, &p, Rect::new(0.0, 0.0, 1000.0, 800.0), 1_000_000).unwrap();
+        // 10 x 10 periods of 30 elements, give or take those on the border.
+        assert!((out.len() as i64 - 3000).abs() <= 60, "{}", out.len());
+        // Every placed element sits on its motif's lattice, one per site.
+        let mut sites = HashSet::new();
+        for e in &out {
+            assert!(sites.insert(((e.pos.x * 1e3).round() as i64, (e.pos.y * 1e3).round() as i64, e.class)), "stacked");
+        }
+    }
+
+    #[test]
+    fn oblique_lattices_reduce_and_rows_are_not_lattices() {
+        let (a, b) = (Vec2::new(30.0, 0.0), Vec2::new(15.0, 26.0));
+        let elems = repeat(&[(0.0, 0.0, 0), (10.0, 5.0, 1)], a, b, 4, 4);
+        let p = find(&elems).expect("periodic");
+        assert!((p.a.hypot() - 30.0).abs() < 1e-6 && (p.b.hypot() - 30.0).abs() < 0.1, "{:?} {:?}", p.a, p.b);
+        let row = repeat(&[(0.0, 0.0, 0), (10.0, 5.0, 1)], a, Vec2::new(0.0, 1e3), 8, 1);
+        assert!(find(&row).is_none());
+    }
+
+    #[test]
+    fn irregular_input_has_no_periods() {
+        let mut r = crate::rng::Rng::new(9);
+        let elems: Vec<Element> = (0..200)
+            .map(|i| Element { pos: Point::new(r.next_f64() * 500.0, r.next_f64() * 500.0), class: i % 2 })
+            .collect();
+        assert!(find(&elems).is_none());
+    }
+}
