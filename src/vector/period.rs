@@ -216,7 +216,7 @@ fn least_squares(elems: &[Element], motif: &[u32], cell: &[(i32, i32)], motifs: 
         vy += y * v;
     }
     let det = uu * vv - uv * uv;
-    if !(det.abs() > 1e-9 * (uu * vv).max(1e-300)) {
+    if det.is_nan() || det.abs() <= 1e-9 * (uu * vv).max(1e-300) {
         return None;
     }
     Some(((uy * vv - vy * uv) / det, (vy * uu - uy * uv) / det))
@@ -333,7 +333,7 @@ fn motifs(index: &Index, a: Vec2, b: Vec2) -> Option<Periods> {
 pub fn extend(elems: &[Element], p: &Periods, area: Rect, max_elements: usize) -> Result<Vec<Placed>, f64> {
     let det = p.a.cross(p.b).abs();
     let estimate = p.motifs.len() as f64 * area.area() / det;
-    if !(estimate <= max_elements as f64) {
+    if estimate.is_nan() || estimate > max_elements as f64 {
         return Err(estimate);
     }
     let bounds = elems.iter().fold(Rect::from_points(elems[0].pos, elems[0].pos), |r, e| r.union_pt(e.pos));
