@@ -70,7 +70,17 @@ pub(crate) fn median(v: &mut [f64]) -> f64 {
 /// adding any stroke that matches any member, until a sweep adds nothing. Each pair is
 /// compared at most once (a stroke remembers how many members it was checked against).
 /// Returns the class of each stroke, numbered in order of first appearance.
+///
+/// The classes are the connected components of the `matches` relation, so copies of one
+/// stroke (translates with the same paint: SVG patterns are made of them) are compared
+/// once, through their first occurrence.
 pub fn classify(strokes: &[Stroke], tol: &Tolerances) -> Vec<u32> {
+    let (firsts, copy_of) = translates(strokes);
+    if firsts.len() < strokes.len() {
+        let unique: Vec<Stroke> = firsts.iter().map(|&i| strokes[i].clone()).collect();
+        let classes = classify(&unique, tol);
+        return copy_of.iter().map(|&u| classes[u]).collect();
+    }
     let prepared = Prepared::new(strokes, sample_spacing(strokes, tol.path));
     let mut class = vec![u32::MAX; strokes.len()];
     let mut left: Vec<usize> = (0..strokes.len()).collect();
@@ -101,6 +111,39 @@ pub fn classify(strokes: &[Stroke], tol: &Tolerances) -> Vec<u32> {
     class
 }
 
+/// Groups strokes that are exact translates of one another with the same width, paint
+/// and subpaths: the index of each group's first stroke, and each stroke's group.
+fn translates(strokes: &[Stroke]) -> (Vec<usize>, Vec<usize>) {
+    use std::collections::HashMap;
+    let size = typical_size(strokes);
+    // Relative coordinates to a millionth of the typical size: a translation by a
+    // non-representable offset changes only the last bits.
+    let quantum = size * 1e-6;
+    let key = |s: &Stroke| {
+        let [x0, y0] = s.points.first().copied().unwrap_or([0.0, 0.0]);
+        let shape: Vec<(i64, i64)> = s
+            .points
+            .iter()
+            .map(|&[x, y]| (((x - x0) / quantum).round() as i64, ((y - y0) / quantum).round() as i64))
+            .collect();
+        let paint = (s.stroke, s.fill, s.width.to_bits(), s.closed, s.fill_rule);
+        (shape, s.breaks.clone(), paint, s.opacity.to_bits(), s.stroke_opacity.to_bits(), s.fill_opacity.to_bits())
+    };
+    let mut groups = HashMap::new();
+    let mut firsts = Vec::new();
+    let copy_of = strokes
+        .iter()
+        .enumerate()
+        .map(|(i, s)| {
+            *groups.entry(key(s)).or_insert_with(|| {
+                firsts.push(i);
+                firsts.len() - 1
+            })
+        })
+        .collect();
+    (firsts, copy_of)
+}
+
 /// At most this many strokes are sampled to propose tolerances (pairs grow quadratically).
 const PROPOSAL_SAMPLE: usize = 120;
 
@@ -111,12 +154,21 @@ pub fn propose_tolerances(strokes: &[Stroke]) -> Tolerances {
     let step = strokes.len().div_ceil(PROPOSAL_SAMPLE).max(1);
     let sample: Vec<Stroke> = strokes.iter().step_by(step).cloned().collect();
     let size = typical_size(&sample);
-    let prepared = Prepared::new(&sample, size / 32.0);
+    // Path distances between copies are those of their originals: each computed once.
+    let (firsts, copy_of) = translates(&sample);
+    let unique: Vec<Stroke> = firsts.iter().map(|&i| sample[i].clone()).collect();
+    let prepared = Prepared::new(&unique, size / 32.0);
+    let mut known = vec![f64::NAN; unique.len() * unique.len()];
     let (mut paths, mut widths, mut colors) = (Vec::new(), Vec::new(), Vec::new());
     for i in 0..sample.len() {
         for j in i + 1..sample.len() {
             let (a, b) = (&sample[i], &sample[j]);
-            paths.push(prepared.shapes[i].distance(&prepared.shapes[j]));
+            let (u, v) = (copy_of[i], copy_of[j]);
+            let d = &mut known[u.min(v) * unique.len() + u.max(v)];
+            if d.is_nan() {
+                *d = if u == v { 0.0 } else { prepared.shapes[u].distance(&prepared.shapes[v]) };
+            }
+            paths.push(*d);
             widths.push((a.width - b.width).abs());
             for d in [paint_distance(a.stroke, b.stroke), paint_distance(a.fill, b.fill)] {
                 if d.is_finite() {
@@ -203,6 +255,17 @@ mod tests {
         let count = *classes.iter().max().unwrap() + 1;
         assert_eq!(count, 3, "tolerances {tol:?}");
         assert!(tol.path > 0.3 && tol.path < 7.0, "{tol:?}");
+    }
+
+    #[test]
+    fn copies_classify_as_their_original() {
+        let mut strokes: Vec<Stroke> =
+            (0..30).map(|i| seg(i as f64 * 20.0, 0.0, 10.0, (i % 3) as f64 * 4.0, 1.0, [0; 3])).collect();
+        strokes.push(seg(5.0, 50.0, 0.0, 10.0, 1.0, [0; 3]));
+        let tol = Tolerances { path: 1.0, width: 0.5, color: 1.0 };
+        let (firsts, _) = translates(&strokes);
+        assert_eq!(firsts, vec![0, 1, 2, 30]);
+        assert_eq!(classify(&strokes, &tol), (0..30).map(|i| i % 3).chain([3]).collect::<Vec<u32>>());
     }
 
     #[test]

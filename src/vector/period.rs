@@ -44,7 +44,8 @@ pub struct Periods {
 struct Index<'a> {
     elems: &'a [Element],
     grid: Grid,
-    bounds: Rect,
+    /// The example's convex hull, counter-clockwise (y down: clockwise on screen).
+    hull: Vec<Point>,
     tolerance: f64,
     reach: f64,
 }
@@ -66,11 +67,16 @@ impl Index<'_> {
         best.map(|b| b.0)
     }
 
-    /// Whether `p` lies inside the example: within its box and near some element.
+    /// Whether `p` lies inside the example: within its hull and near some element.
     fn inside(&self, p: Point) -> bool {
-        let b = self.bounds.inset(-self.tolerance);
-        if !(p.x >= b.x0 && p.x <= b.x1 && p.y >= b.y0 && p.y <= b.y1) {
-            return false;
+        // Within the convex hull (give or take the tolerance), then near an element.
+        let hull = &self.hull;
+        for k in 0..hull.len() {
+            let (p0, p1) = (hull[k], hull[(k + 1) % hull.len()]);
+            let e = p1 - p0;
+            if e.cross(p - p0) < -self.tolerance * e.hypot() {
+                return false;
+            }
         }
         let mut near = false;
         let r2 = self.reach * self.reach;
@@ -79,8 +85,9 @@ impl Index<'_> {
     }
 
     /// Whether `v` maps the elements `set` onto same-class elements, all but a few of
-    /// those whose image is inside; stops at the first few misses.
-    fn supports(&self, v: Vec2, set: &[usize]) -> bool {
+    /// those whose image is inside; stops at the first few misses. `overlap`: the image
+    /// must also cover a quarter of the example (a search candidate, not a check).
+    fn supports(&self, v: Vec2, set: &[usize], overlap: bool) -> bool {
         let (mut inside, mut misses) = (0usize, 0usize);
         for &i in set {
             if !self.inside(self.elems[i].pos + v) {
@@ -95,7 +102,8 @@ impl Index<'_> {
             }
         }
         // The image must overlap a fair part of the example, not a corner of it.
-        inside * 4 >= set.len() && (misses as f64) <= (1.0 - FULL_SUPPORT) * inside as f64 + 1.0
+        (if overlap { inside * 4 >= set.len() } else { inside > 0 })
+            && (misses as f64) <= (1.0 - FULL_SUPPORT) * inside as f64 + 1.0
     }
 }
 
@@ -147,34 +155,47 @@ pub fn find(elems: &[Element]) -> Option<Periods> {
     if !(spacing > 0.0 && spacing.is_finite()) {
         return None;
     }
-    let index = Index { elems, grid, bounds, tolerance: TOLERANCE * spacing, reach: 1.5 * spacing };
+    let hull = convex_hull(elems.iter().map(|e| e.pos).collect());
+    if hull.len() < 3 {
+        return None;
+    }
+    let index = Index { elems, grid, hull, tolerance: TOLERANCE * spacing, reach: 1.5 * spacing };
 
-    // Candidates: displacements from a few central members of the rarest class (with
-    // at least two members) to all its members, one per half-plane, shortest first.
+    // Candidates: displacements from a few central members of the rarest classes (with
+    // at least two members) to all their members, one per half-plane, shortest first.
+    // One class would do if classes were exact; three tolerate a misclassified copy.
     let classes = elems.iter().map(|e| e.class).max()? as usize + 1;
     let mut members = vec![Vec::new(); classes];
     for (i, e) in elems.iter().enumerate() {
         members[e.class as usize].push(i);
     }
-    let rare = members.iter().filter(|m| m.len() >= 2).min_by_key(|m| m.len())?;
+    let mut rare: Vec<&Vec<usize>> = members.iter().filter(|m| m.len() >= 2).collect();
+    rare.sort_by_key(|m| m.len());
+    rare.truncate(3);
+    if rare.is_empty() {
+        return None;
+    }
     let centre = bounds.center();
-    let mut anchors = rare.clone();
-    anchors.sort_unstable_by(|&i, &j| (elems[i].pos - centre).hypot2().total_cmp(&(elems[j].pos - centre).hypot2()));
-    anchors.truncate(ANCHORS);
     let quantum = index.tolerance.max(1e-12);
     let mut seen = HashSet::new();
     let mut candidates: Vec<Vec2> = Vec::new();
-    for &i in &anchors {
-        for &j in rare {
-            let mut v = elems[j].pos - elems[i].pos;
-            if v.x < 0.0 || (v.x == 0.0 && v.y < 0.0) {
-                v = -v;
-            }
-            if v.hypot() <= 2.0 * index.tolerance {
-                continue;
-            }
-            if seen.insert(((v.x / quantum).round() as i64, (v.y / quantum).round() as i64)) {
-                candidates.push(v);
+    for class in rare {
+        let mut anchors = class.clone();
+        anchors
+            .sort_unstable_by(|&i, &j| (elems[i].pos - centre).hypot2().total_cmp(&(elems[j].pos - centre).hypot2()));
+        anchors.truncate(ANCHORS);
+        for &i in &anchors {
+            for &j in class {
+                let mut v = elems[j].pos - elems[i].pos;
+                if v.x < 0.0 || (v.x == 0.0 && v.y < 0.0) {
+                    v = -v;
+                }
+                if v.hypot() <= 2.0 * index.tolerance {
+                    continue;
+                }
+                if seen.insert(((v.x / quantum).round() as i64, (v.y / quantum).round() as i64)) {
+                    candidates.push(v);
+                }
             }
         }
     }
@@ -183,11 +204,12 @@ pub fn find(elems: &[Element]) -> Option<Periods> {
     let step = n.div_ceil(SAMPLE).max(1);
     let sample: Vec<usize> = (0..n).step_by(step).collect();
     let all: Vec<usize> = (0..n).collect();
-    let is_period = |v: Vec2| index.supports(v, &sample) && index.supports(v, &all);
+    let is_period = |v: Vec2| index.supports(v, &sample, true) && index.supports(v, &all, true);
     let a = *candidates.iter().find(|&&v| is_period(v))?;
     let b = *candidates.iter().find(|&&v| a.cross(v).abs() > 0.1 * a.hypot() * v.hypot() && is_period(v))?;
     let (a, b) = reduce(a, b);
-    if !(is_period(a) && is_period(b) && is_period(a + b) && is_period(a - b)) {
+    // The reduced basis and its sums hold wherever the example overlaps its image.
+    if ![a, b, a + b, a - b].iter().all(|&v| index.supports(v, &all, false)) {
         return None;
     }
     motifs(&index, a, b)
@@ -220,6 +242,30 @@ fn least_squares(elems: &[Element], motif: &[u32], cell: &[(i32, i32)], motifs: 
         return None;
     }
     Some(((uy * vv - vy * uv) / det, (vy * uu - uy * uv) / det))
+}
+
+/// The convex hull of `points` (Andrew's monotone chain), with positive turns.
+fn convex_hull(mut points: Vec<Point>) -> Vec<Point> {
+    points.sort_unstable_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
+    points.dedup();
+    if points.len() < 3 {
+        return points;
+    }
+    let turn = |o: Point, a: Point, b: Point| (a - o).cross(b - o);
+    let mut hull: Vec<Point> = Vec::with_capacity(2 * points.len());
+    for pass in 0..2 {
+        let start = hull.len();
+        let iter: Box<dyn Iterator<Item = &Point>> =
+            if pass == 0 { Box::new(points.iter()) } else { Box::new(points.iter().rev()) };
+        for &p in iter {
+            while hull.len() >= start + 2 && turn(hull[hull.len() - 2], hull[hull.len() - 1], p) <= 0.0 {
+                hull.pop();
+            }
+            hull.push(p);
+        }
+        hull.pop();
+    }
+    hull
 }
 
 /// Lagrange-Gauss reduction: the shortest basis of the lattice `a`, `b` spans.

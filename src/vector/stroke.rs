@@ -10,7 +10,7 @@ fn one() -> f64 {
 }
 
 /// How a compound stroke's subpaths fill: SVG's `fill-rule`.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum FillRule {
     #[default]

@@ -502,6 +502,7 @@ impl<'a, 'input> Walker<'a, 'input> {
                 return Ok(());
             }
         };
+        let local = bez.clone();
         bez.apply_affine(ctx.transform);
         // Geometry that no drawing has (a radius of 1e20, scale(1e15)) is left out with a
         // warning: flattening it would need more points than memory holds.
@@ -532,7 +533,7 @@ impl<'a, 'input> Walker<'a, 'input> {
         if template.fill.is_none() && template.stroke.is_none() {
             return Ok(());
         }
-        let subpaths = self.flatten(bez, extent)?;
+        let subpaths = self.flatten(local, ctx.transform, extent)?;
         self.push(subpaths, template);
         Ok(())
     }
@@ -540,12 +541,24 @@ impl<'a, 'input> Walker<'a, 'input> {
     /// Flattens a path into (points, closed) subpaths, checking the point cap as the
     /// points come. The tolerance is relative to the path's size too, so that a tiny
     /// tolerance on a large path cannot ask for billions of points.
-    fn flatten(&mut self, bez: BezPath, extent: f64) -> Result<Vec<(Vec<[f64; 2]>, bool)>> {
+    ///
+    /// The path is flattened in its own user space and the points transformed after, so
+    /// that copies of one shape (by `<use>` or a group's translation) get the very same
+    /// points, and so classify as one shape: flattened where they lie, rounding would
+    /// subdivide some copies differently.
+    fn flatten(&mut self, local: BezPath, transform: Affine, extent: f64) -> Result<Vec<(Vec<[f64; 2]>, bool)>> {
         let tolerance = self.opts.tolerance.max(extent * MIN_RELATIVE_TOLERANCE);
+        // In local units: divided by the transform's largest stretch.
+        let [a, b, c, d, ..] = transform.as_coeffs();
+        let sum = a * a + b * b + c * c + d * d;
+        let det = a * d - b * c;
+        let stretch = ((sum + (sum * sum - 4.0 * det * det).max(0.0).sqrt()) / 2.0).sqrt();
+        let tolerance = if stretch > 0.0 && stretch.is_finite() { tolerance / stretch } else { tolerance };
+
         let budget = self.opts.max_points.saturating_sub(self.points);
         let mut count = 0usize;
         let mut subpaths: Vec<(Vec<[f64; 2]>, bool)> = Vec::new();
-        kurbo::flatten(bez, tolerance, |el| {
+        kurbo::flatten(local, tolerance, |el| {
             count += 1;
             if count > budget {
                 return;
@@ -577,6 +590,12 @@ impl<'a, 'input> Walker<'a, 'input> {
         });
         if subpaths.last().is_some_and(|(p, closed)| p.len() == 1 && !closed) {
             subpaths.pop();
+        }
+        for (points, _) in &mut subpaths {
+            for p in points.iter_mut() {
+                let q = transform * Point::new(p[0], p[1]);
+                *p = [q.x, q.y];
+            }
         }
         self.points += subpaths.iter().map(|s| s.0.len()).sum::<usize>();
         if count > budget {
