@@ -77,6 +77,6 @@ pub fn repetition(out: &Image, min_shift: usize, seed: u64) -> f64 {
     if diffs.is_empty() {
         return 1.0;
     }
-    diffs.sort_unstable_by(f64::total_cmp);
+    crate::order::floats(&mut diffs);
     diffs[0] / diffs[diffs.len() / 2].max(1e-9)
 }

@@ -62,7 +62,7 @@ pub(crate) fn median(v: &mut [f64]) -> f64 {
     if v.is_empty() {
         return 0.0;
     }
-    v.sort_unstable_by(f64::total_cmp);
+    crate::order::floats(v);
     v[v.len() / 2]
 }
 
@@ -191,7 +191,7 @@ pub fn propose_tolerances(strokes: &[Stroke]) -> Tolerances {
 /// least 2.5x and its upper side is at least a tenth of `unit`.
 fn split_at_gap(mut d: Vec<f64>, unit: f64) -> f64 {
     d.retain(|v| v.is_finite());
-    d.sort_unstable_by(f64::total_cmp);
+    crate::order::floats(&mut d);
     let floor = 0.02 * unit;
     let mut best: Option<(f64, f64)> = None;
     let mut best_ratio = 2.5;

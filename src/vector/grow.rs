@@ -173,7 +173,7 @@ fn between_shells(elems: &[Element], grid: &Grid, radius: f64) -> f64 {
             }
         });
     }
-    d.sort_unstable_by(f64::total_cmp);
+    crate::order::floats(&mut d);
     let (a, b) =
         d.windows(2).map(|w| (w[0], w[1])).max_by(|x, y| (x.1 - x.0).total_cmp(&(y.1 - y.0))).unwrap_or((lo, hi));
     0.5 * (a + b)
@@ -235,13 +235,13 @@ impl<'a> Reference<'a> {
                     });
                     ds.retain(|&x| x <= radius);
                     if ds.len() >= k || radius > extent * 4.0 {
-                        ds.sort_unstable_by(f64::total_cmp);
+                        crate::order::floats(&mut ds);
                         return ds.get(k - 1).copied().unwrap_or(radius);
                     }
                     radius *= 2.0;
                 })
                 .collect();
-            d.sort_unstable_by(f64::total_cmp);
+            crate::order::floats(&mut d);
             d[((d.len() - 1) as f64 * q) as usize]
         };
         let window_radius = (3.0 * spacing).max(kth(k_window, 0.5)) * 1.05;
@@ -757,12 +757,7 @@ pub fn grow(elems: &[Element], opts: &GrowOptions, progress: &mut Throttle) -> R
     if opts.regularize {
         if let Some(periods) = period::find(elems) {
             let area = Rect::new(0.0, 0.0, opts.width, opts.height);
-            let placed = period::extend(elems, &periods, area, opts.max_elements).map_err(|estimate| {
-                Error::TooLarge(format!(
-                    "This output would hold about {estimate:.0} elements; the limit is {}. Use a smaller output or larger strokes.",
-                    opts.max_elements
-                ))
-            })?;
+            let placed = period::extend(elems, &periods, area, opts.max_elements, progress)?;
             progress.tick(1.0)?;
             return Ok((placed, GrowStats::default()));
         }

@@ -79,7 +79,7 @@ pub fn fit(elems: &[Element], grid: &Grid, pair_radius: &[f64], spacing: f64, re
             }
         });
     }
-    candidates.sort_by(|a, b| a.hypot2().total_cmp(&b.hypot2()));
+    let mut candidates = crate::order::sorted(&candidates, |v| v.hypot2());
     candidates.dedup_by(|a, b| (*a - *b).hypot() < 0.25 * spacing);
 
     let a = *candidates.iter().find(|&&v| support(v) >= MIN_SUPPORT)?;
@@ -156,7 +156,7 @@ pub fn fit(elems: &[Element], grid: &Grid, pair_radius: &[f64], spacing: f64, re
         .collect();
     // Accept only a fit that explains the drawing: residuals small against the spacing.
     let mut residuals: Vec<f64> = snapped.iter().zip(elems).map(|(s, e)| s.distance(e.pos)).collect();
-    residuals.sort_unstable_by(f64::total_cmp);
+    crate::order::floats(&mut residuals);
     if residuals[residuals.len() / 2] > 0.15 * spacing {
         return None;
     }

@@ -16,6 +16,9 @@
 
 use super::grow::{Element, Placed};
 use super::spatial::Grid;
+use crate::error::{Error, Result};
+use crate::order;
+use crate::progress::Throttle;
 use kurbo::{Point, Rect, Vec2};
 use std::collections::HashSet;
 
@@ -169,8 +172,8 @@ pub fn find(elems: &[Element]) -> Option<Periods> {
     for (i, e) in elems.iter().enumerate() {
         members[e.class as usize].push(i);
     }
-    let mut rare: Vec<&Vec<usize>> = members.iter().filter(|m| m.len() >= 2).collect();
-    rare.sort_by_key(|m| m.len());
+    let rare: Vec<&Vec<usize>> = members.iter().filter(|m| m.len() >= 2).collect();
+    let mut rare = order::sorted(&rare, |m| m.len() as f64);
     rare.truncate(3);
     if rare.is_empty() {
         return None;
@@ -180,9 +183,7 @@ pub fn find(elems: &[Element]) -> Option<Periods> {
     let mut seen = HashSet::new();
     let mut candidates: Vec<Vec2> = Vec::new();
     for class in rare {
-        let mut anchors = class.clone();
-        anchors
-            .sort_unstable_by(|&i, &j| (elems[i].pos - centre).hypot2().total_cmp(&(elems[j].pos - centre).hypot2()));
+        let mut anchors = order::sorted(class, |&i| (elems[i].pos - centre).hypot2());
         anchors.truncate(ANCHORS);
         for &i in &anchors {
             for &j in class {
@@ -199,7 +200,7 @@ pub fn find(elems: &[Element]) -> Option<Periods> {
             }
         }
     }
-    candidates.sort_unstable_by(|a, b| a.hypot2().total_cmp(&b.hypot2()));
+    let candidates = order::sorted(&candidates, |v| v.hypot2());
 
     let step = n.div_ceil(SAMPLE).max(1);
     let sample: Vec<usize> = (0..n).step_by(step).collect();
@@ -245,8 +246,9 @@ fn least_squares(elems: &[Element], motif: &[u32], cell: &[(i32, i32)], motifs: 
 }
 
 /// The convex hull of `points` (Andrew's monotone chain), with positive turns.
-fn convex_hull(mut points: Vec<Point>) -> Vec<Point> {
-    points.sort_unstable_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
+fn convex_hull(points: Vec<Point>) -> Vec<Point> {
+    // By x, then y (the sort keeps the order of ties).
+    let mut points = order::sorted(&order::sorted(&points, |p| p.y), |p| p.x);
     points.dedup();
     if points.len() < 3 {
         return points;
@@ -255,9 +257,8 @@ fn convex_hull(mut points: Vec<Point>) -> Vec<Point> {
     let mut hull: Vec<Point> = Vec::with_capacity(2 * points.len());
     for pass in 0..2 {
         let start = hull.len();
-        let iter: Box<dyn Iterator<Item = &Point>> =
-            if pass == 0 { Box::new(points.iter()) } else { Box::new(points.iter().rev()) };
-        for &p in iter {
+        for k in 0..points.len() {
+            let p = if pass == 0 { points[k] } else { points[points.len() - 1 - k] };
             while hull.len() >= start + 2 && turn(hull[hull.len() - 2], hull[hull.len() - 1], p) <= 0.0 {
                 hull.pop();
             }
@@ -375,12 +376,20 @@ fn motifs(index: &Index, a: Vec2, b: Vec2) -> Option<Periods> {
 
 /// The periodic extension of the example over `area`: every motif position at every
 /// lattice translate whose position lies inside, the example block centred as growth
-/// centres it. Refuses (returns the estimate) above `max_elements`.
-pub fn extend(elems: &[Element], p: &Periods, area: Rect, max_elements: usize) -> Result<Vec<Placed>, f64> {
+/// centres it. Refuses above `max_elements`; reports progress per motif position.
+pub fn extend(
+    elems: &[Element],
+    p: &Periods,
+    area: Rect,
+    max_elements: usize,
+    progress: &mut Throttle,
+) -> Result<Vec<Placed>> {
     let det = p.a.cross(p.b).abs();
     let estimate = p.motifs.len() as f64 * area.area() / det;
     if estimate.is_nan() || estimate > max_elements as f64 {
-        return Err(estimate);
+        return Err(Error::TooLarge(format!(
+            "This output would hold about {estimate:.0} elements; the limit is {max_elements}. Use a smaller output or larger strokes."
+        )));
     }
     let bounds = elems.iter().fold(Rect::from_points(elems[0].pos, elems[0].pos), |r, e| r.union_pt(e.pos));
     let shift = area.center() - bounds.center();
@@ -397,6 +406,7 @@ pub fn extend(elems: &[Element], p: &Periods, area: Rect, max_elements: usize) -
         [area.origin(), Point::new(area.x1, area.y0), Point::new(area.x0, area.y1), Point::new(area.x1, area.y1)];
     let mut out = Vec::with_capacity(estimate as usize + 16);
     for (m, &(class, origin)) in p.motifs.iter().enumerate() {
+        progress.tick(m as f64 / p.motifs.len() as f64)?;
         let o = origin + shift;
         let (mut s0, mut s1, mut t0, mut t1) = (f64::INFINITY, f64::NEG_INFINITY, f64::INFINITY, f64::NEG_INFINITY);
         for c in corners {
@@ -456,7 +466,9 @@ mod tests {
         assert!((got[0].x.abs() < 1e-6 && (got[0].y.abs() - 80.0).abs() < 1e-6), "{got:?}");
         assert!(((got[1].x.abs() - 100.0).abs() < 1e-6 && got[1].y.abs() < 1e-6), "{got:?}");
         assert_eq!(p.motifs.len(), 30);
-        let out = extend(&elems, &p, Rect::new(0.0, 0.0, 1000.0, 800.0), 1_000_000).unwrap();
+        let mut silent = crate::Silent;
+        let out =
+            extend(&elems, &p, Rect::new(0.0, 0.0, 1000.0, 800.0), 1_000_000, &mut Throttle::new(&mut silent)).unwrap();
         // 10 x 10 periods of 30 elements, give or take those on the border.
         assert!((out.len() as i64 - 3000).abs() <= 60, "{}", out.len());
         // Every placed element sits on its motif's lattice, one per site.

@@ -170,7 +170,7 @@ fn assign(lat: &Lattice, output: &[(Point, u32)], area: Rect) -> (Regularity, Ve
     let inside: Vec<usize> = (0..all.len()).filter(|&k| inner.contains(all[k].0)).collect();
     let covered = inside.iter().filter(|&&k| hits[k] > 0).count();
     let stacked = hits.iter().map(|&h| h.saturating_sub(1)).sum();
-    residuals.sort_unstable_by(f64::total_cmp);
+    crate::order::floats(&mut residuals);
     let pct =
         |q: f64| residuals.get(((residuals.len() as f64 - 1.0) * q).round() as usize).copied().unwrap_or(f64::NAN);
     let r = Regularity {

@@ -22,8 +22,7 @@ pub fn groups(subpaths: &[(Vec<[f64; 2]>, bool)], filled: bool) -> Vec<Vec<usize
     let n = subpaths.len();
     let boxes: Vec<Box2> = subpaths.iter().map(|(p, _)| bounds(p)).collect();
     let mut parent: Vec<usize> = (0..n).collect();
-    let mut order: Vec<usize> = (0..n).collect();
-    order.sort_by(|&a, &b| boxes[a][0].total_cmp(&boxes[b][0]));
+    let order = crate::order::by_key(&boxes.iter().map(|b| b[0]).collect::<Vec<_>>());
     let mut tests = 0u64;
     for (k, &a) in order.iter().enumerate() {
         for &b in &order[k + 1..] {

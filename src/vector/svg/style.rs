@@ -44,8 +44,11 @@ impl<'a> Sheet<'a> {
                 }
             }
         }
-        let mut rules: Vec<_> = sheet.rules.into_iter().map(|r| (r.selector, r.declarations)).collect();
-        rules.sort_by_key(|(s, _)| s.specificity());
+        // By specificity; rules of equal specificity keep their source order.
+        let key = |s: &Selector| s.specificity().iter().fold(0.0, |k, &d| k * 256.0 + f64::from(d));
+        let keys: Vec<f64> = sheet.rules.iter().map(|r| key(&r.selector)).collect();
+        let mut rules: Vec<_> = sheet.rules.into_iter().map(|r| Some((r.selector, r.declarations))).collect();
+        let rules = crate::order::by_key(&keys).into_iter().filter_map(|i| rules[i].take()).collect();
         Sheet { rules }
     }
 
