@@ -57,6 +57,10 @@ pub struct GrowOptions {
     /// Grow on the example's fitted lattice (no drift), then give each element its
     /// source's own deviation back (see `lattice`).
     pub regularize: bool,
+    /// Half the size of each element's drawing around its position (empty: points).
+    /// A periodic extension places every element whose drawing reaches into the area,
+    /// so the output is covered to its edges.
+    pub extents: Vec<Vec2>,
 }
 
 impl Default for GrowOptions {
@@ -69,6 +73,7 @@ impl Default for GrowOptions {
             max_elements: 500_000,
             frontier_first: true,
             regularize: true,
+            extents: Vec::new(),
         }
     }
 }
@@ -757,7 +762,7 @@ pub fn grow(elems: &[Element], opts: &GrowOptions, progress: &mut Throttle) -> R
     if opts.regularize {
         if let Some(periods) = period::find(elems) {
             let area = Rect::new(0.0, 0.0, opts.width, opts.height);
-            let placed = period::extend(elems, &periods, area, opts.max_elements, progress)?;
+            let placed = period::extend(elems, &opts.extents, &periods, area, opts.max_elements, progress)?;
             progress.tick(1.0)?;
             return Ok((placed, GrowStats::default()));
         }

@@ -375,10 +375,12 @@ fn motifs(index: &Index, a: Vec2, b: Vec2) -> Option<Periods> {
 }
 
 /// The periodic extension of the example over `area`: every motif position at every
-/// lattice translate whose position lies inside, the example block centred as growth
-/// centres it. Refuses above `max_elements`; reports progress per motif position.
+/// lattice translate whose drawing (`extents`: half sizes per element, or none) reaches
+/// into the area, the example block centred as growth centres it. Refuses above
+/// `max_elements`; reports progress per motif position.
 pub fn extend(
     elems: &[Element],
+    extents: &[Vec2],
     p: &Periods,
     area: Rect,
     max_elements: usize,
@@ -402,8 +404,12 @@ pub fn extend(
     }
     let sdet = p.a.cross(p.b);
     let to_lattice = |v: Vec2| (v.cross(p.b) / sdet, p.a.cross(v) / sdet);
+    let half = |i: usize| extents.get(i).copied().unwrap_or(Vec2::ZERO);
+    // Lattice ranges over the area grown by the largest drawing.
+    let reach = (0..elems.len()).map(half).fold(Vec2::ZERO, |m, h| Vec2::new(m.x.max(h.x), m.y.max(h.y)));
+    let wide = area.inset((reach.x, reach.y));
     let corners =
-        [area.origin(), Point::new(area.x1, area.y0), Point::new(area.x0, area.y1), Point::new(area.x1, area.y1)];
+        [wide.origin(), Point::new(wide.x1, wide.y0), Point::new(wide.x0, wide.y1), Point::new(wide.x1, wide.y1)];
     let mut out = Vec::with_capacity(estimate as usize + 16);
     for (m, &(class, origin)) in p.motifs.iter().enumerate() {
         progress.tick(m as f64 / p.motifs.len() as f64)?;
@@ -416,7 +422,7 @@ pub fn extend(
         for l in t0.floor() as i32..=t1.ceil() as i32 {
             for k in s0.floor() as i32..=s1.ceil() as i32 {
                 let ideal = o + p.a * k as f64 + p.b * l as f64;
-                if !(ideal.x >= area.x0 && ideal.x <= area.x1 && ideal.y >= area.y0 && ideal.y <= area.y1) {
+                if !wide.contains(ideal) {
                     continue;
                 }
                 // The example element at the same place in the example's block.
@@ -427,7 +433,12 @@ pub fn extend(
                     .expect("a motif position has members");
                 let c = p.cell[source];
                 let deviation = elems[source].pos - (origin + p.a * c.0 as f64 + p.b * c.1 as f64);
-                out.push(Placed { pos: ideal + deviation, class, source: source as u32 });
+                let pos = ideal + deviation;
+                let h = half(source);
+                if pos.x + h.x < area.x0 || pos.x - h.x > area.x1 || pos.y + h.y < area.y0 || pos.y - h.y > area.y1 {
+                    continue;
+                }
+                out.push(Placed { pos, class, source: source as u32 });
             }
         }
     }
@@ -468,7 +479,8 @@ mod tests {
         assert_eq!(p.motifs.len(), 30);
         let mut silent = crate::Silent;
         let out =
-            extend(&elems, &p, Rect::new(0.0, 0.0, 1000.0, 800.0), 1_000_000, &mut Throttle::new(&mut silent)).unwrap();
+            extend(&elems, &[], &p, Rect::new(0.0, 0.0, 1000.0, 800.0), 1_000_000, &mut Throttle::new(&mut silent))
+                .unwrap();
         // 10 x 10 periods of 30 elements, give or take those on the border.
         assert!((out.len() as i64 - 3000).abs() <= 60, "{}", out.len());
         // Every placed element sits on its motif's lattice, one per site.

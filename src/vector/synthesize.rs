@@ -147,6 +147,14 @@ pub fn synthesize_strokes(
         support: opts.support,
         max_elements,
         regularize: opts.regularize,
+        extents: strokes
+            .iter()
+            .map(|s| {
+                let b = s.bounds();
+                let pad = if s.stroke.is_some() { s.width / 2.0 } else { 0.0 };
+                kurbo::Vec2::new(b.width() / 2.0 + pad, b.height() / 2.0 + pad)
+            })
+            .collect(),
         ..GrowOptions::default()
     };
     let (placed, stats): (_, GrowStats) = grow(&elements, &grow_opts, &mut Throttle::with_range(progress, 0.02, 0.98))?;

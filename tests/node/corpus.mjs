@@ -81,7 +81,8 @@ const centre = (s) => {
 
 /**
  * Synthesizes 10x10 periods from the case's example with the package `ps` and compares
- * with the exact periodic extension: recall of ideal sites strictly inside, strays (an
+ * with the exact periodic extension: recall of the ideal sites whose drawing reaches
+ * into the output (so the output is covered to its edges), strays (an
  * element on no site of its class), stacked duplicates, drift (95th percentile residual
  * over the shorter period), time.
  */
@@ -96,6 +97,15 @@ export function measure(ps, c) {
   const ms = performance.now() - t0;
   const cls = out.classification.classes;
   const refs = strokes.map(centre);
+  // Half the drawn size of each element: a site is in the output when its drawing
+  // reaches into the area (the SVG's viewport clips the rest).
+  const half = strokes.map((st) => {
+    const xs = st.points.map((q) => q[0]), ys = st.points.map((q) => q[1]);
+    const pad = st.stroke ? st.width / 2 : 0;
+    return [(Math.max(...xs) - Math.min(...xs)) / 2 + pad, (Math.max(...ys) - Math.min(...ys)) / 2 + pad];
+  });
+  // Overlap of a drawing centred at p with the area, by more than `m`.
+  const reaches = (p, k, m) => p[0] + half[k][0] > m && p[0] - half[k][0] < w - m && p[1] + half[k][1] > m && p[1] - half[k][1] < h - m;
   const xs = refs.map((p) => p[0]), ys = refs.map((p) => p[1]);
   const shift = [w / 2 - (Math.min(...xs) + Math.max(...xs)) / 2, h / 2 - (Math.min(...ys) + Math.max(...ys)) / 2];
   const period = Math.min(Math.hypot(...a), Math.hypot(...b));
@@ -112,18 +122,18 @@ export function measure(ps, c) {
     for (let dy = -1; dy <= 1; dy++) for (let dx = -1; dx <= 1; dx++) for (const s of hash.get(`${cx + dx},${cy + dy}`) ?? []) if (s.c === cls) f(s);
   };
   const sites = [];
-  const range = 14;
+  const range = 16;
   for (let k = 0; k < perCopy; k++) {
     for (let i = -range; i <= range; i++) for (let j = -range; j <= range; j++) {
       const p = [refs[k][0] + shift[0] + i * a[0] + j * b[0], refs[k][1] + shift[1] + i * a[1] + j * b[1]];
-      if (p[0] < -tol || p[0] > w + tol || p[1] < -tol || p[1] > h + tol) continue;
+      if (!reaches(p, k, -tol)) continue;
       let dup = false;
       near(p[0], p[1], cls[k], (s) => {
         const d = Math.hypot(s.p[0] - p[0], s.p[1] - p[1]);
         dup ||= d < same || (d < 0.02 * period && (s.i !== i || s.j !== j));
       });
       if (dup) continue;
-      const site = { p, c: cls[k], hits: 0, i, j };
+      const site = { p, c: cls[k], hits: 0, i, j, inside: reaches(p, k, tol) };
       sites.push(site);
       const key = cell(p[0], p[1]);
       if (!hash.has(key)) hash.set(key, []);
@@ -142,7 +152,8 @@ export function measure(ps, c) {
     if (best && bd < tol) { best.hits++; residuals.push(bd / period); } else stray++;
   });
   residuals.sort((p, q) => p - q);
-  const inner = sites.filter((s) => s.p[0] > tol && s.p[0] < w - tol && s.p[1] > tol && s.p[1] < h - tol);
+  // Every site whose drawing is in the area (clearly: by more than the tolerance).
+  const inner = sites.filter((s) => s.inside);
   const covered = inner.filter((s) => s.hits > 0).length;
   const stacked = sites.reduce((n, s) => n + Math.max(0, s.hits - 1), 0);
   return {
