@@ -17,6 +17,7 @@
 //!   without evaluating candidates (it would add nothing).
 
 use super::classify::median;
+pub use super::element::{Element, Placed};
 use super::lattice;
 use super::period;
 use super::spatial::Grid;
@@ -25,21 +26,6 @@ use crate::progress::Throttle;
 use kurbo::{Point, Rect, Vec2};
 use std::cmp::Reverse;
 use std::collections::BinaryHeap;
-
-/// A point element of the reference: its class and reference point.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Element {
-    pub pos: Point,
-    pub class: u32,
-}
-
-/// An element of the grown target: where it is and which reference element it copies.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Placed {
-    pub pos: Point,
-    pub class: u32,
-    pub source: u32,
-}
 
 #[derive(Clone, Debug)]
 pub struct GrowOptions {

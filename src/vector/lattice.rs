@@ -14,7 +14,7 @@
 //! periods, and small residuals. Otherwise (irregular input, a single copy) the
 //! positions are left as drawn.
 
-use super::grow::Element;
+use super::element::Element;
 use super::spatial::Grid;
 use kurbo::{Point, Vec2};
 

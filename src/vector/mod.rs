@@ -2,6 +2,7 @@
 
 pub mod classify;
 pub mod color;
+pub mod element;
 pub mod exemplar;
 pub mod frechet;
 pub mod grow;

@@ -14,7 +14,7 @@
 //! element at the same place in the example's block of periods, with that element's
 //! own deviation from the lattice, so hand-drawn jitter is kept as drawn.
 
-use super::grow::{Element, Placed};
+use super::element::{Element, Placed};
 use super::spatial::Grid;
 use crate::error::{Error, Result};
 use crate::order;
