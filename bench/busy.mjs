@@ -8,11 +8,8 @@ import { mkdtempSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { parseSvg, synthesizeStrokes } from '../pkg/node/index.js';
+import { rng } from '../tests/node/fuzz.mjs';
 
-function rng(seed) {
-  let s = seed >>> 0;
-  return () => ((s = (Math.imul(s, 1664525) + 1013904223) >>> 0) / 2 ** 32);
-}
 const KINDS = [
   (x, y) => `<path d="M${x} ${y - 3}v6" stroke="#1e1e1e" stroke-width="1.5" fill="none"/>`,
   (x, y) => `<circle cx="${x}" cy="${y}" r="3" fill="#c85028"/>`,
@@ -23,13 +20,13 @@ function scatter(count, size, gap, periodic, seed) {
   const r = rng(seed);
   const pts = [];
   for (let tries = 0; pts.length < count && tries < count * 300; tries++) {
-    const p = [r() * size, r() * size];
+    const p = [r.next() * size, r.next() * size];
     const ok = pts.every((q) => {
       let dx = Math.abs(q[0] - p[0]), dy = Math.abs(q[1] - p[1]);
       if (periodic) { dx = Math.min(dx, size - dx); dy = Math.min(dy, size - dy); }
       return Math.hypot(dx, dy) >= gap;
     });
-    if (ok) pts.push([...p, Math.floor(r() * 3)]);
+    if (ok) pts.push([...p, r.int(3)]);
   }
   return pts;
 }

@@ -1,8 +1,8 @@
 //! Prints what the period finder sees in an SVG example: strokes, classes, and the
 //! periods and motif positions it finds (or that it finds none).
 //!   cargo run --release --example period_probe -- example.svg
-use patternsynth::vector::grow::Element;
-use patternsynth::vector::{classify_strokes, parse_svg, period, ImportOptions};
+use patternsynth::vector::grow::{find_periods, Element};
+use patternsynth::vector::{classify_strokes, parse_svg, ImportOptions};
 
 fn main() {
     let path = std::env::args().nth(1).expect("an SVG file");
@@ -15,7 +15,7 @@ fn main() {
         strokes.iter().zip(&c.classes).map(|(s, &class)| Element { pos: s.reference_point(), class }).collect();
     println!("{} strokes, {} classes ({:?})", strokes.len(), c.count, c.tolerances);
     let t = std::time::Instant::now();
-    match period::find(&elems) {
+    match find_periods(&elems).expect("a spacing") {
         Some(p) => println!("periods {:?} {:?}, {} motif positions ({:?})", p.a, p.b, p.motifs.len(), t.elapsed()),
         None => println!("no periods ({:?})", t.elapsed()),
     }

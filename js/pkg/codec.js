@@ -10,13 +10,12 @@ const codec = engine(
   'patternsynth',
   '`await initCodecs()` first (or `await init()` from patternsynth/codec); in a browser, createImageBitmap decodes natively',
 );
-const call = (name) => (...args) => codec.call(name, args);
 
 export default codec.init;
 export const initSync = codec.initSync;
 /** How many times a trap (a bug) made the engine restart, for diagnostics. */
 export const restarts = () => codec.restarts;
 
-export const version = call('version');
-export const decodeImage = call('decodeImage');
-export const encodePng = call('encodePng');
+export const version = codec.method('version');
+export const decodeImage = codec.method('decodeImage');
+export const encodePng = codec.method('encodePng');

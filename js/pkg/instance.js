@@ -76,5 +76,8 @@ export function engine(glue, defaultUrl, name, hint = '`await init()` first (or 
     }
   }
 
-  return { init, initSync, call, get restarts() { return restarts; } };
+  /** `method(name)`: the entry-point function that calls `name` (what entries export). */
+  const method = (name) => (...args) => call(name, args);
+
+  return { init, initSync, call, method, get restarts() { return restarts; } };
 }

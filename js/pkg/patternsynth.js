@@ -6,7 +6,6 @@ import * as glue from './wasm/full.js';
 import { engine } from './instance.js';
 
 const full = engine(glue, new URL('./wasm/full_bg.wasm', import.meta.url), 'patternsynth');
-const call = (name) => (...args) => full.call(name, args);
 
 export default full.init;
 export const initSync = full.initSync;
@@ -14,13 +13,13 @@ export const initSync = full.initSync;
 export const restarts = () => full.restarts;
 export { default as initCodecs, initSync as initCodecsSync, decodeImage, encodePng } from './codec.js';
 
-export const version = call('version');
-export const parseSvg = call('parseSvg');
-export const parseSvgReport = call('parseSvgReport');
-export const classifyStrokes = call('classifyStrokes');
-export const synthesizeStrokes = call('synthesizeStrokes');
-export const strokeTile = call('strokeTile');
-export const exampleStrokes = call('exampleStrokes');
-export const synthesizeTexture = call('synthesizeTexture');
-export const blendTextures = call('blendTextures');
-export const seamlessTile = call('seamlessTile');
+export const version = full.method('version');
+export const parseSvg = full.method('parseSvg');
+export const parseSvgReport = full.method('parseSvgReport');
+export const classifyStrokes = full.method('classifyStrokes');
+export const synthesizeStrokes = full.method('synthesizeStrokes');
+export const strokeTile = full.method('strokeTile');
+export const exampleStrokes = full.method('exampleStrokes');
+export const synthesizeTexture = full.method('synthesizeTexture');
+export const blendTextures = full.method('blendTextures');
+export const seamlessTile = full.method('seamlessTile');

@@ -5,14 +5,13 @@ import * as glue from './wasm/texture.js';
 import { engine } from './instance.js';
 
 const texture = engine(glue, new URL('./wasm/texture_bg.wasm', import.meta.url), 'patternsynth/texture');
-const call = (name) => (...args) => texture.call(name, args);
 
 export default texture.init;
 export const initSync = texture.initSync;
 /** How many times a trap (a bug) made the engine restart, for diagnostics. */
 export const restarts = () => texture.restarts;
 
-export const version = call('version');
-export const synthesizeTexture = call('synthesizeTexture');
-export const blendTextures = call('blendTextures');
-export const seamlessTile = call('seamlessTile');
+export const version = texture.method('version');
+export const synthesizeTexture = texture.method('synthesizeTexture');
+export const blendTextures = texture.method('blendTextures');
+export const seamlessTile = texture.method('seamlessTile');

@@ -76,11 +76,16 @@ pub(crate) fn median(v: &mut [f64]) -> f64 {
 /// once, through their first occurrence.
 pub fn classify(strokes: &[Stroke], tol: &Tolerances) -> Vec<u32> {
     let (firsts, copy_of) = translates(strokes);
-    if firsts.len() < strokes.len() {
-        let unique: Vec<Stroke> = firsts.iter().map(|&i| strokes[i].clone()).collect();
-        let classes = classify(&unique, tol);
-        return copy_of.iter().map(|&u| classes[u]).collect();
+    if firsts.len() == strokes.len() {
+        return components(strokes, tol);
     }
+    let unique: Vec<Stroke> = firsts.iter().map(|&i| strokes[i].clone()).collect();
+    let classes = components(&unique, tol);
+    copy_of.iter().map(|&u| classes[u]).collect()
+}
+
+/// The greedy clustering itself, on strokes that are not copies of one another.
+fn components(strokes: &[Stroke], tol: &Tolerances) -> Vec<u32> {
     let prepared = Prepared::new(strokes, sample_spacing(strokes, tol.path));
     let mut class = vec![u32::MAX; strokes.len()];
     let mut left: Vec<usize> = (0..strokes.len()).collect();

@@ -170,8 +170,19 @@ fn between_shells(elems: &[Element], grid: &Grid, radius: f64) -> f64 {
     0.5 * (a + b)
 }
 
-impl<'a> Reference<'a> {
-    fn new(elems: &'a [Element]) -> Result<Self> {
+/// Where the example's elements are: their box, a grid indexing them and their spacing
+/// (the median distance between neighbours). The period search needs only this; growth
+/// builds its `Reference` on it.
+struct Spread {
+    bounds: Rect,
+    grid: Grid,
+    /// The grid's cell size, the scale of neighbour searches.
+    rough: f64,
+    spacing: f64,
+}
+
+impl Spread {
+    fn new(elems: &[Element]) -> Result<Self> {
         let n = elems.len();
         if n < 2 {
             return invalid("Draw at least two strokes: a pattern needs a spacing to repeat.");
@@ -181,7 +192,6 @@ impl<'a> Reference<'a> {
         if extent <= 0.0 {
             return invalid("All strokes are centred on the same point: there is no spacing to repeat.");
         }
-        // A first grid for neighbour searches in the reference.
         let rough = extent / (n as f64).sqrt().max(1.0);
         let mut grid = Grid::new(bounds, rough, 4 * n + 16);
         for (i, e) in elems.iter().enumerate() {
@@ -192,6 +202,18 @@ impl<'a> Reference<'a> {
         if !spacing.is_finite() || spacing <= 0.0 {
             return invalid("All strokes are centred on the same point: there is no spacing to repeat.");
         }
+        Ok(Spread { bounds, grid, rough, spacing })
+    }
+}
+
+impl<'a> Reference<'a> {
+    fn new(elems: &'a [Element]) -> Result<Self> {
+        Reference::on(elems, Spread::new(elems)?)
+    }
+
+    fn on(elems: &'a [Element], spread: Spread) -> Result<Self> {
+        let Spread { bounds, grid, rough, spacing } = spread;
+        let (n, extent) = (elems.len(), bounds.width().max(bounds.height()));
         let mut with_coincident = nearest_distances(elems, false, false, &grid, rough);
         let cross_radius = 0.5 * median(&mut with_coincident);
 
@@ -733,6 +755,13 @@ pub fn fit_lattice(elems: &[Element]) -> Result<Option<lattice::LatticeFit>> {
     Ok(lattice::fit(elems, &r.grid, &r.pair_radius, r.spacing, r.window_radius))
 }
 
+/// The translational periods of `elems` (see `period`), or `None` when they are not
+/// periodic in two directions; an error for input with no spacing at all.
+pub fn find_periods(elems: &[Element]) -> Result<Option<period::Periods>> {
+    let spread = Spread::new(elems)?;
+    Ok(period::find(elems, &spread.grid, spread.spacing))
+}
+
 /// Grows the reference `elems` over a `width x height` area.
 pub fn grow(elems: &[Element], opts: &GrowOptions, progress: &mut Throttle) -> Result<(Vec<Placed>, GrowStats)> {
     let raw_elems = elems;
@@ -742,17 +771,18 @@ pub fn grow(elems: &[Element], opts: &GrowOptions, progress: &mut Throttle) -> R
     if let Some(i) = elems.iter().position(|e| !(e.pos.x.is_finite() && e.pos.y.is_finite())) {
         return invalid(format!("Element {i} has a position that is not a finite number."));
     }
-    let drawn = Reference::new(elems)?;
+    let spread = Spread::new(elems)?;
     // A periodic example (a tile repeated, a hand-drawn grid) needs no growth: its
     // exact periodic extension has every site and no drift (see `period`).
     if opts.regularize {
-        if let Some(periods) = period::find(elems) {
+        if let Some(periods) = period::find(elems, &spread.grid, spread.spacing) {
             let area = Rect::new(0.0, 0.0, opts.width, opts.height);
             let placed = period::extend(elems, &opts.extents, &periods, area, opts.max_elements, progress)?;
             progress.tick(1.0)?;
             return Ok((placed, GrowStats::default()));
         }
     }
+    let drawn = Reference::on(elems, spread)?;
     let fit = if opts.regularize {
         lattice::fit(elems, &drawn.grid, &drawn.pair_radius, drawn.spacing, drawn.window_radius)
     } else {

@@ -2,9 +2,10 @@
 //!
 //! A tile repeated 3x3 may hold dozens of unlike elements per period, so the period is
 //! far longer than any neighbour's offset. Here candidate periods are the displacements
-//! between members of the rarest class (a true period maps every class onto itself, so
-//! it is among them), shortest first; a candidate is a period when it maps (almost)
-//! every element whose image lies inside the example onto a same-class element. The
+//! between members of the rarest classes (a true period maps every class onto itself,
+//! so it is among them), shortest first; a candidate is a period when it maps (almost)
+//! every element whose image lies inside the example's convex hull onto a same-class
+//! element. The
 //! shortest such vector and the shortest one not parallel to it, reduced (Lagrange-
 //! Gauss), are verified against all elements.
 //!
@@ -25,7 +26,7 @@ use std::collections::HashSet;
 /// The share of elements (whose image lies inside the example) a period must map onto
 /// same-class elements: all but a few hand-drawn outliers.
 const FULL_SUPPORT: f64 = 0.97;
-/// Members of the rarest class whose displacements to the others are candidates.
+/// Members of each rare class whose displacements to the others are candidates.
 const ANCHORS: usize = 6;
 /// Elements a candidate is screened on before it is verified on all of them.
 const SAMPLE: usize = 400;
@@ -46,7 +47,7 @@ pub struct Periods {
 
 struct Index<'a> {
     elems: &'a [Element],
-    grid: Grid,
+    grid: &'a Grid,
     /// The example's convex hull, counter-clockwise (y down: clockwise on screen).
     hull: Vec<Point>,
     tolerance: f64,
@@ -110,54 +111,15 @@ impl Index<'_> {
     }
 }
 
-/// The median distance from an element to its nearest neighbour (any class) that is
-/// not on top of it, over a sample.
-fn spacing(elems: &[Element], grid: &Grid, extent: f64) -> f64 {
-    let step = elems.len().div_ceil(SAMPLE).max(1);
-    let mut d: Vec<f64> = Vec::new();
-    for i in (0..elems.len()).step_by(step) {
-        let p = elems[i].pos;
-        let mut radius = extent / (elems.len() as f64).sqrt().max(1.0);
-        loop {
-            let mut best = f64::INFINITY;
-            grid.for_each_near(p, radius, |j| {
-                let q = (elems[j as usize].pos - p).hypot();
-                if q > 1e-9 * extent && q < best {
-                    best = q;
-                }
-            });
-            if best <= radius || radius > 2.0 * extent {
-                if best.is_finite() {
-                    d.push(best);
-                }
-                break;
-            }
-            radius *= 2.0;
-        }
-    }
-    super::classify::median(&mut d)
-}
-
-/// Finds the two periods of `elems`, or `None` when the example is not periodic in
-/// two directions (a single copy, a row, irregular or too jittery input).
-pub fn find(elems: &[Element]) -> Option<Periods> {
+/// Finds the two periods of `elems` (indexed by `grid`, `spacing` apart: the median
+/// distance between neighbours), or `None` when the example is not periodic in two
+/// directions (a single copy, a row, irregular or too jittery input).
+pub fn find(elems: &[Element], grid: &Grid, spacing: f64) -> Option<Periods> {
     let n = elems.len();
-    if n < 4 {
+    if n < 4 || !(spacing > 0.0 && spacing.is_finite()) {
         return None;
     }
     let bounds = elems.iter().fold(Rect::from_points(elems[0].pos, elems[0].pos), |r, e| r.union_pt(e.pos));
-    let extent = bounds.width().max(bounds.height());
-    if !(extent > 0.0 && extent.is_finite()) {
-        return None;
-    }
-    let mut grid = Grid::new(bounds, extent / (n as f64).sqrt(), 4 * n + 16);
-    for (i, e) in elems.iter().enumerate() {
-        grid.insert(i as u32, e.pos);
-    }
-    let spacing = spacing(elems, &grid, extent);
-    if !(spacing > 0.0 && spacing.is_finite()) {
-        return None;
-    }
     let hull = convex_hull(elems.iter().map(|e| e.pos).collect());
     if hull.len() < 3 {
         return None;
@@ -448,6 +410,11 @@ pub fn extend(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The periods of `elems` as growth finds them (its grid and spacing).
+    fn find(elems: &[Element]) -> Option<Periods> {
+        crate::vector::grow::find_periods(elems).unwrap()
+    }
 
     /// A tile of `motif` elements (positions in the unit cell, classes) repeated nx x ny.
     fn repeat(motif: &[(f64, f64, u32)], a: Vec2, b: Vec2, nx: i32, ny: i32) -> Vec<Element> {

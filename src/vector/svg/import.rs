@@ -82,14 +82,11 @@ pub fn parse_svg(svg: &str, opts: &ImportOptions) -> Result<Import> {
         Walker { opts, sheet, by_id, using: Vec::new(), out: Vec::new(), points: 0, report: Report::default() };
     let declared = walker.sheet.declared(root);
     let base = Context::initial();
-    let ctx = base.inherit(&declared, &base.units);
+    let mut ctx = base.inherit(&declared);
     let size = root_size(root, &ctx.units);
     let (w, h) = size.unwrap_or((100.0, 100.0));
-    let mut ctx = ctx;
-    ctx.units.viewport = viewbox(root).map(|v| (v[2], v[3])).unwrap_or((w, h));
-    ctx.transform = viewbox_transform(root, w, h);
     if !matches!(style::get(&declared, "display"), Some("none")) {
-        walker.children(root, &ctx)?;
+        walker.viewport(root, &mut ctx, 0.0, 0.0, w, h)?;
     }
     let Walker { out: strokes, report, .. } = walker;
     // No size at all: the content's extent (as browsers show a sizeless SVG).
@@ -192,9 +189,10 @@ impl Context {
         }
     }
 
-    /// This context as a child element with `declared` values sees it. `parent_units`
-    /// resolve `em` in the font size itself.
-    fn inherit(&self, declared: &Declared, parent_units: &Units) -> Context {
+    /// This context as a child element with `declared` values sees it (`em` in the
+    /// child's font size is the parent's).
+    fn inherit(&self, declared: &Declared) -> Context {
+        let parent_units = self.units;
         let mut c = self.clone();
         let get = |name| style::get(declared, name).filter(|v| *v != "inherit");
         if let Some(v) = get("font-size").and_then(|v| parent_units.length(v, Axis::Y)) {
@@ -370,7 +368,7 @@ impl<'a, 'input> Walker<'a, 'input> {
         if matches!(style::get(&declared, "display"), Some("none")) {
             return Ok(());
         }
-        let mut ctx = parent.inherit(&declared, &parent.units);
+        let mut ctx = parent.inherit(&declared);
         match name {
             "g" | "a" => self.children(node, &ctx),
             "switch" => match node.children().find(|c| is_svg(*c)) {
@@ -382,7 +380,7 @@ impl<'a, 'input> Walker<'a, 'input> {
                 let (x, y) = (u.attr(node, "x", Axis::X, 0.0), u.attr(node, "y", Axis::Y, 0.0));
                 let (w, h) =
                     (u.attr(node, "width", Axis::X, u.viewport.0), u.attr(node, "height", Axis::Y, u.viewport.1));
-                self.viewport(node, node, &mut ctx, x, y, w, h)
+                self.viewport(node, &mut ctx, x, y, w, h)
             }
             "use" => self.use_element(node, ctx),
             "image" => {
@@ -393,24 +391,15 @@ impl<'a, 'input> Walker<'a, 'input> {
         }
     }
 
-    /// Renders `content`'s children in a new viewport at (x, y) of size w x h.
-    #[allow(clippy::too_many_arguments)]
-    fn viewport(
-        &mut self,
-        viewbox_of: Node<'a, 'input>,
-        content: Node<'a, 'input>,
-        ctx: &mut Context,
-        x: f64,
-        y: f64,
-        w: f64,
-        h: f64,
-    ) -> Result<()> {
+    /// Renders the children of `svg` (an `<svg>` or `<symbol>`) in a new viewport at
+    /// (x, y) of size w x h, through its viewBox.
+    fn viewport(&mut self, svg: Node<'a, 'input>, ctx: &mut Context, x: f64, y: f64, w: f64, h: f64) -> Result<()> {
         if !(w > 0.0 && h > 0.0) {
             return Ok(());
         }
-        ctx.transform = ctx.transform * Affine::translate((x, y)) * viewbox_transform(viewbox_of, w, h);
-        ctx.units.viewport = viewbox(viewbox_of).map(|v| (v[2], v[3])).unwrap_or((w, h));
-        self.children(content, ctx)
+        ctx.transform = ctx.transform * Affine::translate((x, y)) * viewbox_transform(svg, w, h);
+        ctx.units.viewport = viewbox(svg).map(|v| (v[2], v[3])).unwrap_or((w, h));
+        self.children(svg, ctx)
     }
 
     fn use_element(&mut self, node: Node<'a, 'input>, mut ctx: Context) -> Result<()> {
@@ -432,7 +421,7 @@ impl<'a, 'input> Walker<'a, 'input> {
                 if matches!(style::get(&declared, "display"), Some("none")) && target.tag_name().name() == "svg" {
                     Ok(())
                 } else {
-                    let mut inner = ctx.inherit(&declared, &u);
+                    let mut inner = ctx.inherit(&declared);
                     let size = |name, axis, default| {
                         node.attribute(name)
                             .or(target.attribute(name))
@@ -445,7 +434,7 @@ impl<'a, 'input> Walker<'a, 'input> {
                     } else {
                         (0.0, 0.0)
                     };
-                    self.viewport(target, target, &mut inner, x + tx, y + ty, w, h)
+                    self.viewport(target, &mut inner, x + tx, y + ty, w, h)
                 }
             }
             _ => {
@@ -494,7 +483,7 @@ impl<'a, 'input> Walker<'a, 'input> {
         if !ctx.visible {
             return Ok(());
         }
-        let mut bez = match shape::outline(node, &ctx.units) {
+        let local = match shape::outline(node, &ctx.units) {
             Ok(Some(bez)) => bez,
             Ok(None) => return Ok(()),
             Err(shape::OutOfRange) => {
@@ -502,11 +491,9 @@ impl<'a, 'input> Walker<'a, 'input> {
                 return Ok(());
             }
         };
-        let local = bez.clone();
-        bez.apply_affine(ctx.transform);
         // Geometry that no drawing has (a radius of 1e20, scale(1e15)) is left out with a
         // warning: flattening it would need more points than memory holds.
-        let Some(extent) = extent(&bez) else {
+        let Some(extent) = extent(&local, ctx.transform) else {
             self.report.out_of_range += 1;
             return Ok(());
         };
@@ -638,9 +625,9 @@ impl<'a, 'input> Walker<'a, 'input> {
     }
 }
 
-/// The extent (largest side of the control-point box) of a path whose every point is
-/// finite and within `MAX_COORD`, or `None`.
-fn extent(bez: &BezPath) -> Option<f64> {
+/// The extent (largest side of the control-point box) of a path under `transform`, when
+/// every transformed point is finite and within `MAX_COORD`; else `None`.
+fn extent(bez: &BezPath, transform: Affine) -> Option<f64> {
     let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
     for el in bez.elements() {
         let pts: &[Point] = match el {
@@ -649,7 +636,8 @@ fn extent(bez: &BezPath) -> Option<f64> {
             PathEl::CurveTo(a, b, c) => &[*a, *b, *c],
             PathEl::ClosePath => &[],
         };
-        for p in pts {
+        for &p in pts {
+            let p = transform * p;
             if !(p.x.abs() <= MAX_COORD && p.y.abs() <= MAX_COORD) {
                 return None;
             }
