@@ -1,6 +1,7 @@
 //! Native side of `bench/busy.mjs`: synthesizes an SVG example (a file) over a
 //! `width x height` output and prints the median wall time of 5 runs and the count, as
-//! JSON.  cargo run --release --example bench_svg -- example.svg 1000 1000
+//! JSON; a fourth argument names a file to write the last output SVG to.
+//! cargo run --release --example bench_svg -- example.svg 1000 1000 [out.svg]
 use patternsynth::vector::{parse_svg, synthesize_strokes, ImportOptions, StrokeOptions};
 use patternsynth::Silent;
 use std::time::Instant;
@@ -15,8 +16,12 @@ fn main() {
     let mut count = 0;
     for _ in 0..5 {
         let t = Instant::now();
-        count = synthesize_strokes(&strokes, &opts, &mut Silent).expect("synthesis").strokes.len();
+        let r = synthesize_strokes(&strokes, &opts, &mut Silent).expect("synthesis");
         times.push(t.elapsed().as_secs_f64() * 1e3);
+        count = r.strokes.len();
+        if let Some(out) = args.get(4) {
+            std::fs::write(out, &r.svg).expect("the output file");
+        }
     }
     times.sort_by(|a, b| a.total_cmp(b));
     println!("{{\"example\":{},\"out\":{count},\"ms\":{:.2}}}", strokes.len(), times[2]);

@@ -1,25 +1,38 @@
 //! Reference/target growth (SPEC 1.2-1.3): the heart of the vector engine.
 //!
-//! The reference pattern is a set of point elements (class, position). The target starts
-//! as one copy of the reference at the centre of the output area and grows outward: at
-//! each growing point `g`, every same-class reference element `r` proposes the
-//! translation `t = g - r`; under `t` the reference is paired with the target, `t` is
-//! refined by least squares (the mean pair offset), and the best-supported candidate that
-//! adds something is stamped.
+//! `grow` takes the example by the first route that fits it:
+//! - a periodic example (a tile repeated, a hand-drawn grid) is extended exactly along
+//!   its periods (`period`);
+//! - a near-regular one grows by the paper's rule on its fitted lattice (`lattice`), each
+//!   element then taking its source's deviation back;
+//! - an irregular one (no period, no lattice) becomes a mosaic of its own windows
+//!   (`mosaic`);
+//! - with `regularize: false`, every example grows by the paper's rule on its drawn
+//!   positions, and holes left by it are filled (`fill`).
 //!
-//! Two departures from a literal reading keep the cost near-linear in the number of
+//! The paper's rule: the reference pattern is a set of point elements (class,
+//! position). The target starts as one copy of the reference at the centre of the
+//! output area and grows outward: at each growing point `g`, same-class reference
+//! elements `r` propose the translation `t = g - r`; under `t` the reference is paired
+//! with the target, `t` is refined by least squares (the mean pair offset), and the
+//! best-supported candidate that adds something is stamped.
+//!
+//! Three departures from a literal reading keep the cost near-linear in the number of
 //! output elements:
 //! - a candidate is judged on a *window* of the reference (its neighbours within a
 //!   few spacings of `r`), found through precomputed neighbour lists and a uniform grid
 //!   over the target, and only that window is stamped;
+//! - a growing point tries a rotating sample of at most `CANDIDATES` members of its
+//!   class, so its cost does not grow with the example;
 //! - growth runs along the frontier: a target element whose source is interior to the
 //!   reference and whose reference neighbourhood is already present is passed over
 //!   without evaluating candidates (it would add nothing).
 
-use super::classify::median;
 pub use super::element::{Element, Placed};
 use super::lattice;
+use super::mosaic;
 use super::period;
+use super::reference::{Reference, Spread, CANDIDATES, CONFLICT_RADIUS};
 use super::spatial::Grid;
 use crate::error::{invalid, Error, Result};
 use crate::progress::Throttle;
@@ -47,6 +60,8 @@ pub struct GrowOptions {
     /// A periodic extension places every element whose drawing reaches into the area,
     /// so the output is covered to its edges.
     pub extents: Vec<Vec2>,
+    /// Seeds the windows free growth cuts from an irregular example (see `mosaic`).
+    pub seed: u64,
 }
 
 impl Default for GrowOptions {
@@ -60,6 +75,7 @@ impl Default for GrowOptions {
             frontier_first: true,
             regularize: true,
             extents: Vec::new(),
+            seed: 1,
         }
     }
 }
@@ -73,274 +89,10 @@ pub struct GrowStats {
     pub candidates: usize,
 }
 
-/// Neighbours of a reference element within some radius: index and offset.
-type Neighbourhood = Vec<(u32, Vec2)>;
+mod fill;
 
-/// Everything about the reference that growth reads, computed once.
-struct Reference<'a> {
-    elems: &'a [Element],
-    by_class: Vec<Vec<u32>>,
-    /// Pairing radius per class.
-    pair_radius: Vec<f64>,
-    /// Radius within which an element of another class blocks stamping.
-    cross_radius: f64,
-    /// Window neighbours of each element (itself included), nearest first.
-    window: Vec<Neighbourhood>,
-    /// Radius of the disc whose population tells whether a neighbourhood is full.
-    near_radius: f64,
-    /// Per class: elements of any class within `near_radius` of a deep-interior reference
-    /// element of that class (median); `None` when the reference has no deep interior.
-    full_count: Vec<Option<usize>>,
-    /// Median distance between neighbouring elements (any class).
-    spacing: f64,
-    /// Radius of the windows.
-    window_radius: f64,
-    /// The reference elements, indexed by position.
-    grid: Grid,
-    /// Bounding box of the element positions.
-    bounds: Rect,
-    /// Elements with neighbours in every direction within the conflict radius and a
-    /// spacing: their neighbourhood in the example is complete.
-    surrounded: Vec<bool>,
-}
-
-fn nearest_distances(elems: &[Element], same_class: bool, skip_coincident: bool, grid: &Grid, scale: f64) -> Vec<f64> {
-    let eps = scale * 1e-9;
-    elems
-        .iter()
-        .enumerate()
-        .map(|(i, e)| {
-            let mut radius = scale;
-            loop {
-                let mut best = f64::INFINITY;
-                grid.for_each_near(e.pos, radius, |j| {
-                    let o = &elems[j as usize];
-                    if j as usize == i || (same_class && o.class != e.class) {
-                        return;
-                    }
-                    let d = o.pos.distance(e.pos);
-                    if (!skip_coincident || d > eps) && d < best {
-                        best = d;
-                    }
-                });
-                if best <= radius || radius > scale * 1e6 {
-                    return best;
-                }
-                radius *= 4.0;
-            }
-        })
-        .collect()
-}
-
-/// Whether each element has another within `radius` in each of eight 45-degree sectors.
-fn surrounded(elems: &[Element], grid: &Grid, radius: f64) -> Vec<bool> {
-    elems
-        .iter()
-        .map(|e| {
-            let mut sectors = 0u8;
-            grid.for_each_near(e.pos, radius, |j| {
-                let o = elems[j as usize].pos - e.pos;
-                let d2 = o.hypot2();
-                if d2 > 0.0 && d2 <= radius * radius {
-                    let k = ((o.y.atan2(o.x) + std::f64::consts::PI) / std::f64::consts::FRAC_PI_4) as u32 % 8;
-                    sectors |= 1 << k;
-                }
-            });
-            sectors == 0xFF
-        })
-        .collect()
-}
-
-/// Moves `radius` into the widest gap of the neighbour distances between 0.8x and 1.6x
-/// of it, so that jitter does not move elements in and out of discs of that radius.
-fn between_shells(elems: &[Element], grid: &Grid, radius: f64) -> f64 {
-    let (lo, hi) = (0.8 * radius, 1.6 * radius);
-    let mut d = vec![lo, hi];
-    for e in elems {
-        grid.for_each_near(e.pos, hi, |j| {
-            let x = elems[j as usize].pos.distance(e.pos);
-            if x > lo && x < hi {
-                d.push(x);
-            }
-        });
-    }
-    crate::order::floats(&mut d);
-    let (a, b) =
-        d.windows(2).map(|w| (w[0], w[1])).max_by(|x, y| (x.1 - x.0).total_cmp(&(y.1 - y.0))).unwrap_or((lo, hi));
-    0.5 * (a + b)
-}
-
-/// Where the example's elements are: their box, a grid indexing them and their spacing
-/// (the median distance between neighbours). The period search needs only this; growth
-/// builds its `Reference` on it.
-struct Spread {
-    bounds: Rect,
-    grid: Grid,
-    /// The grid's cell size, the scale of neighbour searches.
-    rough: f64,
-    spacing: f64,
-}
-
-impl Spread {
-    fn new(elems: &[Element]) -> Result<Self> {
-        let n = elems.len();
-        if n < 2 {
-            return invalid("Draw at least two strokes: a pattern needs a spacing to repeat.");
-        }
-        let bounds = elems.iter().fold(Rect::from_points(elems[0].pos, elems[0].pos), |r, e| r.union_pt(e.pos));
-        let extent = bounds.width().max(bounds.height());
-        if extent <= 0.0 {
-            return invalid("All strokes are centred on the same point: there is no spacing to repeat.");
-        }
-        let rough = extent / (n as f64).sqrt().max(1.0);
-        let mut grid = Grid::new(bounds, rough, 4 * n + 16);
-        for (i, e) in elems.iter().enumerate() {
-            grid.insert(i as u32, e.pos);
-        }
-        let mut any = nearest_distances(elems, false, true, &grid, rough);
-        let spacing = median(&mut any);
-        if !spacing.is_finite() || spacing <= 0.0 {
-            return invalid("All strokes are centred on the same point: there is no spacing to repeat.");
-        }
-        Ok(Spread { bounds, grid, rough, spacing })
-    }
-}
-
-impl<'a> Reference<'a> {
-    fn new(elems: &'a [Element]) -> Result<Self> {
-        Reference::on(elems, Spread::new(elems)?)
-    }
-
-    fn on(elems: &'a [Element], spread: Spread) -> Result<Self> {
-        let Spread { bounds, grid, rough, spacing } = spread;
-        let (n, extent) = (elems.len(), bounds.width().max(bounds.height()));
-        let mut with_coincident = nearest_distances(elems, false, false, &grid, rough);
-        let cross_radius = 0.5 * median(&mut with_coincident);
-
-        let classes = elems.iter().map(|e| e.class as usize + 1).max().unwrap_or(0);
-        let mut by_class = vec![Vec::new(); classes];
-        for (i, e) in elems.iter().enumerate() {
-            by_class[e.class as usize].push(i as u32);
-        }
-        let same = nearest_distances(elems, true, true, &grid, rough);
-        let pair_radius = (0..classes)
-            .map(|c| {
-                let mut d: Vec<f64> = by_class[c].iter().map(|&i| same[i as usize]).filter(|d| d.is_finite()).collect();
-                let m = median(&mut d);
-                0.5 * if m > 0.0 { m } else { spacing }
-            })
-            .collect();
-
-        let k_window = (n - 1).min(48);
-        let k_near = (n - 1).min(8);
-        // The k-th neighbour distance at quantile `q` over the elements.
-        let kth = |k: usize, q: f64| {
-            let mut radius = spacing * 2.0;
-            let mut d: Vec<f64> = elems
-                .iter()
-                .enumerate()
-                .map(|(i, e)| loop {
-                    let mut ds = Vec::new();
-                    grid.for_each_near(e.pos, radius, |j| {
-                        if j as usize != i {
-                            ds.push(elems[j as usize].pos.distance(e.pos));
-                        }
-                    });
-                    ds.retain(|&x| x <= radius);
-                    if ds.len() >= k || radius > extent * 4.0 {
-                        crate::order::floats(&mut ds);
-                        return ds.get(k - 1).copied().unwrap_or(radius);
-                    }
-                    radius *= 2.0;
-                })
-                .collect();
-            crate::order::floats(&mut d);
-            d[((d.len() - 1) as f64 * q) as usize]
-        };
-        let window_radius = (3.0 * spacing).max(kth(k_window, 0.5)) * 1.05;
-        // A low quantile: the interior elements' radius, not the border's.
-        let near_radius = between_shells(elems, &grid, kth(k_near, 0.1));
-        let neighbourhood = |radius: f64| -> Vec<Neighbourhood> {
-            elems
-                .iter()
-                .map(|e| {
-                    let mut nb = Vec::new();
-                    grid.for_each_near(e.pos, radius, |j| {
-                        let off = elems[j as usize].pos - e.pos;
-                        if off.hypot() <= radius {
-                            nb.push((j, off));
-                        }
-                    });
-                    nb.sort_by(|a, b| a.1.hypot2().total_cmp(&b.1.hypot2()).then(a.0.cmp(&b.0)));
-                    nb
-                })
-                .collect()
-        };
-        let window = neighbourhood(window_radius);
-        let near = neighbourhood(near_radius);
-        // Deep interior: the near disc lies inside the reference's extent along every axis
-        // the reference spans (a row spans one).
-        let deep = |p: Point| {
-            let fits = |lo: f64, hi: f64, v: f64| {
-                hi - lo < 2.0 * near_radius || (v - lo >= near_radius && hi - v >= near_radius)
-            };
-            fits(bounds.x0, bounds.x1, p.x) && fits(bounds.y0, bounds.y1, p.y)
-        };
-        let full_count = by_class
-            .iter()
-            .map(|members| {
-                let counts: Vec<f64> = members
-                    .iter()
-                    .filter(|&&i| deep(elems[i as usize].pos))
-                    .map(|&i| near[i as usize].len() as f64)
-                    .collect();
-                counts
-                    .iter()
-                    .copied()
-                    .fold(None, |m: Option<f64>, c| Some(m.map_or(c, |m| m.max(c))))
-                    .map(|c| c as usize)
-            })
-            .collect();
-        Ok(Reference {
-            elems,
-            by_class,
-            pair_radius,
-            cross_radius,
-            window,
-            near_radius,
-            full_count,
-            spacing,
-            window_radius,
-            surrounded: surrounded(elems, &grid, CONFLICT_RADIUS * spacing + spacing),
-            grid,
-            bounds,
-        })
-    }
-
-    /// Whether the example is one row of elements (no extent across it): a row grows
-    /// only along itself, so the area beside it is no hole to fill.
-    fn is_row(&self) -> bool {
-        let b = self.bounds;
-        b.width().min(b.height()) < self.spacing
-    }
-
-    /// Whether an element of `class` lies within its pairing radius of `p`.
-    fn has(&self, p: Point, class: u32) -> bool {
-        let d = self.pair_radius[class as usize];
-        let mut hit = false;
-        self.grid.for_each_near(p, d, |j| {
-            let e = &self.elems[j as usize];
-            hit |= e.class == class && (e.pos - p).hypot2() < d * d;
-        });
-        hit
-    }
-
-    fn density(&self) -> f64 {
-        let b = self.bounds;
-        let area = (b.width() + self.spacing) * (b.height() + self.spacing);
-        self.elems.len() as f64 / area.max(1e-12)
-    }
-}
+/// Growing points by distance from the centre, nearest first.
+type Queue = BinaryHeap<Reverse<(u64, u32)>>;
 
 /// One evaluated candidate translation.
 #[derive(Clone, Copy, Debug)]
@@ -381,9 +133,6 @@ const MAX_REFINEMENTS: usize = 4;
 /// count so far is dropped before refinement: refinement moves `t` by under a pairing
 /// radius, which cannot lift it to the support ratio (0.6).
 const PRUNE: f64 = 0.45;
-
-/// Radius, in spacings, within which a new element's neighbours must agree with the example.
-const CONFLICT_RADIUS: f64 = 1.25;
 
 /// Normalised errors within (this x pairing radius)^2 of each other are ties.
 const ERROR_QUANTUM: f64 = 0.02;
@@ -428,12 +177,14 @@ impl<'r, 'a> Target<'r, 'a> {
     /// Whether something already in the target sits where an element of `class` at `p`
     /// would be stacked on it.
     fn occupied(&self, p: Point, class: u32) -> bool {
-        let same = self.reference.pair_radius[class as usize];
-        let cross = self.reference.cross_radius;
+        let reference = self.reference;
+        let same = reference.pair_radius[class as usize];
+        let cross = reference.cross_radius;
         let mut hit = false;
-        self.grid.for_each_near(p, same.max(cross), |id| {
+        self.grid.for_each_near(p, same.max(cross).max(reference.apart.max), |id| {
             let e = &self.placed[id as usize];
             let r = if e.class == class { same } else { cross };
+            let r = r.max(reference.apart.get(class, e.class));
             hit |= (e.pos - p).hypot2() < r * r;
         });
         hit
@@ -588,114 +339,97 @@ impl<'r, 'a> Target<'r, 'a> {
         )
     }
 
-    /// Grows from the elements `start` (and all they add), nearest the centre first.
-    /// `relaxed`: only around holes, taking the candidate that adds the most.
+    /// The candidates for growing point `gi`: its own source first (it usually pairs the
+    /// most, which lets the weak candidates after it be dropped early), then a rotating
+    /// sample of at most `CANDIDATES` members of its class.
+    fn candidates(&self, gi: u32) -> impl Iterator<Item = u32> + 'r {
+        let g = self.placed[gi as usize];
+        let members = &self.reference.members[g.class as usize];
+        // Consecutive growing points start the sample at spread-out places.
+        let from = (gi as usize).wrapping_mul(0x9E37_79B1) % members.len();
+        let others = members.iter().cycle().skip(from).take(members.len().min(CANDIDATES));
+        std::iter::once(g.source).chain(others.copied().filter(move |&r| r != g.source))
+    }
+
+    /// Stamps `best` and queues what it adds as growing points.
+    fn stamp_and_queue(&mut self, best: &Candidate, queue: &mut Queue, max_elements: usize) -> Result<()> {
+        let before = self.placed.len();
+        self.stamp_candidate(best);
+        for i in before..self.placed.len() {
+            queue.push(Reverse((self.key(self.placed[i].pos), i as u32)));
+        }
+        if self.placed.len() > max_elements {
+            return Err(Error::TooLarge(format!("Growth passed the limit of {max_elements} elements.")));
+        }
+        Ok(())
+    }
+
+    /// Growing points are taken nearest the centre first.
+    fn key(&self, p: Point) -> u64 {
+        (p - self.area.center()).hypot2().to_bits()
+    }
+
+    fn queue(&self, start: &[u32]) -> Queue {
+        start.iter().map(|&i| Reverse((self.key(self.placed[i as usize].pos), i))).collect()
+    }
+
+    /// The paper's growth (SPEC 1.3) from the elements `start` and all they add: at each
+    /// growing point the eligible candidate (well supported, adding something, no
+    /// conflict) with the least error is stamped.
     fn run(
         &mut self,
         start: &[u32],
         opts: &GrowOptions,
-        relaxed: bool,
         estimate: f64,
         progress: &mut Throttle,
         stats: &mut GrowStats,
     ) -> Result<()> {
         let reference = self.reference;
-        self.fill_holes = relaxed;
-        let centre = self.area.center();
-        let key = |p: Point| (p - centre).hypot2().to_bits();
-        let mut queue: BinaryHeap<Reverse<(u64, u32)>> =
-            start.iter().map(|&i| Reverse((key(self.placed[i as usize].pos), i))).collect();
+        let mut queue = self.queue(start);
         let mut candidates: Vec<Candidate> = Vec::new();
         let mut processed = 0usize;
         while let Some(Reverse((_, gi))) = queue.pop() {
             processed += 1;
-            if !relaxed {
-                progress.tick(processed as f64 / estimate.max(self.placed.len() as f64).max(1.0))?;
-            }
+            progress.tick(processed as f64 / estimate.max(self.placed.len() as f64).max(1.0))?;
             let g = self.placed[gi as usize];
-            if relaxed && !self.near_hole(g.pos) {
-                continue;
-            }
-            if !relaxed && opts.frontier_first && self.full(gi as usize) {
+            if opts.frontier_first && self.full(gi as usize) {
                 stats.skipped_full += 1;
                 continue;
             }
             stats.growing_points += 1;
             candidates.clear();
             let mut most_pairs = 0;
-            // The growing point's own source first: it usually pairs the most, which lets
-            // the weak candidates after it be dropped early.
-            let own = std::iter::once(g.source);
-            let others = reference.by_class[g.class as usize].iter().copied().filter(|&r| r != g.source);
-            if !relaxed {
-                self.signature(gi);
-            }
-            for r in own.chain(others) {
+            self.signature(gi);
+            for r in self.candidates(gi) {
+                stats.candidates += 1;
                 // Cheap test first: the growing point's nearest neighbours must be found
                 // around `r` too (all but one of them: `r` may sit on the example's edge).
-                if !relaxed && !self.matches_signature(r) {
+                if !self.matches_signature(r) {
                     continue;
                 }
-                let factor = if relaxed { (0.0, 0.0) } else { (PRUNE, opts.support) };
-                let need = (factor.0 * most_pairs as f64).ceil() as usize;
-                let eligible = (factor.1 * most_pairs as f64).ceil() as usize;
+                let need = (PRUNE * most_pairs as f64).ceil() as usize;
+                let eligible = (opts.support * most_pairs as f64).ceil() as usize;
                 let Some(c) = self.evaluate(g.pos, r, need, eligible) else { continue };
                 most_pairs = most_pairs.max(c.pairs);
                 if c.adds > 0 {
                     candidates.push(c);
                 }
             }
-            stats.candidates += reference.by_class[g.class as usize].len();
-            let need = if relaxed { 1 } else { ((opts.support * most_pairs as f64).ceil() as usize).max(1) };
+            let need = ((opts.support * most_pairs as f64).ceil() as usize).max(1);
             // Errors closer than this count as equal; among them the candidate that adds the
             // most wins (bigger stamps, fewer growing points), then the best supported.
             let tiny = ((ERROR_QUANTUM * reference.pair_radius[g.class as usize]).powi(2)).max(1e-300);
             let best = candidates.iter().filter(|c| c.pairs >= need).min_by(|a, b| {
                 let (ea, eb) = ((a.error / tiny).floor(), (b.error / tiny).floor());
-                if relaxed {
-                    b.adds.cmp(&a.adds).then(ea.total_cmp(&eb))
-                } else {
-                    ea.total_cmp(&eb).then(b.adds.cmp(&a.adds)).then(b.pairs.cmp(&a.pairs))
-                }
+                ea.total_cmp(&eb).then(b.adds.cmp(&a.adds)).then(b.pairs.cmp(&a.pairs))
             });
             let Some(best) = best.copied() else {
                 stats.passed_over += 1;
                 continue;
             };
-            let before = self.placed.len();
-            self.stamp_candidate(&best);
-            for i in before..self.placed.len() {
-                queue.push(Reverse((key(self.placed[i].pos), i as u32)));
-            }
-            if self.placed.len() > opts.max_elements {
-                return Err(Error::TooLarge(format!("Growth passed the limit of {} elements.", opts.max_elements)));
-            }
+            self.stamp_and_queue(&best, &mut queue, opts.max_elements)?;
         }
         Ok(())
-    }
-
-    fn cover_cell(&self, p: Point) -> Option<usize> {
-        let (cols, rows, sx, sy) = self.cover_dims;
-        let cx = ((p.x - self.area.x0) / sx).floor().min(cols as f64 - 1.0);
-        let cy = ((p.y - self.area.y0) / sy).floor().min(rows as f64 - 1.0);
-        (cx >= 0.0 && cy >= 0.0 && (cx as usize) < cols && (cy as usize) < rows)
-            .then(|| cy as usize * cols + cx as usize)
-    }
-
-    /// Coverage cells (a window across) that hold no element.
-    fn holes(&self) -> usize {
-        self.cover.iter().filter(|&&c| c == 0).count()
-    }
-
-    /// Whether an empty coverage cell touches the window around `p`.
-    fn near_hole(&self, p: Point) -> bool {
-        let r = self.reference.window_radius;
-        let (cols, rows, sx, sy) = self.cover_dims;
-        let x0 = ((p.x - r - self.area.x0) / sx).floor().max(0.0) as usize;
-        let y0 = ((p.y - r - self.area.y0) / sy).floor().max(0.0) as usize;
-        let x1 = (((p.x + r - self.area.x0) / sx).floor().max(0.0) as usize).min(cols - 1);
-        let y1 = (((p.y + r - self.area.y0) / sy).floor().max(0.0) as usize).min(rows - 1);
-        (y0..=y1).any(|y| (x0..=x1).any(|x| self.cover[y * cols + x] < self.hole_below))
     }
 
     /// Records the offsets and classes of the few target elements nearest to `gi`.
@@ -788,6 +522,13 @@ pub fn grow(elems: &[Element], opts: &GrowOptions, progress: &mut Throttle) -> R
     } else {
         None
     };
+    // No period and no lattice: an irregular example grows as a mosaic of its own windows.
+    if opts.regularize && fit.is_none() && mosaic::applies(&drawn) {
+        let area = Rect::new(0.0, 0.0, opts.width, opts.height);
+        let placed = mosaic::mosaic(&drawn, &opts.extents, area, opts.seed, opts.max_elements, progress)?;
+        progress.tick(1.0)?;
+        return Ok((placed, GrowStats::default()));
+    }
     let snapped: Vec<Element> = match &fit {
         Some(f) => elems.iter().zip(&f.snapped).map(|(e, &pos)| Element { pos, class: e.class }).collect(),
         None => Vec::new(),
@@ -802,7 +543,8 @@ pub fn grow(elems: &[Element], opts: &GrowOptions, progress: &mut Throttle) -> R
             estimate, opts.max_elements
         )));
     }
-    let max_radius = reference.pair_radius.iter().copied().fold(reference.cross_radius, f64::max);
+    let max_radius =
+        reference.pair_radius.iter().copied().fold(reference.cross_radius.max(reference.apart.max), f64::max);
     // Coverage cells about half a window across (wider than any gap of a regular
     // pattern, so only irregular input leaves holes), tiling the area exactly.
     let cover_size = (0.5 * reference.window_radius).max(3.0 * reference.spacing);
@@ -842,13 +584,12 @@ pub fn grow(elems: &[Element], opts: &GrowOptions, progress: &mut Throttle) -> R
 
     let mut stats = GrowStats::default();
     let all: Vec<u32> = (0..target.placed.len() as u32).collect();
-    target.run(&all, opts, false, estimate, progress, &mut stats)?;
+    target.run(&all, opts, estimate, progress, &mut stats)?;
     // Irregular input leaves the area partly empty (no candidate is well supported):
     // fill what is left with the candidates that add the most, so the output is
     // still covered, as a person would expect, with the example's local arrangement.
     if !reference.is_row() && target.holes() > 0 {
-        let all: Vec<u32> = (0..target.placed.len() as u32).collect();
-        target.run(&all, opts, true, estimate, progress, &mut stats)?;
+        target.fill_holes(opts, &mut stats)?;
     }
     progress.tick(1.0)?;
     let mut placed = target.placed;

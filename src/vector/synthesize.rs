@@ -155,6 +155,7 @@ pub fn synthesize_strokes(
                 kurbo::Vec2::new(b.width() / 2.0 + pad, b.height() / 2.0 + pad)
             })
             .collect(),
+        seed: opts.seed,
         ..GrowOptions::default()
     };
     let (placed, stats): (_, GrowStats) = grow(&elements, &grow_opts, &mut Throttle::with_range(progress, 0.02, 0.98))?;
