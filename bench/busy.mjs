@@ -33,6 +33,17 @@ function scatter(count, size, gap, periodic, seed) {
 
 const dir = mkdtempSync(join(tmpdir(), 'busy-'));
 const rows = [];
+const scaling = [];
+const median = (f) => {
+  const times = [];
+  let out;
+  for (let i = 0; i < 5; i++) {
+    const t0 = performance.now();
+    out = f();
+    times.push(performance.now() - t0);
+  }
+  return [times.sort((a, b) => a - b)[2], out];
+};
 for (const [kind, n] of [['periodic', 500], ['periodic', 1000], ['periodic', 2000], ['irregular', 500], ['irregular', 1000], ['irregular', 2000]]) {
   const spacing = 10;
   let body, area;
@@ -63,6 +74,17 @@ for (const [kind, n] of [['periodic', 500], ['periodic', 1000], ['periodic', 200
   const wasm = times.sort((a, b) => a - b)[2];
   rows.push(`| ${kind} | ${strokes.length} | ${out} | ${native.ms.toFixed(0)} | ${wasm.toFixed(0)} | ${(wasm / native.ms).toFixed(2)} | ${(1000 * wasm / out).toFixed(1)} |`);
   console.error(rows.at(-1));
+  // Cost against output size (wasm): near-linear means a steady cost per element.
+  if (n === 2000) {
+    for (const target of [5000, 10000, 20000, 40000, 80000]) {
+      const s = Math.round(Math.sqrt(area * target / strokes.length));
+      const [ms, r] = median(() => synthesizeStrokes(strokes, { width: s, height: s, variation: false }));
+      scaling.push(`| ${kind} | ${strokes.length} | ${r.strokes.length} | ${ms.toFixed(0)} | ${(1000 * ms / r.strokes.length).toFixed(1)} |`);
+      console.error(scaling.at(-1));
+    }
+  }
 }
 console.log('| example | elements | out | native ms | wasm ms | wasm/native | µs per output element (wasm) |\n|---|---:|---:|---:|---:|---:|---:|');
 console.log(rows.join('\n'));
+console.log('\n| example | elements | out | wasm ms | µs per output element |\n|---|---:|---:|---:|---:|');
+console.log(scaling.join('\n'));

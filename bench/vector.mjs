@@ -3,11 +3,12 @@
 import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
 import { gzipSync } from 'node:zlib';
-import { synthesizeStrokes, exampleStrokes } from '../pkg/node/index.js';
+import { synthesizeStrokes } from '../pkg/node/index.js';
 
 const native = execFileSync('target/release/examples/bench_vector', { encoding: 'utf8' })
   .trim().split('\n').map((l) => JSON.parse(l));
-const families = Object.fromEntries(exampleStrokes().map((e) => [e.name, e.strokes]));
+const examples = JSON.parse(readFileSync('www/features/strokes/shared/examples.json', 'utf8'));
+const families = Object.fromEntries(examples.map((e) => [e.name, e.strokes]));
 
 const rows = [];
 for (const n of native) {

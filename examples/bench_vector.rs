@@ -1,7 +1,7 @@
 //! Native side of the vector benchmark: for each case, the median wall time of a few
 //! runs, as JSON lines. Run through `bash scripts/bench.sh`, which also times the same
 //! cases in wasm under Node and prints the table.
-use patternsynth::vector::exemplar::{busy_tile, families};
+use patternsynth::vector::exemplar::playground_examples;
 use patternsynth::vector::{synthesize_strokes, Stroke, StrokeOptions};
 use patternsynth::Silent;
 use std::time::Instant;
@@ -18,10 +18,8 @@ pub const CASES: &[(&str, usize)] = &[
 ];
 
 fn example(name: &str) -> Vec<Stroke> {
-    if name == "busy-tile" {
-        return busy_tile(120, 100.0, 7.0, 3, 21).strokes;
-    }
-    families(0.015, 7).into_iter().find(|e| e.name == name).expect("family").strokes
+    // The playground's drawings, as the wasm side reads them from its JSON file.
+    playground_examples().into_iter().find(|e| e.name == name).expect("an example").strokes
 }
 
 fn main() {

@@ -11,7 +11,6 @@ export const METHODS = {
   classifyStrokes: { args: 2, module: 'vector' },
   synthesizeStrokes: { args: 2, progress: true, module: 'vector' },
   strokeTile: { args: 2, module: 'vector' },
-  exampleStrokes: { args: 0, module: 'vector' },
   synthesizeTexture: { args: 2, progress: true, module: 'texture' },
   blendTextures: { args: 3, progress: true, module: 'texture' },
   seamlessTile: { args: 2, progress: true, module: 'texture' },

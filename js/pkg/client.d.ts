@@ -1,6 +1,6 @@
 import type {
   Stroke, StrokeOptions, StrokeResult, TileOptions, TileResult, ParseSvgOptions, SvgImport, Classification, ClassifyOptions,
-  Rgba, RgbaImage, TextureOptions, BlendOptions, SeamlessOptions, SeamlessResult, Example,
+  Rgba, RgbaImage, TextureOptions, BlendOptions, SeamlessOptions, SeamlessResult,
 } from './types.js';
 
 export interface CallOptions {
@@ -18,7 +18,6 @@ export class PatternSynthClient {
   classifyStrokes(strokes: Stroke[], opts?: ClassifyOptions, options?: CallOptions): Promise<Classification>;
   synthesizeStrokes(strokes: Stroke[], opts: StrokeOptions, options?: CallOptions): Promise<StrokeResult>;
   strokeTile(strokes: Stroke[], opts?: TileOptions, options?: CallOptions): Promise<TileResult>;
-  exampleStrokes(options?: CallOptions): Promise<Example[]>;
   synthesizeTexture(image: Rgba, opts: TextureOptions, options?: CallOptions): Promise<RgbaImage>;
   blendTextures(a: Rgba, b: Rgba, opts: BlendOptions, options?: CallOptions): Promise<RgbaImage>;
   seamlessTile(image: Rgba, opts?: SeamlessOptions, options?: CallOptions): Promise<SeamlessResult>;

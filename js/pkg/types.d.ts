@@ -95,7 +95,6 @@ export interface StrokeResult {
   strokes: Stroke[]; classes: number[]; sources: number[]; classification: Classification; svg: string;
   growingPoints: number; skippedFull: number; passedOver: number;
 }
-export interface Example { name: string; strokes: Stroke[] }
 
 /** Where the .wasm comes from: a URL (default: beside the module), a Response, bytes or a compiled module. */
 export type InitInput = string | URL | Request | Response | Promise<Response> | BufferSource | WebAssembly.Module;

@@ -16,4 +16,3 @@ export const parseSvgReport = vector.method('parseSvgReport');
 export const classifyStrokes = vector.method('classifyStrokes');
 export const synthesizeStrokes = vector.method('synthesizeStrokes');
 export const strokeTile = vector.method('strokeTile');
-export const exampleStrokes = vector.method('exampleStrokes');

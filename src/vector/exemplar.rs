@@ -281,3 +281,33 @@ pub fn irregular_dashes(count: usize, side: f64, seed: u64) -> Vec<Stroke> {
         })
         .collect()
 }
+
+/// An example drawing with its name, as the playground lists it.
+#[derive(Clone, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+pub struct NamedExample {
+    pub name: String,
+    pub strokes: Vec<Stroke>,
+}
+
+/// The playground's built-in examples: every family (lightly jittered, as drawn by
+/// hand) and a busy tile repeated 3x3, with coordinates to a thousandth of a unit (what a
+/// pointer gives; it keeps the file small).
+pub fn playground_examples() -> Vec<NamedExample> {
+    let milli = |v: f64| (v * 1000.0).round() / 1000.0;
+    families(0.015, 7)
+        .into_iter()
+        .chain(std::iter::once(busy_tile(120, 100.0, 7.0, 3, 21)))
+        .map(|e| NamedExample {
+            name: e.name.to_string(),
+            strokes: e
+                .strokes
+                .into_iter()
+                .map(|mut s| {
+                    s.points.iter_mut().for_each(|p| *p = [milli(p[0]), milli(p[1])]);
+                    s.width = milli(s.width);
+                    s
+                })
+                .collect(),
+        })
+        .collect()
+}

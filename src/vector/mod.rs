@@ -3,6 +3,7 @@
 pub mod classify;
 pub mod color;
 pub mod element;
+#[cfg(feature = "test-support")]
 pub mod exemplar;
 pub mod frechet;
 pub mod grow;
@@ -10,6 +11,7 @@ pub mod lattice;
 mod mosaic;
 pub mod period;
 mod reference;
+#[cfg(feature = "test-support")]
 pub mod regularity;
 pub mod spatial;
 pub mod stroke;

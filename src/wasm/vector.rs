@@ -51,24 +51,6 @@ pub fn classify_strokes(strokes: JsValue, opts: JsValue) -> Result<JsValue, JsVa
     )
 }
 
-#[derive(serde::Serialize)]
-struct NamedExample {
-    name: &'static str,
-    strokes: Vec<vector::Stroke>,
-}
-
-/// Built-in example drawings (the families the engine is tested on), for a page to
-/// start from.
-#[wasm_bindgen(js_name = exampleStrokes)]
-pub fn example_strokes() -> Result<JsValue, JsValue> {
-    let list: Vec<NamedExample> = vector::exemplar::families(0.015, 7)
-        .into_iter()
-        .chain(std::iter::once(vector::exemplar::busy_tile(120, 100.0, 7.0, 3, 21)))
-        .map(|e| NamedExample { name: e.name, strokes: e.strokes })
-        .collect();
-    to_js(&list)
-}
-
 /// Grows a `width x height` pattern from example strokes.
 #[wasm_bindgen(js_name = synthesizeStrokes)]
 pub fn synthesize_strokes(strokes: JsValue, opts: JsValue, on_progress: JsValue) -> Result<JsValue, JsValue> {

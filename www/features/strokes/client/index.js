@@ -157,7 +157,8 @@ export function mountStrokes(root, client) {
     if (file) await importSvg(await file.text());
   });
   let examples = null;
-  const loadExamples = async () => (examples ??= await client.exampleStrokes());
+  // Built-in drawings: a static file (written by `cargo run --example export_examples`).
+  const loadExamples = async () => (examples ??= await (await fetch(new URL('../shared/examples.json', import.meta.url))).json());
   loadExamples().then((list) => {
     const select = $('examples');
     for (const { name } of list) select.append(new Option(name, name));
