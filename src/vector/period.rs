@@ -71,21 +71,25 @@ impl Index<'_> {
         best.map(|b| b.0)
     }
 
-    /// Whether `p` lies inside the example: within its hull and near some element.
-    fn inside(&self, p: Point) -> bool {
-        // Within the convex hull (give or take the tolerance), then near an element.
+    /// Where `p` lies: `None` outside the example, `Some(true)` inside it (within its
+    /// hull by the tolerance and near some element), `Some(false)` on its edge (within
+    /// the tolerance of the hull's outline).
+    fn inside(&self, p: Point) -> Option<bool> {
         let hull = &self.hull;
+        let mut clear = true;
         for k in 0..hull.len() {
             let (p0, p1) = (hull[k], hull[(k + 1) % hull.len()]);
             let e = p1 - p0;
-            if e.cross(p - p0) < -self.tolerance * e.hypot() {
-                return false;
+            let d = e.cross(p - p0);
+            if d < -self.tolerance * e.hypot() {
+                return None;
             }
+            clear &= d >= self.tolerance * e.hypot();
         }
         let mut near = false;
         let r2 = self.reach * self.reach;
         self.grid.for_each_near(p, self.reach, |j| near |= (self.elems[j as usize].pos - p).hypot2() <= r2);
-        near
+        near.then_some(clear)
     }
 
     /// Whether `v` maps the elements `set` onto same-class elements, all but a few of
@@ -94,11 +98,16 @@ impl Index<'_> {
     fn supports(&self, v: Vec2, set: &[usize], overlap: bool) -> bool {
         let (mut inside, mut misses) = (0usize, 0usize);
         for &i in set {
-            if !self.inside(self.elems[i].pos + v) {
+            let Some(clear) = self.inside(self.elems[i].pos + v) else { continue };
+            let hit = self.partner(i, v).is_some();
+            // An image on the example's edge counts only when it lands on something: a
+            // tile cut at its edge has pieces there (the left half of a shape whose right
+            // half is on the far side) whose images one period on have nothing to meet.
+            if !clear && !hit {
                 continue;
             }
             inside += 1;
-            if self.partner(i, v).is_none() {
+            if !hit {
                 misses += 1;
                 if misses as f64 > 2.0 + (1.0 - FULL_SUPPORT) * set.len() as f64 {
                     return false;

@@ -4,7 +4,10 @@
 // - geopattern (MIT): every generator at two seeds (full backgrounds: rects of 100%,
 //   shapes that overflow the tile and are drawn again on the far side);
 // - simple-icons (CC0-1.0): icons with holes (letters with counters, rings, cut-outs)
-//   laid out on square, hexagonal and brick lattices, and two icons alternating.
+//   laid out on square, hexagonal and brick lattices, and two icons alternating;
+// - hero-patterns (MIT; Steve Schoger's heropatterns.com tiles): every tile, many with
+//   shapes cut at the tile's edge that abut in the repeat, compound paths with holes,
+//   long line work (graph paper, circuit boards) and motifs of hundreds of pieces.
 // `measure` compares the output with the example's exact periodic extension.
 import { createRequire } from 'node:module';
 import { readFileSync } from 'node:fs';
@@ -69,8 +72,22 @@ function simpleIcons() {
   return cases;
 }
 
+/** Every hero-patterns tile, in one colour, as the page would import it. */
+function heroPatterns() {
+  const hero = require('hero-patterns');
+  return Object.keys(hero).sort().map((name) => {
+    const src = decodeURIComponent(hero[name]('#203040', 1).replace(/^url\('data:image\/svg\+xml,/, '').replace(/'\)$/, ''));
+    const root = src.match(/^<svg[^>]*>/)[0];
+    const [W, H] = ['width', 'height'].map((k) => Number(root.match(new RegExp(`\\s${k}="([\\d.]+)"`))[1]));
+    const viewBox = root.match(/viewBox="([^"]+)"/)?.[1] ?? `0 0 ${W} ${H}`;
+    const inner = src.replace(/^<svg[^>]*>/, '').replace(/<\/svg>\s*$/, '');
+    const body = repeat3((i, j) => `<svg x="${i * W}" y="${j * H}" width="${W}" height="${H}" viewBox="${viewBox}" overflow="visible">${inner}</svg>`);
+    return { corpus: 'hero-patterns', name, svg: `<svg xmlns="http://www.w3.org/2000/svg" width="${3 * W}" height="${3 * H}">${body}</svg>`, a: [W, 0], b: [0, H] };
+  });
+}
+
 export function corpus() {
-  return [...svgPatterns(), ...geopattern(), ...simpleIcons()];
+  return [...svgPatterns(), ...geopattern(), ...simpleIcons(), ...heroPatterns()];
 }
 
 const centre = (s) => {
@@ -130,10 +147,13 @@ export function measure(ps, c) {
       let dup = false;
       near(p[0], p[1], cls[k], (s) => {
         const d = Math.hypot(s.p[0] - p[0], s.p[1] - p[1]);
-        dup ||= d < same || (d < 0.02 * period && (s.i !== i || s.j !== j));
+        // The same drawing (its size too): two halves of a shape cut at the tile's edge
+        // are two sites, though near and alike enough to share a class.
+        const alike = Math.abs(half[s.k][0] - half[k][0]) < 0.5 && Math.abs(half[s.k][1] - half[k][1]) < 0.5;
+        dup ||= d < same || (alike && d < 0.02 * period && (s.i !== i || s.j !== j));
       });
       if (dup) continue;
-      const site = { p, c: cls[k], hits: 0, i, j, inside: reaches(p, k, tol) };
+      const site = { p, c: cls[k], k, hits: 0, i, j, inside: reaches(p, k, tol) };
       sites.push(site);
       const key = cell(p[0], p[1]);
       if (!hash.has(key)) hash.set(key, []);

@@ -1,5 +1,6 @@
 // Issue 7's real-pattern corpus (tests/node/corpus.mjs): svg-patterns tiles, every
-// geopattern generator at two seeds, simple-icons on lattices; each a 3x3 repeat of one
+// geopattern generator at two seeds, simple-icons on lattices, every hero-patterns tile
+// (shapes cut at the tile edge, frames with cut-outs, line work); each a 3x3 repeat of one
 // period as the example and 10x10 periods out. Every case must be the example's
 // periodic extension: at least 99% of ideal sites filled, no strays, no stacked
 // duplicates, drift (95th percentile residual) under 1% of a period.

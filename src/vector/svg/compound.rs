@@ -79,33 +79,68 @@ fn overlap_area(a: &Box2, b: &Box2) -> f64 {
 }
 
 /// Whether polygon `outer` contains `inner`: its box within, not equal, and more than
-/// half of its vertices inside (even-odd), which tolerates vertices on the boundary.
+/// half of its vertices inside (even-odd). Vertices on the outline (a cut-out touching
+/// the edge of its frame, a tile cut at its border) decide nothing: rounding would put
+/// them in or out differently in each copy of a repeat. When every vertex is on the
+/// outline, the midpoints of the inner's edges vote instead.
 fn contains(outer: &[[f64; 2]], ob: &Box2, inner: &[[f64; 2]], ib: &Box2) -> bool {
     let within = ib[0] >= ob[0] && ib[1] >= ob[1] && ib[2] <= ob[2] && ib[3] <= ob[3];
     if !within || ib == ob {
         return false;
     }
+    let eps = 1e-7 * (ob[2] - ob[0]).max(ob[3] - ob[1]);
+    let vote = |points: &mut dyn Iterator<Item = [f64; 2]>| {
+        let (mut inside, mut decided) = (0, 0);
+        for p in points {
+            if let Some(is_in) = side(p, outer, eps) {
+                decided += 1;
+                inside += usize::from(is_in);
+            }
+        }
+        (decided > 0).then_some(2 * inside > decided)
+    };
     // At most 64 vertices, evenly spread: enough for a majority vote.
     let step = inner.len().div_ceil(64).max(1);
-    let (mut inside, mut total) = (0, 0);
-    for p in inner.iter().step_by(step) {
-        total += 1;
-        inside += usize::from(point_in_polygon(*p, outer));
-    }
-    2 * inside > total
+    vote(&mut inner.iter().copied().step_by(step)).or_else(|| {
+        let n = inner.len();
+        vote(&mut (0..n).step_by(step).map(|i| {
+            let (a, b) = (inner[i], inner[(i + 1) % n]);
+            [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])]
+        }))
+    }) == Some(true)
 }
 
-fn point_in_polygon([x, y]: [f64; 2], poly: &[[f64; 2]]) -> bool {
+/// Whether `p` is inside `poly` (even-odd), or `None` within `eps` of its outline.
+fn side([x, y]: [f64; 2], poly: &[[f64; 2]], eps: f64) -> Option<bool> {
     let mut inside = false;
     let mut j = poly.len() - 1;
     for i in 0..poly.len() {
         let ([xi, yi], [xj, yj]) = (poly[i], poly[j]);
+        if near_segment([x, y], poly[j], poly[i], eps) {
+            return None;
+        }
         if (yi > y) != (yj > y) && x < (xj - xi) * (y - yi) / (yj - yi) + xi {
             inside = !inside;
         }
         j = i;
     }
-    inside
+    Some(inside)
+}
+
+/// Whether `p` lies within `eps` of the segment `a`-`b`.
+fn near_segment(p: [f64; 2], a: [f64; 2], b: [f64; 2], eps: f64) -> bool {
+    if p[0] < a[0].min(b[0]) - eps
+        || p[0] > a[0].max(b[0]) + eps
+        || p[1] < a[1].min(b[1]) - eps
+        || p[1] > a[1].max(b[1]) + eps
+    {
+        return false;
+    }
+    let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+    let len2 = dx * dx + dy * dy;
+    let t = if len2 > 0.0 { (((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / len2).clamp(0.0, 1.0) } else { 0.0 };
+    let (ex, ey) = (a[0] + t * dx - p[0], a[1] + t * dy - p[1]);
+    ex * ex + ey * ey <= eps * eps
 }
 
 /// The segments of a subpath (with the closing one when closed).
@@ -163,6 +198,22 @@ mod tests {
         assert_eq!(groups(&x, false), vec![vec![0, 1]]);
         let apart = [(vec![[0.0, 0.0], [10.0, 0.0]], false), (vec![[0.0, 5.0], [10.0, 5.0]], false)];
         assert_eq!(groups(&apart, false), vec![vec![0], vec![1]]);
+    }
+
+    #[test]
+    fn cut_outs_touching_the_frame_stay_with_it_in_every_copy() {
+        // A frame (a square with a triangular cut-out whose corner lies on the frame's
+        // right edge), repeated at offsets where rounding differs.
+        for k in 0..40 {
+            let o = 36.0 * k as f64 + 0.1 * k as f64;
+            let frame = (vec![[o + 36.0, 0.0], [o, 0.0], [o, 36.0], [o + 36.0, 36.0]], true);
+            let cut = (vec![[o + 36.0, 22.874], [o + 36.0, 36.0], [o + 22.874, 36.0], [o + 30.0, 30.0]], true);
+            assert_eq!(groups(&[frame, cut], true), vec![vec![0, 1]], "copy {k}");
+        }
+        // Every vertex on the outline: the edge midpoints decide.
+        let frame = square(0.0, 0.0, 10.0);
+        let corner = (vec![[10.0, 2.0], [10.0, 8.0], [5.0, 10.0]], true);
+        assert_eq!(groups(&[frame, corner], true), vec![vec![0, 1]]);
     }
 
     #[test]

@@ -7,13 +7,39 @@ use std::fmt::Write;
 
 /// Formats a coordinate with at most 3 decimals and no trailing zeros.
 fn num(v: f64) -> String {
+    let mut s = String::new();
+    push_num(&mut s, v);
+    s
+}
+
+/// Appends `v` with at most 3 decimals and no trailing zeros (a non-finite value as 0).
+/// Integer arithmetic on thousandths: float formatting was most of the export's time,
+/// and an output can hold millions of coordinates.
+fn push_num(out: &mut String, v: f64) {
     let v = if v.is_finite() { v } else { 0.0 };
-    let s = format!("{:.3}", v);
-    let s = s.trim_end_matches('0').trim_end_matches('.');
-    if s == "-0" {
-        "0".into()
-    } else {
-        s.into()
+    let milli = (v * 1000.0).round();
+    if milli.abs() >= 1e15 {
+        // Beyond exact integers in an f64 (no coordinate the engine makes).
+        let _ = write!(out, "{:.0}", v);
+        return;
+    }
+    let milli = milli as i64;
+    if milli < 0 {
+        out.push('-');
+    }
+    let (int, frac) = (milli.unsigned_abs() / 1000, milli.unsigned_abs() % 1000);
+    let _ = write!(out, "{int}");
+    if frac != 0 {
+        let digits = [b'0' + (frac / 100) as u8, b'0' + (frac / 10 % 10) as u8, b'0' + (frac % 10) as u8];
+        let keep = if frac % 100 == 0 {
+            1
+        } else if frac % 10 == 0 {
+            2
+        } else {
+            3
+        };
+        out.push('.');
+        out.extend(digits[..keep].iter().map(|&d| d as char));
     }
 }
 
@@ -27,19 +53,16 @@ pub fn path_data(s: &Stroke) -> String {
         if starts && i > 0 && s.closed {
             d.push_str(" Z");
         }
-        let _ = write!(
-            d,
-            "{}{} {}",
-            if i == 0 {
-                "M"
-            } else if starts {
-                " M"
-            } else {
-                " L"
-            },
-            num(*x),
-            num(*y)
-        );
+        d.push_str(if i == 0 {
+            "M"
+        } else if starts {
+            " M"
+        } else {
+            " L"
+        });
+        push_num(&mut d, *x);
+        d.push(' ');
+        push_num(&mut d, *y);
     }
     if s.points.len() == 1 {
         d.push_str(" l0 0");
@@ -110,6 +133,11 @@ mod tests {
         assert_eq!(num(-0.0001), "0");
         assert_eq!(num(2.50049), "2.5");
         assert_eq!(num(f64::NAN), "0");
+        assert_eq!(num(-12.3456), "-12.346");
+        assert_eq!(num(0.05), "0.05");
+        assert_eq!(num(-0.0004), "0");
+        assert_eq!(num(1234567.0001), "1234567");
+        assert_eq!(num(1e300), format!("{:.0}", 1e300));
     }
 
     #[test]

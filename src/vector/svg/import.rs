@@ -521,7 +521,7 @@ impl<'a, 'input> Walker<'a, 'input> {
             return Ok(());
         }
         let subpaths = self.flatten(local, ctx.transform, extent)?;
-        self.push(subpaths, template);
+        self.push(subpaths, ctx.transform, template);
         Ok(())
     }
 
@@ -529,10 +529,10 @@ impl<'a, 'input> Walker<'a, 'input> {
     /// points come. The tolerance is relative to the path's size too, so that a tiny
     /// tolerance on a large path cannot ask for billions of points.
     ///
-    /// The path is flattened in its own user space and the points transformed after, so
-    /// that copies of one shape (by `<use>` or a group's translation) get the very same
-    /// points, and so classify as one shape: flattened where they lie, rounding would
-    /// subdivide some copies differently.
+    /// The path is flattened in its own user space (the points are transformed when
+    /// pushed), so that copies of one shape (by `<use>` or a group's translation) get the
+    /// very same points, and so classify as one shape: flattened where they lie, rounding
+    /// would subdivide some copies differently.
     fn flatten(&mut self, local: BezPath, transform: Affine, extent: f64) -> Result<Vec<(Vec<[f64; 2]>, bool)>> {
         let tolerance = self.opts.tolerance.max(extent * MIN_RELATIVE_TOLERANCE);
         // In local units: divided by the transform's largest stretch.
@@ -578,12 +578,6 @@ impl<'a, 'input> Walker<'a, 'input> {
         if subpaths.last().is_some_and(|(p, closed)| p.len() == 1 && !closed) {
             subpaths.pop();
         }
-        for (points, _) in &mut subpaths {
-            for p in points.iter_mut() {
-                let q = transform * Point::new(p[0], p[1]);
-                *p = [q.x, q.y];
-            }
-        }
         self.points += subpaths.iter().map(|s| s.0.len()).sum::<usize>();
         if count > budget {
             return Err(Error::TooLarge(format!(
@@ -594,9 +588,12 @@ impl<'a, 'input> Walker<'a, 'input> {
         Ok(subpaths)
     }
 
-    /// Adds a shape's subpaths as strokes: its separate parts one stroke each (holes
-    /// and crossing parts with their outline), or the whole path as one.
-    fn push(&mut self, subpaths: Vec<(Vec<[f64; 2]>, bool)>, template: Stroke) {
+    /// Adds a shape's subpaths (in its user space) as strokes under `transform`: its
+    /// separate parts one stroke each (holes and crossing parts with their outline), or
+    /// the whole path as one. Parts are told apart before the transform, for the same
+    /// reason as `flatten`: a part that touches another (a cut-out on the edge of its
+    /// frame) must be judged alike in every copy.
+    fn push(&mut self, mut subpaths: Vec<(Vec<[f64; 2]>, bool)>, transform: Affine, template: Stroke) {
         if subpaths.is_empty() {
             return;
         }
@@ -605,6 +602,12 @@ impl<'a, 'input> Walker<'a, 'input> {
         } else {
             vec![(0..subpaths.len()).collect()]
         };
+        for (points, _) in &mut subpaths {
+            for p in points.iter_mut() {
+                let q = transform * Point::new(p[0], p[1]);
+                *p = [q.x, q.y];
+            }
+        }
         if groups.len() > 1 {
             self.report.split += 1;
         }
