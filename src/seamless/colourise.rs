@@ -39,6 +39,10 @@ pub fn colourise(out: &Grey, ex: &Grey, rgb: &[[u8; 3]]) -> Vec<[u8; 3]> {
     }
     let present = |l: usize| start[l + 1] > start[l];
     let offsets: Vec<isize> = PLACES.iter().map(|&(dx, dy)| dy * w as isize + dx).collect();
+    // Each candidate's 8 places packed in a word, in `by_level`'s order: the agreement
+    // of two neighbourhoods is the count of equal bytes (`agreement`).
+    let packed: Vec<u64> =
+        by_level.iter().map(|&i| pack(offsets.iter().map(|&o| ex.data[(i as isize + o) as usize]))).collect();
     let (n, m) = (out.width as isize, out.height as isize);
     let mut result = Vec::with_capacity(out.data.len());
     for y in 0..m {
@@ -48,14 +52,15 @@ pub fn colourise(out: &Grey, ex: &Grey, rgb: &[[u8; 3]]) -> Vec<[u8; 3]> {
                 .flat_map(|d| [v.wrapping_sub(d), v + d])
                 .find(|&l| l < 256 && present(l))
                 .expect("the exemplar has an interior");
-            let around: [u8; 8] =
-                PLACES.map(|(dx, dy)| out.data[((y + dy).rem_euclid(m) * n + (x + dx).rem_euclid(n)) as usize]);
-            let list = &by_level[start[level] as usize..start[level + 1] as usize];
+            let around = pack(
+                PLACES.iter().map(|&(dx, dy)| out.data[((y + dy).rem_euclid(m) * n + (x + dx).rem_euclid(n)) as usize]),
+            );
+            let range = start[level] as usize..start[level + 1] as usize;
+            let (list, words) = (&by_level[range.clone()], &packed[range]);
             let stride = list.len().div_ceil(MAX_CANDIDATES);
-            let mut best = (0usize, list[0]);
-            for &i in list.iter().step_by(stride) {
-                let agree =
-                    offsets.iter().zip(&around).filter(|&(&o, &a)| ex.data[(i as isize + o) as usize] == a).count();
+            let mut best = (0u32, list[0]);
+            for (&i, &word) in list.iter().zip(words).step_by(stride) {
+                let agree = agreement(word, around);
                 if agree > best.0 {
                     best = (agree, i);
                     if agree == 8 {
@@ -69,9 +74,33 @@ pub fn colourise(out: &Grey, ex: &Grey, rgb: &[[u8; 3]]) -> Vec<[u8; 3]> {
     result
 }
 
+/// Eight grey levels in one word, the first in the lowest byte.
+fn pack(levels: impl Iterator<Item = u8>) -> u64 {
+    levels.enumerate().fold(0, |w, (k, v)| w | (v as u64) << (8 * k))
+}
+
+/// How many of the eight bytes of `a` and `b` are equal (SWAR: a byte of `a ^ b` is
+/// zero exactly where they agree).
+fn agreement(a: u64, b: u64) -> u32 {
+    const LOW7: u64 = 0x7f7f_7f7f_7f7f_7f7f;
+    let x = a ^ b;
+    // High bit of each byte set when the byte is non-zero.
+    let nonzero = ((x & LOW7) + LOW7) | x;
+    8 - (nonzero & !LOW7).count_ones()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn agreement_counts_equal_bytes() {
+        let a = pack([1u8, 2, 3, 4, 5, 6, 7, 8].into_iter());
+        assert_eq!(agreement(a, a), 8);
+        assert_eq!(agreement(a, pack([1u8, 0, 3, 0, 5, 0, 7, 0].into_iter())), 4);
+        assert_eq!(agreement(a, pack([0u8, 0, 0, 0, 0, 0, 0, 128].into_iter())), 0);
+        assert_eq!(agreement(pack([0u8; 8].into_iter()), pack([0u8, 0, 0, 0, 0, 0, 0, 255].into_iter())), 7);
+    }
 
     #[test]
     fn a_copy_of_the_exemplar_gets_its_own_colours_back() {
