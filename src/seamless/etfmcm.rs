@@ -51,6 +51,10 @@ pub fn generate(ex: &Grey, rule: Rule, seed: u64, progress: &mut Throttle) -> Re
     // The four sides' triples for the current kind and scale.
     let mut sides: Option<((Kind, usize), Vec<Triples>)> = None;
     let mut candidates: Vec<u8> = Vec::with_capacity(256);
+    // J3 per apex value, and the values it is non-zero for (reset after each point, so a
+    // point costs what its sides hold, not 256).
+    let mut j3 = [0u8; 256];
+    let mut touched: Vec<u8> = Vec::with_capacity(256);
     for (done, st) in steps.iter().enumerate() {
         if done % 4096 == 0 {
             progress.tick(done as f64 / steps.len() as f64)?;
@@ -69,7 +73,6 @@ pub fn generate(ex: &Grey, rule: Rule, seed: u64, progress: &mut Throttle) -> Re
         });
         let mean = values.iter().map(|&v| v as f64).sum::<f64>() / 4.0;
         // J3 per apex value (none at the first diamond step: the pairwise rule).
-        let mut j3 = [0u8; 256];
         if st.kind != Kind::FirstDiamond {
             if sides.as_ref().is_none_or(|(key, _)| *key != (st.kind, st.h)) {
                 let t = (0..4).map(|i| Triples::build(ex, verts[i], verts[(i + 1) % 4])).collect();
@@ -77,14 +80,21 @@ pub fn generate(ex: &Grey, rule: Rule, seed: u64, progress: &mut Throttle) -> Re
             }
             let t = &sides.as_ref().unwrap().1;
             for i in 0..4 {
-                t[i].for_each_apex(values[i], values[(i + 1) % 4], |k| j3[k as usize] += 1);
+                t[i].for_each_apex(values[i], values[(i + 1) % 4], |k| {
+                    if j3[k as usize] == 0 {
+                        touched.push(k);
+                    }
+                    j3[k as usize] += 1;
+                });
             }
         }
-        let max = *j3.iter().max().unwrap();
+        let max = touched.iter().map(|&k| j3[k as usize]).max().unwrap_or(0);
         let value = if max >= 2 || (max == 1 && rule == Rule::Etfmcm) {
             decisions.by_j3[max as usize] += 1;
             candidates.clear();
-            candidates.extend((0..=255u8).filter(|&k| j3[k as usize] == max));
+            // Ascending, as the seeded choice among ties expects.
+            touched.sort_unstable();
+            candidates.extend(touched.iter().copied().filter(|&k| j3[k as usize] == max));
             if max == 1 {
                 // E-TFMCM: the one nearest the vertices' mean.
                 let best = candidates.iter().map(|&k| (k as f64 - mean).abs()).fold(f64::INFINITY, f64::min);
@@ -99,6 +109,10 @@ pub fn generate(ex: &Grey, rule: Rule, seed: u64, progress: &mut Throttle) -> Re
             mean.round() as u8
         };
         out[st.y * n + st.x] = value;
+        for &k in &touched {
+            j3[k as usize] = 0;
+        }
+        touched.clear();
     }
     progress.tick(1.0)?;
     Ok((Grey { width: n, height: n, data: out }, decisions))
