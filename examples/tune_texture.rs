@@ -1,6 +1,8 @@
 //! Quality probe for tuning the texture search: mean patch energy over seeds, 128 -> 256,
 //! for the four photographs, and the median time. `cargo run --release --example tune_texture`
 //! (`BLEND=1`: the blends' band energies and repetition in the middle band instead).
+//! Each photograph's figure is `energy / repetition (exemplar's own repetition)`:
+//! repetition at shifts of 48 pixels or more (`energy::repetition`).
 use patternsynth::raster::codec::{decode_image, encode_png};
 use patternsynth::raster::energy::{patch_energy, repetition};
 use patternsynth::raster::{blend_textures, synthesize_texture, BlendOptions, Image, TextureOptions};
@@ -60,6 +62,7 @@ fn main() {
         let d = decode_image(&std::fs::read(format!("tests/fixtures/textures/{name}.png")).unwrap()).unwrap();
         let ex = Image::from_rgba8(d.width, d.height, &d.data).unwrap();
         let mut sum = 0.0;
+        let mut rep = 0.0;
         for seed in 1..=seeds {
             let nb = std::env::var("NB").ok().and_then(|s| s.parse().ok()).unwrap_or(5);
             let o = TextureOptions { width: side, height: side, seed, neighbourhood: nb, ..Default::default() };
@@ -82,8 +85,10 @@ fn main() {
                     .unwrap();
             }
             sum += patch_energy(&out, &ex, 300, (0, side), seed);
+            rep += repetition(&out, 48, seed);
         }
-        print!("{name} {:.2}  ", sum / seeds as f64);
+        let own = repetition(&ex, 48, 1);
+        print!("{name} {:.2} / {:.3} ({own:.3})  ", sum / seeds as f64, rep / seeds as f64);
         all += sum / seeds as f64;
     }
     times.sort_by(|a, b| a.total_cmp(b));

@@ -74,9 +74,18 @@ pub fn generate(ex: &Grey, rule: Rule, seed: u64, progress: &mut Throttle) -> Re
         let mean = values.iter().map(|&v| v as f64).sum::<f64>() / 4.0;
         // J3 per apex value (none at the first diamond step: the pairwise rule).
         if st.kind != Kind::FirstDiamond {
-            if sides.as_ref().is_none_or(|(key, _)| *key != (st.kind, st.h)) {
-                let t = (0..4).map(|i| Triples::build(ex, verts[i], verts[(i + 1) % 4])).collect();
-                sides = Some(((st.kind, st.h), t));
+            match &mut sides {
+                Some((key, t)) if *key != (st.kind, st.h) => {
+                    for (i, side) in t.iter_mut().enumerate() {
+                        side.rebuild(ex, verts[i], verts[(i + 1) % 4]);
+                    }
+                    *key = (st.kind, st.h);
+                }
+                Some(_) => {}
+                None => {
+                    let t = (0..4).map(|i| Triples::build(ex, verts[i], verts[(i + 1) % 4])).collect();
+                    sides = Some(((st.kind, st.h), t));
+                }
             }
             let t = &sides.as_ref().unwrap().1;
             for i in 0..4 {
