@@ -36,6 +36,10 @@ test('a built-in example is there at once, with the default output size', async 
   // The pen's width (3) must not stand in for the output's.
   assert.equal(await page.inputValue('#out-width'), '1200');
   assert.equal(await page.inputValue('#out-height'), '800');
+  // The examples menu lists the drawings of the static examples file.
+  await page.waitForFunction(() => document.querySelectorAll('#examples option').length > 8);
+  const names = await page.$$eval('#examples option', (o) => o.map((x) => x.value).filter(Boolean));
+  for (const name of ['row', 'grid', 'hexagonal', 'brick', 'classes-by-shape', 'busy-tile']) assert.ok(names.includes(name), `${name} in ${names}`);
 });
 
 test('draw, classify, synthesize, download a periodic SVG', async () => {
