@@ -92,6 +92,27 @@ test('painting on the coefficient switches to a mask, and single-exemplar mode r
   await page.check('input[name="blend-mode"][value="blend"]');
 });
 
+test('a 2048 x 2048 photograph is scaled to the cap with a message, and a blend from it runs', async () => {
+  // Smooth noise (a photograph's scale of detail), encoded by the package itself.
+  const side = 2048;
+  const data = new Uint8ClampedArray(side * side * 4);
+  for (let y = 0; y < side; y++) for (let x = 0; x < side; x++) {
+    const v = 128 + 60 * Math.sin(x / 13) * Math.cos(y / 17) + 30 * Math.sin((x + 2 * y) / 5);
+    data.set([v, 0.8 * v, 0.6 * v, 255], 4 * (y * side + x));
+  }
+  const { encodePng } = await import('../../pkg/node/index.js');
+  const png = Buffer.from(encodePng({ width: side, height: side, data }));
+  await page.setInputFiles('#slot-a input[type=file]', { name: 'large.png', mimeType: 'image/png', buffer: png });
+  await page.waitForFunction(() => document.querySelector('#slot-a canvas').width === 512, null, { timeout: 60000 });
+  assert.match(await page.textContent('#blend-messages'), /large\.png: scaled from 2048×2048 to 512×512/);
+  await page.fill('#blend-width', '128');
+  await page.fill('#blend-height', '128');
+  await page.click('#blend-run');
+  await page.waitForFunction(() => document.querySelector('#blend-messages').textContent === 'Done.', null, { timeout: 60000 });
+  await page.selectOption('#slot-a select', 'wood');
+  await page.waitForFunction(() => document.querySelector('#slot-a canvas').width === 128);
+});
+
 test('a file that is not an image gets a clear message', async () => {
   await page.setInputFiles('#slot-a input[type=file]', { name: 'notes.png', mimeType: 'image/png', buffer: Buffer.from('hello') });
   await page.waitForFunction(() => /not an image/.test(document.querySelector('#blend-messages').textContent));

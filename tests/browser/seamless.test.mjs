@@ -65,6 +65,24 @@ test('a long run can be cancelled', async () => {
   await page.selectOption('#seam-size', '');
 });
 
+test('a 2048 x 2048 photograph is scaled to fit with a message, and its tile is made', async () => {
+  const side = 2048;
+  const data = new Uint8ClampedArray(side * side * 4);
+  for (let y = 0; y < side; y++) for (let x = 0; x < side; x++) {
+    const v = 128 + 60 * Math.sin(x / 13) * Math.cos(y / 17) + 30 * Math.sin((x + 2 * y) / 5);
+    data.set([v, 0.8 * v, 0.6 * v, 255], 4 * (y * side + x));
+  }
+  const png = Buffer.from(encodePng({ width: side, height: side, data }));
+  await page.setInputFiles('#seam-file', { name: 'large.png', mimeType: 'image/png', buffer: png });
+  await page.waitForFunction(() => document.querySelector('#seam-source').width === 1024, null, { timeout: 60000 });
+  assert.match(await page.textContent('#seam-messages'), /large\.png: scaled from 2048×2048 to fit 1024 px/);
+  await page.selectOption('#seam-method', 'etfmcm');
+  await page.selectOption('#seam-size', '128');
+  await run();
+  assert.match(await page.textContent('#seam-info'), /^128×128/);
+  await page.selectOption('#seam-size', '');
+});
+
 test('a non-square image is cropped with a message; not an image is refused', async () => {
   const data = new Uint8ClampedArray(90 * 40 * 4);
   for (let i = 0; i < 90 * 40; i++) data.set([(i * 37) % 256, (i * 11) % 256, 90, 255], 4 * i);

@@ -70,11 +70,14 @@ export function mountBlend(root, client) {
     slots[key].image = rgba;
   }
 
-  /** Shows a bitmap in slot `key`, scaled down to the cap with a message. */
+  /** Shows a bitmap in slot `key`, scaled down to the cap; returns the note saying so
+   *  (empty when it fits), which is also shown. */
   function useBitmap(key, bitmap, name) {
     const { rgba, scaledFrom } = rgbaOf(bitmap, maxExemplarSide);
-    if (scaledFrom) say(`${name}: scaled from ${scaledFrom[0]}×${scaledFrom[1]} to ${rgba.width}×${rgba.height} (exemplars are capped at ${maxExemplarSide} px to keep synthesis quick).`, 'warn');
+    const note = scaledFrom ? `${name}: scaled from ${scaledFrom[0]}×${scaledFrom[1]} to ${rgba.width}×${rgba.height} (exemplars are capped at ${maxExemplarSide} px to keep synthesis quick).` : '';
+    if (note) say(note, 'warn');
     setSlot(key, rgba);
+    return note;
   }
 
   async function loadBuiltin(key, name) {
@@ -88,13 +91,14 @@ export function mountBlend(root, client) {
   async function loadFile(key, file) {
     const bitmap = await fileBitmap(file);
     if (!bitmap) return say(`${file.name} is not an image this browser can read (use PNG or JPEG).`, 'error');
-    useBitmap(key, bitmap, file.name);
+    const note = useBitmap(key, bitmap, file.name);
     slots[key].select.value = '';
     settings[key] = '';
     save();
     // Kept across reloads like everything else the person made.
     const kept = keepImage(`${exemplarKey}.${key}`, file.name, slots[key].canvas);
-    say(`Loaded ${file.name} as texture ${key.toUpperCase()}.${kept ? '' : ' (Browser storage is full: it will not survive a reload.)'}`, kept ? '' : 'warn');
+    // The scaling note stays in the message: it is what the person most needs to know.
+    say(`Loaded ${file.name} as texture ${key.toUpperCase()}.${note ? ` ${note}` : ''}${kept ? '' : ' (Browser storage is full: it will not survive a reload.)'}`, kept && !note ? '' : 'warn');
   }
 
   /** A texture kept from an earlier visit; false when there is none. */

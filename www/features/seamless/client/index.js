@@ -29,10 +29,14 @@ export function mountSeamless(root, client) {
     image = rgba;
     $('seam-source-info').textContent = `${rgba.width}×${rgba.height}`;
   }
+  /** Shows a bitmap, scaled down to the cap; returns the note saying so (empty when it
+   *  fits), which is also shown. */
   function useBitmap(bitmap, name) {
     const { rgba, scaledFrom } = rgbaOf(bitmap, maxInputSide);
-    if (scaledFrom) say(`${name}: scaled from ${scaledFrom[0]}×${scaledFrom[1]} to fit ${maxInputSide} px.`, 'warn');
+    const note = scaledFrom ? `${name}: scaled from ${scaledFrom[0]}×${scaledFrom[1]} to fit ${maxInputSide} px.` : '';
+    if (note) say(note, 'warn');
     show(rgba);
+    return note;
   }
   async function loadBuiltin(name) {
     try {
@@ -44,12 +48,12 @@ export function mountSeamless(root, client) {
   async function loadFile(file) {
     const bitmap = await fileBitmap(file);
     if (!bitmap) return say(`${file.name} is not an image this browser can read (use PNG or JPEG).`, 'error');
-    useBitmap(bitmap, file.name);
+    const note = useBitmap(bitmap, file.name);
     select.value = '';
     settings.texture = '';
     save();
     const kept = keepImage(imageKey, file.name, $('seam-source'));
-    say(`Loaded ${file.name}.${kept ? '' : ' (Browser storage is full: it will not survive a reload.)'}`, kept ? '' : 'warn');
+    say(`Loaded ${file.name}.${note ? ` ${note}` : ''}${kept ? '' : ' (Browser storage is full: it will not survive a reload.)'}`, kept && !note ? '' : 'warn');
   }
   select.addEventListener('change', () => {
     if (!select.value) return;
