@@ -100,16 +100,23 @@ impl Triples {
             self.bits[w as usize] = 0;
         }
         self.set.clear();
-        for y in 0..img.height {
-            for x in 0..img.width {
-                if let (Some(va), Some(vb)) = (img.at(x, y, a.0, a.1), img.at(x, y, b.0, b.1)) {
-                    let key = (va as usize) << 16 | (vb as usize) << 8 | img.data[y * img.width + x] as usize;
-                    let word = &mut self.bits[key >> 6];
-                    if *word == 0 {
-                        self.set.push((key >> 6) as u32);
-                    }
-                    *word |= 1 << (key & 63);
+        // The apexes whose two vertices both lie in the image, as ranges (no test per pixel).
+        let (w, h) = (img.width as isize, img.height as isize);
+        let x0 = 0.max(-a.0).max(-b.0);
+        let x1 = w.min(w - a.0).min(w - b.0);
+        let y0 = 0.max(-a.1).max(-b.1);
+        let y1 = h.min(h - a.1).min(h - b.1);
+        let (da, db) = (a.1 * w + a.0, b.1 * w + b.0);
+        for y in y0..y1 {
+            for apex in (y * w + x0)..(y * w + x1).max(y * w + x0) {
+                let va = img.data[(apex + da) as usize] as usize;
+                let vb = img.data[(apex + db) as usize] as usize;
+                let key = va << 16 | vb << 8 | img.data[apex as usize] as usize;
+                let word = &mut self.bits[key >> 6];
+                if *word == 0 {
+                    self.set.push((key >> 6) as u32);
                 }
+                *word |= 1 << (key & 63);
             }
         }
     }
