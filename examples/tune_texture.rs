@@ -5,6 +5,7 @@
 //! repetition at shifts of 48 pixels or more (`energy::repetition`).
 use patternsynth::raster::codec::{decode_image, encode_png};
 use patternsynth::raster::energy::{patch_energy, repetition};
+use patternsynth::raster::synthesis::Schedule;
 use patternsynth::raster::{blend_textures, synthesize_texture, BlendOptions, Image, TextureOptions};
 use patternsynth::Silent;
 use std::time::Instant;
@@ -65,7 +66,13 @@ fn main() {
         let mut rep = 0.0;
         for seed in 1..=seeds {
             let nb = std::env::var("NB").ok().and_then(|s| s.parse().ok()).unwrap_or(5);
-            let o = TextureOptions { width: side, height: side, seed, neighbourhood: nb, ..Default::default() };
+            let schedule = match std::env::var("SCHEDULE").as_deref() {
+                Ok("bands") => Schedule::Bands,
+                Ok("scanline") => Schedule::Scanline,
+                _ => Schedule::Auto,
+            };
+            let o =
+                TextureOptions { width: side, height: side, seed, neighbourhood: nb, schedule, ..Default::default() };
             let t = Instant::now();
             let out = match std::env::var("REF") {
                 // Another synthesizer's outputs, named <dir>/<name>-<seed>.png.

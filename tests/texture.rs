@@ -3,10 +3,12 @@
 //! without seams, the accelerated search stays close to the exhaustive one, and bad
 //! input gets a clear error.
 
+use patternsynth::raster::bands;
 use patternsynth::raster::codec::decode_image;
 use patternsynth::raster::energy::{patch_energy, repetition};
+use patternsynth::raster::synthesis::{Job, Schedule};
 use patternsynth::raster::{
-    blend_textures, synthesize_texture, BlendOptions, Coefficient, Image, Rgba, TextureOptions,
+    blend_job, blend_textures, synthesize_texture, texture_job, BlendOptions, Coefficient, Image, Rgba, TextureOptions,
 };
 use patternsynth::{Error, Silent};
 
@@ -151,4 +153,114 @@ fn bad_input_is_a_clear_error() {
         calls < 3
     };
     assert_eq!(synthesize_texture(&ex, &o(64, 64), &mut cancel).unwrap_err(), Error::Cancelled);
+}
+
+/// Runs a job's banded schedule as `workers` threads would: each with a job of its own,
+/// taking the bands of each step in turn (reversed, to differ from the one-thread order).
+fn run_on_threads(make: &(dyn Fn() -> Job + Sync), workers: usize) -> Rgba {
+    let jobs: Vec<Job> = (0..workers).map(|_| make()).collect();
+    let steps = bands::steps(&jobs[0]);
+    let (mut parent, mut state) = (Vec::new(), Vec::new());
+    for step in steps {
+        if step.pass == 0 {
+            parent = std::mem::take(&mut state);
+            state = bands::initial(&jobs[0], step.level, &parent);
+        }
+        let n = bands::bands(&jobs[0], step).len();
+        let results: Vec<(usize, Vec<Vec<u32>>)> = std::thread::scope(|scope| {
+            let handles: Vec<_> = jobs
+                .iter()
+                .enumerate()
+                .map(|(w, job)| {
+                    let (start, parent) = (&state, &parent);
+                    scope.spawn(move || {
+                        (0..n)
+                            .rev()
+                            .filter(|b| b % workers == w)
+                            .map(|b| (b, bands::run(job, step, start, parent, b, &mut || Ok(())).unwrap()))
+                            .collect::<Vec<_>>()
+                    })
+                })
+                .collect();
+            handles.into_iter().flat_map(|h| h.join().unwrap()).collect()
+        });
+        let mut next = state.clone();
+        for (b, rows) in results {
+            bands::store(&jobs[0], step, b, &rows, &mut next);
+        }
+        state = next;
+    }
+    jobs[0].colours(&state)
+}
+
+#[test]
+fn banded_schedule_gives_one_image_for_any_number_of_workers() {
+    let ex = load("brick", 48);
+    let opts = TextureOptions { width: 100, height: 140, seed: 6, schedule: Schedule::Bands, ..Default::default() };
+    let one = synthesize_texture(&ex, &opts, &mut Silent).unwrap();
+    for workers in [2, 3] {
+        assert!(run_on_threads(&|| texture_job(&ex, &opts).unwrap(), workers) == one, "{workers} workers");
+    }
+    // Blends too (two maps per level, mixed by mu).
+    let (a, b) = (load("wood", 40), load("gravel", 40));
+    let blend = BlendOptions { base: TextureOptions { width: 72, height: 130, ..opts }, ..Default::default() };
+    let one = blend_textures(&a, &b, &blend, &mut Silent).unwrap();
+    assert!(run_on_threads(&|| blend_job(&a, &b, &blend).unwrap(), 2) == one);
+    // The scanline order is another image: the schedule option is honoured.
+    assert!(
+        synthesize_texture(&ex, &TextureOptions { schedule: Schedule::Scanline, ..opts }, &mut Silent).unwrap()
+            != synthesize_texture(&ex, &opts, &mut Silent).unwrap()
+    );
+}
+
+#[test]
+fn banded_schedule_matches_scanline_quality_and_shows_no_band_edges() {
+    let ex = load("grass", 64);
+    let side = 160;
+    let (mut banded, mut scanline, mut edge, mut inner) = (0.0, 0.0, 0.0, 0.0);
+    for seed in 1..=3 {
+        let o = TextureOptions { width: side, height: side, seed, ..Default::default() };
+        let b = image(
+            synthesize_texture(&ex, &TextureOptions { schedule: Schedule::Bands, ..o.clone() }, &mut Silent).unwrap(),
+        );
+        let s =
+            image(synthesize_texture(&ex, &TextureOptions { schedule: Schedule::Scanline, ..o }, &mut Silent).unwrap());
+        banded += patch_energy(&b, &ex, 200, (0, side), seed);
+        scanline += patch_energy(&s, &ex, 200, (0, side), seed);
+        // Row-to-row differences across the finest level's band edges (both passes'),
+        // against all rows'.
+        let row_diff = |y: usize| {
+            (0..side)
+                .map(|x| {
+                    let (p, q) = (b.at(x, y), b.at(x, (y + 1) % side));
+                    ((p[0] - q[0]).abs() + (p[1] - q[1]).abs() + (p[2] - q[2]).abs()) as f64
+                })
+                .sum::<f64>()
+                / side as f64
+        };
+        let n = side / bands::BAND_ROWS;
+        let edges: Vec<usize> =
+            (0..n).flat_map(|k| [k * side / n, k * side / n + side / n / 2]).map(|y| (y + side - 1) % side).collect();
+        edge += edges.iter().map(|&y| row_diff(y)).sum::<f64>() / edges.len() as f64;
+        inner += (0..side).map(row_diff).sum::<f64>() / side as f64;
+    }
+    println!(
+        "patch energy banded {:.2} scanline {:.2}; rows across band edges {:.1} vs all {:.1}",
+        banded / 3.0,
+        scanline / 3.0,
+        edge / 3.0,
+        inner / 3.0
+    );
+    assert!(banded < 1.1 * scanline, "banded {banded} vs scanline {scanline}");
+    assert!(edge < 1.15 * inner, "band edges {edge} vs all rows {inner}");
+}
+
+#[test]
+fn large_outputs_take_the_banded_schedule_and_small_ones_scanlines() {
+    let ex = load("wood", 32);
+    let job =
+        |w: usize, h: usize| texture_job(&ex, &TextureOptions { width: w, height: h, ..Default::default() }).unwrap();
+    assert!(!job(511, 512).params().banded());
+    assert!(job(512, 512).params().banded());
+    assert!(job(2048, 128).params().banded());
 }

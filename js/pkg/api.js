@@ -17,3 +17,7 @@ export const METHODS = {
   decodeImage: { args: 1, module: 'codec' },
   encodePng: { args: 1, module: 'codec' },
 };
+
+// The wasm exports of banded synthesis, which workers call for the client (bands.js);
+// the entries with the texture engine carry them as `bands`, not as API.
+export const BAND_EXPORTS = ['bandsOpen', 'bandsRun', 'bandsFinish', 'bandsClose'];

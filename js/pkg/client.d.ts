@@ -9,10 +9,17 @@ export interface CallOptions {
   onProgress?: (fraction: number) => void;
 }
 
-/** Runs patternsynth in a module Web Worker; every call takes an AbortSignal. */
+export interface ClientOptions {
+  /** Workers a large texture synthesis or blend (from 512 x 512 pixels) may use; the
+   *  image is the same for any number. Default: the machine's cores, at most 8 (1 when
+   *  a Worker instance is given, which cannot be cloned). */
+  workers?: number;
+}
+
+/** Runs patternsynth in module Web Workers; every call takes an AbortSignal. */
 export class PatternSynthClient {
   /** The package's own worker by default; or a Worker, a function making Workers, or worker.js's URL. */
-  constructor(worker?: Worker | (() => Worker) | URL | string);
+  constructor(worker?: Worker | (() => Worker) | URL | string, options?: ClientOptions);
   parseSvg(svg: string, opts?: ParseSvgOptions, options?: CallOptions): Promise<Stroke[]>;
   parseSvgReport(svg: string, opts?: ParseSvgOptions, options?: CallOptions): Promise<SvgImport>;
   classifyStrokes(strokes: Stroke[], opts?: ClassifyOptions, options?: CallOptions): Promise<Classification>;

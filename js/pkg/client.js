@@ -5,20 +5,30 @@
 //   const out = await synth.synthesizeStrokes(strokes, { width: 800, height: 600 },
 //     { signal: controller.signal, onProgress: (f) => bar.value = f });
 //
-// Calls run one at a time in a module worker. Aborting the running call terminates the
-// worker (a synchronous wasm call cannot be interrupted any other way) and the next
-// call starts a fresh one; aborting a queued call just drops it. A worker that fails
-// to start or dies rejects the running call with the cause, and the next call starts
-// a new one.
+// Calls run one at a time in a module worker. Large texture syntheses and blends (from
+// 512 x 512 pixels) also use helper workers, up to `navigator.hardwareConcurrency` in
+// all (bands.js); the image is the same for any number. Aborting the running call
+// terminates its workers (a synchronous wasm call cannot be interrupted any other way)
+// and the next call starts fresh ones; aborting a queued call just drops it. A worker
+// that fails to start or dies rejects the running call with the cause, and the next
+// call starts a new one.
 import { METHODS } from './api.js';
+import { BANDED, NOT_BANDED, runBands } from './bands.js';
+
+/** Workers for one banded call by default: the machine's cores, at most 8. */
+const defaultWorkers = () => Math.max(1, Math.min(8, globalThis.navigator?.hardwareConcurrency || 1));
 
 export class PatternSynthClient {
   /**
    * @param {Worker | (() => Worker) | URL | string} [worker] the worker, a function
    *   that makes one, or the URL of worker.js; by default the package's own worker,
    *   written in the form bundlers (Vite, webpack 5) turn into a worker chunk.
+   * @param {{ workers?: number }} [options] how many workers a large texture call may
+   *   use (default: the machine's cores, at most 8; 1 with a given Worker instance).
    */
-  constructor(worker) {
+  constructor(worker, { workers } = {}) {
+    let size = workers ?? defaultWorkers();
+    if (!(Number.isInteger(size) && size >= 1)) throw new TypeError(`workers must be a whole number from 1, got ${workers}.`);
     if (worker === undefined) {
       this.makeWorker = () => new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
     } else if (typeof worker === 'function') {
@@ -27,6 +37,7 @@ export class PatternSynthClient {
       this.makeWorker = () => new Worker(worker, { type: 'module' });
     } else if (worker && typeof worker.postMessage === 'function') {
       // A given Worker is used until it is terminated; then no fresh one can be made.
+      size = 1;
       let given = worker;
       this.makeWorker = () => {
         if (!given) throw new Error('The Worker passed to PatternSynthClient was terminated (after an abort or a failure); pass a function that makes Workers to allow restarts.');
@@ -37,16 +48,20 @@ export class PatternSynthClient {
     } else {
       throw new TypeError('PatternSynthClient takes a Worker, a function returning a Worker, or the URL of worker.js.');
     }
+    this.size = size;
     this.worker = null;
+    /** Workers besides `worker`, started for banded calls and kept for the next. */
+    this.helpers = [];
+    /** Band messages awaiting their answer, by id. */
+    this.requests = new Map();
     this.queue = [];
     this.current = null;
     this.nextId = 1;
   }
 
-  /** Stops the worker; pending calls are rejected. */
+  /** Stops the workers; pending calls are rejected. */
   terminate() {
-    this.worker?.terminate();
-    this.worker = null;
+    this.stopWorkers();
     const pending = [this.current, ...this.queue].filter(Boolean);
     this.current = null;
     this.queue = [];
@@ -76,20 +91,24 @@ export class PatternSynthClient {
     }
   }
 
+  /** A new worker wired to this client. */
+  start() {
+    const worker = this.makeWorker();
+    worker.onmessage = ({ data }) => this.receive(worker, data);
+    worker.onerror = (e) => {
+      e.preventDefault?.();
+      this.dead(worker, e);
+    };
+    worker.onmessageerror = () => this.dead(worker, { message: 'a message could not be read' });
+    return worker;
+  }
+
   pump() {
     if (this.current || this.queue.length === 0) return;
     const job = (this.current = this.queue.shift());
     try {
-      if (!this.worker) {
-        const worker = this.makeWorker();
-        worker.onmessage = ({ data }) => this.receive(worker, data);
-        worker.onerror = (e) => {
-          e.preventDefault?.();
-          this.dead(worker, e);
-        };
-        worker.onmessageerror = () => this.dead(worker, { message: 'a message could not be read' });
-        this.worker = worker;
-      }
+      this.worker ??= this.start();
+      if (this.size > 1 && BANDED.has(job.method)) return void this.runBanded(job);
       this.worker.postMessage({ id: job.id, method: job.method, args: job.args });
     } catch (e) {
       // e.g. a SecurityError for a worker script on another origin.
@@ -97,7 +116,44 @@ export class PatternSynthClient {
     }
   }
 
+  /** Runs a texture call's bands on the main worker and helpers (bands.js). */
+  async runBanded(job) {
+    let result;
+    try {
+      while (this.helpers.length < this.size - 1) this.helpers.push(this.start());
+      const pool = [this.worker, ...this.helpers].map((worker) => ({
+        request: (message, onProgress) => this.request(worker, message, onProgress),
+      }));
+      result = await runBands(pool, job.method, job.args, job.onProgress);
+    } catch (e) {
+      if (this.current === job) this.finish(job, e, false);
+      return;
+    }
+    if (this.current !== job) return;
+    if (result === NOT_BANDED) this.worker.postMessage({ id: job.id, method: job.method, args: job.args });
+    else this.finish(job, null, false, result);
+  }
+
+  /** Sends a band message to `worker`; resolves with its result. */
+  request(worker, message, onProgress) {
+    return new Promise((resolve, reject) => {
+      if (worker !== this.worker && !this.helpers.includes(worker)) return reject(abortError('The worker was terminated.'));
+      const id = this.nextId++;
+      this.requests.set(id, { worker, resolve, reject, onProgress });
+      worker.postMessage({ id, ...message });
+    });
+  }
+
   receive(worker, data) {
+    const request = this.requests.get(data.id);
+    if (request) {
+      if ('progress' in data) return void request.onProgress?.(data.progress);
+      this.requests.delete(data.id);
+      if (!('error' in data)) return void request.resolve(data.result);
+      const err = new Error(data.error);
+      if (data.name && data.name !== 'Error') err.name = data.name;
+      return void request.reject(err);
+    }
     const job = this.current;
     if (worker !== this.worker || !job || data.id !== job.id) return;
     if ('progress' in data) return void job.onProgress?.(data.progress);
@@ -112,24 +168,28 @@ export class PatternSynthClient {
 
   /** The worker failed to load or died: the running call fails with the cause. */
   dead(worker, event) {
-    if (worker !== this.worker) return;
+    if (worker !== this.worker && !this.helpers.includes(worker)) return;
     const where = event?.filename ? ` (${event.filename}${event.lineno ? `:${event.lineno}` : ''})` : '';
     const cause = event?.message || 'its script, or a module it imports, could not be loaded or evaluated; see the browser console';
     const error = new Error(`The patternsynth worker failed: ${cause}${where}.`);
     if (this.current) this.finish(this.current, error, true);
-    else {
-      this.worker.terminate();
-      this.worker = null;
-    }
+    else this.stopWorkers();
+  }
+
+  /** Terminates every worker; their unanswered band messages fail. */
+  stopWorkers() {
+    for (const w of [this.worker, ...this.helpers]) w?.terminate();
+    this.worker = null;
+    this.helpers = [];
+    const requests = [...this.requests.values()];
+    this.requests.clear();
+    for (const r of requests) r.reject(abortError('The worker was terminated.'));
   }
 
   /** Settles the running `job`; `stop` also ends its worker (the next call makes one). */
   finish(job, error, stop, result) {
     job.signal?.removeEventListener('abort', job.onAbort);
-    if (stop) {
-      this.worker?.terminate();
-      this.worker = null;
-    }
+    if (stop) this.stopWorkers();
     this.current = null;
     if (error) job.reject(error);
     else job.resolve(result);

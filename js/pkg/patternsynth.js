@@ -22,3 +22,10 @@ export const strokeTile = full.method('strokeTile');
 export const synthesizeTexture = full.method('synthesizeTexture');
 export const blendTextures = full.method('blendTextures');
 export const seamlessTile = full.method('seamlessTile');
+/** The worker protocol of banded synthesis (bands.js and worker.js), not public API. */
+export const bands = Object.freeze({
+  open: full.method('bandsOpen'),
+  run: full.method('bandsRun'),
+  finish: full.method('bandsFinish'),
+  close: full.method('bandsClose'),
+});

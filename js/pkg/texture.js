@@ -15,3 +15,10 @@ export const version = texture.method('version');
 export const synthesizeTexture = texture.method('synthesizeTexture');
 export const blendTextures = texture.method('blendTextures');
 export const seamlessTile = texture.method('seamlessTile');
+/** The worker protocol of banded synthesis (bands.js and worker.js), not public API. */
+export const bands = Object.freeze({
+  open: texture.method('bandsOpen'),
+  run: texture.method('bandsRun'),
+  finish: texture.method('bandsFinish'),
+  close: texture.method('bandsClose'),
+});

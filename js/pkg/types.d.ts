@@ -45,6 +45,9 @@ export interface RgbaImage { width: number; height: number; data: Uint8ClampedAr
 export interface TextureOptions {
   width: number; height: number; seed?: number; tileable?: boolean; exhaustive?: boolean;
   levels?: number; neighbourhood?: number;
+  /** Pixel order: 'bands' (several workers can share it; PatternSynthClient does), the
+   *  paper's 'scanline', or 'auto' (default): bands from 512 x 512 output pixels. */
+  schedule?: 'auto' | 'scanline' | 'bands';
 }
 export type Transition = 'linear' | 'ease' | 'steep';
 export interface BlendOptions extends TextureOptions {

@@ -19,9 +19,27 @@ const transferables = (r) => {
   return image?.data?.buffer instanceof ArrayBuffer ? [image.data.buffer] : [];
 };
 
+// Banded texture synthesis (bands.js): { id, bands: 'open' | 'run' | 'finish' | 'close', ... }.
+async function bandsMessage({ id, bands, handle, method, args, step, state, parent, from, to }) {
+  await ready;
+  const progress = (fraction) => { self.postMessage({ id, progress: fraction }); };
+  switch (bands) {
+    case 'open': return api.bands.open(method, args);
+    case 'run': return api.bands.run(handle, step, state, parent, from, to, progress);
+    case 'finish': return api.bands.finish(handle, state);
+    case 'close': return api.bands.close(handle);
+    default: throw new Error(`Unknown band message '${bands}'.`);
+  }
+}
+
 self.onmessage = async ({ data }) => {
   const { id, method, args = [] } = data;
   try {
+    if (data.bands) {
+      const result = await bandsMessage(data);
+      const buffer = result?.data?.buffer ?? result?.buffer;
+      return void self.postMessage({ id, result }, buffer instanceof ArrayBuffer ? [buffer] : []);
+    }
     const spec = Object.hasOwn(METHODS, method) ? METHODS[method] : null;
     if (!spec) throw new Error(`Unknown method '${method}'.`);
     if (spec.module === 'codec') await (codecs ??= api.initCodecs().catch((e) => { codecs = null; throw e; }));

@@ -1,6 +1,8 @@
 //! Engine 2: texture synthesis and blending (SPEC section 2): Wei-Levoy multi-resolution
 //! neighbourhood matching against one or two exemplars.
 
+#[cfg(feature = "texture")]
+pub mod bands;
 #[cfg(feature = "codec")]
 pub mod codec;
 #[cfg(feature = "texture")]
@@ -19,4 +21,6 @@ pub mod texture;
 
 pub use self::image::{Image, Rgba};
 #[cfg(feature = "texture")]
-pub use texture::{blend_textures, synthesize_texture, BlendOptions, Coefficient, TextureOptions};
+pub use texture::{
+    blend_job, blend_textures, synthesize_texture, texture_job, BlendOptions, Coefficient, TextureOptions,
+};

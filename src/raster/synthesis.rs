@@ -42,6 +42,34 @@ pub struct Params {
     /// Correction passes per level after the causal one: every pixel matched again with
     /// its full (two-sided) neighbourhood, which joins structures the causal pass broke.
     pub corrections: usize,
+    pub schedule: Schedule,
+}
+
+/// The order in which a level's pixels are synthesized.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Deserialize)]
+#[serde(rename_all = "camelCase")]
+pub enum Schedule {
+    /// Bands for outputs of `BANDS_FROM` pixels or more, scanlines below.
+    #[default]
+    Auto,
+    /// The paper's scanline order (one thread).
+    Scanline,
+    /// The banded order (`bands`), which workers can share.
+    Bands,
+}
+
+/// Output pixels from which `Schedule::Auto` takes the banded order.
+pub const BANDS_FROM: usize = 512 * 512;
+
+impl Params {
+    /// Whether this synthesis runs in the banded order.
+    pub fn banded(&self) -> bool {
+        match self.schedule {
+            Schedule::Auto => self.width * self.height >= BANDS_FROM,
+            Schedule::Scanline => false,
+            Schedule::Bands => true,
+        }
+    }
 }
 
 impl Default for Params {
@@ -56,6 +84,7 @@ impl Default for Params {
             tileable: false,
             random_candidates: 2,
             corrections: 1,
+            schedule: Schedule::Auto,
         }
     }
 }
@@ -175,129 +204,199 @@ pub enum Sources<'a> {
     Blend { a: &'a Image, b: &'a Image, mu: Vec<f32> },
 }
 
-/// Synthesizes a `width x height` image from `sources`.
+/// A synthesis prepared: the sources' pyramids, the mixing weights, the level sizes and
+/// the neighbourhood shapes. Both schedules (`synthesize`'s scanline order and the
+/// banded one in `bands`) run their passes over it.
+pub struct Job {
+    pub(crate) mix: Mixer,
+    pub(crate) params: Params,
+    /// Pyramid levels.
+    pub levels: usize,
+    /// Output size per level, finest first; they round up like the exemplars'.
+    pub sizes: Vec<(usize, usize)>,
+    pub(crate) causal: Shape,
+    pub(crate) full: Shape,
+}
+
+impl Job {
+    /// Checks the parameters and builds the exemplars' pyramids.
+    pub fn new(sources: Sources, params: &Params) -> Result<Job> {
+        let (width, height) = (params.width, params.height);
+        check_output(width, height)?;
+        let (exemplars, mu) = match sources {
+            Sources::One(e) => (vec![e], None),
+            Sources::Blend { a, b, mu } => {
+                if mu.len() != width * height {
+                    return invalid("The coefficient map does not match the output size.");
+                }
+                let quantized = mu.iter().map(|&m| (m.clamp(0.0, 1.0) * MU_ONE).round() as u16).collect();
+                (vec![a, b], Some(quantized))
+            }
+        };
+        let side = params.neighbourhood;
+        if side < 3 || side % 2 == 0 || side > 15 {
+            return invalid(format!("The neighbourhood size must be odd, from 3 to 15 (got {side})."));
+        }
+        for (i, e) in exemplars.iter().enumerate() {
+            check_size(e.width, e.height, "exemplar")?;
+            if e.width < side || e.height < side {
+                return invalid(format!(
+                    "Exemplar {} is {}x{}, smaller than the {side}x{side} neighbourhood.",
+                    i + 1,
+                    e.width,
+                    e.height
+                ));
+            }
+        }
+        let levels = match params.levels {
+            Some(l) if l == 0 || l > 8 => return invalid("Levels must be from 1 to 8."),
+            Some(l) => l,
+            None => default_levels(&exemplars, width, height, side),
+        };
+        if params.exhaustive {
+            let positions: f64 = exemplars.iter().map(|e| (e.width * e.height) as f64).sum();
+            // In 5 x 5 neighbourhoods: a larger one costs proportionally more.
+            let comparisons = (width * height) as f64 * positions * 4.0 / 3.0 * (side * side) as f64 / 25.0;
+            if comparisons > EXHAUSTIVE_BUDGET {
+                return Err(Error::TooLarge(format!(
+                    "Exhaustive search would compare {comparisons:.1e} neighbourhoods (the limit is {EXHAUSTIVE_BUDGET:.0e}, \
+                     minutes of work); use the default search, or smaller images."
+                )));
+            }
+        }
+        let half = (side / 2) as isize;
+        Ok(Job {
+            mix: Mixer {
+                exs: exemplars.iter().map(|e| Exemplar { levels: pyramid::build(e, levels, Edge::Clamp) }).collect(),
+                mu,
+                width,
+                height,
+            },
+            params: params.clone(),
+            levels,
+            sizes: (0..levels).map(|l| (width.div_ceil(1 << l), height.div_ceil(1 << l))).collect(),
+            causal: Shape::causal(half),
+            full: Shape::full(half),
+        })
+    }
+
+    /// The parameters it was made with.
+    pub fn params(&self) -> &Params {
+        &self.params
+    }
+
+    /// Number of exemplars (one, or two when blending).
+    pub fn exemplars(&self) -> usize {
+        self.mix.exs.len()
+    }
+
+    /// Pixel count of `level`'s source maps, per exemplar.
+    pub fn level_pixels(&self, level: usize) -> usize {
+        self.sizes[level].0 * self.sizes[level].1
+    }
+
+    /// Width and height of exemplar `e` at `level`.
+    pub(crate) fn exemplar_size(&self, e: usize, level: usize) -> (usize, usize) {
+        let img = &self.mix.exs[e].levels[level];
+        (img.width, img.height)
+    }
+
+    /// Positions in exemplar `e` at `level`.
+    pub(crate) fn positions(&self, e: usize, level: usize) -> usize {
+        self.mix.exs[e].levels[level].data.len()
+    }
+
+    /// One pass over `level`, whose parent level's sources are `parent_src` (empty at the
+    /// coarsest level).
+    pub(crate) fn pass<'a>(&'a self, level: usize, parent_src: &'a [Vec<u32>]) -> Pass<'a> {
+        let (lw, lh) = self.sizes[level];
+        let exs = &self.mix.exs;
+        let with_parent = level + 1 < self.levels;
+        let side = self.params.neighbourhood;
+        let offsets = exs
+            .iter()
+            .map(|ex| {
+                let pw = if with_parent { ex.levels[level + 1].width } else { 1 };
+                (offsets(&self.causal, ex.levels[level].width, pw), offsets(&self.full, ex.levels[level].width, pw))
+            })
+            .collect();
+        Pass {
+            mix: &self.mix,
+            level,
+            lw,
+            lh,
+            parent_size: self.sizes.get(level + 1).copied().unwrap_or((1, 1)),
+            with_parent,
+            // The coarsest level is searched exhaustively when that is cheap (a few
+            // hundred exemplar positions); a thin exemplar has only one level, at full
+            // size, where exhaustive search would take minutes: coherent search there.
+            exhaustive: self.params.exhaustive
+                || (level + 1 == self.levels
+                    && (lw * lh)
+                        .saturating_mul(exs.iter().map(|e| e.levels[level].data.len()).sum())
+                        .saturating_mul(side * side)
+                        <= COARSE_EXHAUSTIVE_BUDGET),
+            random: self.params.random_candidates,
+            parent_src,
+            offsets,
+        }
+    }
+
+    /// The output image from the finest level's sources.
+    pub fn colours(&self, src: &[Vec<u32>]) -> Rgba {
+        let (width, height) = (self.params.width, self.params.height);
+        let mut data = Vec::with_capacity(width * height * 4);
+        for y in 0..height {
+            for x in 0..width {
+                let c = self.mix.colour(0, src, y * width + x, x, y);
+                data.extend(c.iter().map(|&v| v.round().clamp(0.0, 255.0) as u8));
+                data.push(255);
+            }
+        }
+        Rgba { width, height, data }
+    }
+}
+
+/// Synthesizes the job's image, each level in scanline order
+/// (the paper's schedule, one thread). `bands::synthesize` is the schedule that several
+/// workers can share.
 ///
 /// Memory: the output is never stored as colours. Each level keeps, per exemplar and
 /// pixel, the exemplar position it copies (4 bytes), and a pixel's colour is read through
 /// it (mixed by mu when blending). With the parent level's map and mu in 16 bits, that
 /// is at most 5 bytes per output pixel for one exemplar and 12 for two, plus the RGBA
 /// result (4) at the end, when the parent's map is gone.
-pub fn synthesize(sources: Sources, params: &Params, progress: &mut Throttle) -> Result<Rgba> {
-    let (width, height) = (params.width, params.height);
-    check_output(width, height)?;
-    let (exemplars, mu) = match sources {
-        Sources::One(e) => (vec![e], None),
-        Sources::Blend { a, b, mu } => {
-            if mu.len() != width * height {
-                return invalid("The coefficient map does not match the output size.");
-            }
-            let quantized = mu.iter().map(|&m| (m.clamp(0.0, 1.0) * MU_ONE).round() as u16).collect();
-            (vec![a, b], Some(quantized))
-        }
-    };
-    let side = params.neighbourhood;
-    if side < 3 || side % 2 == 0 || side > 15 {
-        return invalid(format!("The neighbourhood size must be odd, from 3 to 15 (got {side})."));
-    }
-    for (i, e) in exemplars.iter().enumerate() {
-        check_size(e.width, e.height, "exemplar")?;
-        if e.width < side || e.height < side {
-            return invalid(format!(
-                "Exemplar {} is {}x{}, smaller than the {side}x{side} neighbourhood.",
-                i + 1,
-                e.width,
-                e.height
-            ));
-        }
-    }
-    let levels = match params.levels {
-        Some(l) if l == 0 || l > 8 => return invalid("Levels must be from 1 to 8."),
-        Some(l) => l,
-        None => default_levels(&exemplars, width, height, side),
-    };
-    if params.exhaustive {
-        let positions: f64 = exemplars.iter().map(|e| (e.width * e.height) as f64).sum();
-        // In 5 x 5 neighbourhoods: a larger one costs proportionally more.
-        let comparisons = (width * height) as f64 * positions * 4.0 / 3.0 * (side * side) as f64 / 25.0;
-        if comparisons > EXHAUSTIVE_BUDGET {
-            return Err(Error::TooLarge(format!(
-                "Exhaustive search would compare {comparisons:.1e} neighbourhoods (the limit is {EXHAUSTIVE_BUDGET:.0e}, \
-                 minutes of work); use the default search, or smaller images."
-            )));
-        }
-    }
-    let half = (side / 2) as isize;
-    let causal = Shape::causal(half);
-    let full = Shape::full(half);
-    let mix = Mixer {
-        exs: exemplars.iter().map(|e| Exemplar { levels: pyramid::build(e, levels, Edge::Clamp) }).collect(),
-        mu,
-        width,
-        height,
-    };
-    let exs = &mix.exs;
+pub fn synthesize(job: &Job, progress: &mut Throttle) -> Result<Rgba> {
+    let params = &job.params;
     let mut rng = Rng::new(params.seed);
-
-    // Output sizes per level, finest first; they round up like the exemplars'.
-    let sizes: Vec<(usize, usize)> = (0..levels).map(|l| (width.div_ceil(1 << l), height.div_ceil(1 << l))).collect();
-    let total: usize = sizes.iter().map(|(w, h)| w * h).sum::<usize>() * (1 + params.corrections);
+    let total: usize = job.sizes.iter().map(|(w, h)| w * h).sum::<usize>() * (1 + params.corrections);
     let mut done = 0usize;
     // Source positions per exemplar at the current level and at its parent.
     let mut parent_src: Vec<Vec<u32>> = Vec::new();
 
-    for level in (0..levels).rev() {
-        let (lw, lh) = sizes[level];
+    for level in (0..job.levels).rev() {
+        let (lw, lh) = job.sizes[level];
         // Noise: every pixel copies a random position of each exemplar.
-        let mut src: Vec<Vec<u32>> = exs
-            .iter()
-            .map(|ex| {
-                let n = ex.levels[level].data.len();
+        let src = (0..job.exemplars())
+            .map(|e| {
+                let n = job.positions(e, level);
                 (0..lw * lh).map(|_| rng.below(n) as u32).collect()
             })
             .collect();
-        let with_parent = level + 1 < levels;
-        let pass = Pass {
-            mix: &mix,
-            level,
-            lw,
-            lh,
-            parent_size: sizes.get(level + 1).copied().unwrap_or((1, 1)),
-            with_parent,
-            // The coarsest level is searched exhaustively when that is cheap (a few
-            // hundred exemplar positions); a thin exemplar has only one level, at full
-            // size, where exhaustive search would take minutes: coherent search there.
-            exhaustive: params.exhaustive
-                || (level + 1 == levels
-                    && (lw * lh)
-                        .saturating_mul(exs.iter().map(|e| e.levels[level].data.len()).sum())
-                        .saturating_mul(side * side)
-                        <= COARSE_EXHAUSTIVE_BUDGET),
-            random: params.random_candidates,
-            parent_src: &parent_src,
-        };
-        let offs: Vec<(Offsets, Offsets)> = exs
-            .iter()
-            .map(|ex| {
-                let pw = if with_parent { ex.levels[level + 1].width } else { 1 };
-                (offsets(&causal, ex.levels[level].width, pw), offsets(&full, ex.levels[level].width, pw))
-            })
-            .collect();
-        let mut scratch = Scratch {
-            f: Vec::with_capacity(full.dim(true)),
-            own: Vec::with_capacity(full.dim(true)),
-            cands: Vec::with_capacity(64),
-        };
+        let mut map = Map::whole(src, lw, lh);
+        let pass = job.pass(level, &parent_src);
+        let mut scratch = Scratch::new(&job.full);
         // One causal pass, then the correction passes with full neighbourhoods, the first
         // in reverse scanline order: structure then also spreads up and left, from the
         // pixels the causal pass made last (6 seeds: mean energy 8.29 -> 8.12).
-        let passes =
-            std::iter::once((&causal, false, false)).chain((0..params.corrections).map(|i| (&full, true, i % 2 == 0)));
+        let passes = std::iter::once((&job.causal, false, false))
+            .chain((0..params.corrections).map(|i| (&job.full, true, i % 2 == 0)));
         for (shape, use_full, reverse) in passes {
             for row in 0..lh {
                 let y = if reverse { lh - 1 - row } else { row };
                 for col in 0..lw {
                     let x = if reverse { lw - 1 - col } else { col };
-                    pass.pixel(&mut src, shape, &offs, use_full, x, y, &mut rng, &mut scratch);
+                    pass.pixel(&mut map, shape, use_full, x, y, &mut rng, &mut scratch);
                 }
                 done += lw;
                 progress.tick(done as f64 / total as f64)?;
@@ -306,34 +405,60 @@ pub fn synthesize(sources: Sources, params: &Params, progress: &mut Throttle) ->
         if params.tileable && params.corrections == 0 {
             // The first rows and columns were made against noise across the wrap: redo
             // them with full neighbourhoods now that everything around them is set.
-            let band = (2 * half as usize).min(lh).min(lw);
+            let band = (2 * job.causal.half as usize).min(lh).min(lw);
             for y in 0..lh {
                 for x in 0..lw {
                     if y < band || x < band || y + band / 2 >= lh || x + band / 2 >= lw {
-                        pass.pixel(&mut src, &full, &offs, true, x, y, &mut rng, &mut scratch);
+                        pass.pixel(&mut map, &job.full, true, x, y, &mut rng, &mut scratch);
                     }
                 }
             }
         }
-        parent_src = src;
+        parent_src = map.src;
     }
     // The finest level's sources are `parent_src` now.
     progress.tick(1.0)?;
-    let mut data = Vec::with_capacity(width * height * 4);
-    for y in 0..height {
-        for x in 0..width {
-            data.extend(mix.colour(0, &parent_src, width, x, y).iter().map(|&v| v.round().clamp(0.0, 255.0) as u8));
-            data.push(255);
-        }
+    Ok(job.colours(&parent_src))
+}
+
+/// Source positions of one level's pixels, per exemplar, over rows `first .. first +
+/// rows` (mod the level's height) of the torus: the whole level, or a band of it with
+/// the rows around it that its neighbourhoods read (see `bands`).
+pub(crate) struct Map {
+    pub src: Vec<Vec<u32>>,
+    first: usize,
+    rows: usize,
+    lw: usize,
+    lh: usize,
+}
+
+impl Map {
+    /// The whole level.
+    pub fn whole(src: Vec<Vec<u32>>, lw: usize, lh: usize) -> Map {
+        Map { src, first: 0, rows: lh, lw, lh }
     }
-    Ok(Rgba { width, height, data })
+
+    /// Rows `first .. first + rows` (mod `lh`) of a level `lw` wide and `lh` high.
+    pub fn rows(src: Vec<Vec<u32>>, first: usize, rows: usize, lw: usize, lh: usize) -> Map {
+        debug_assert!(rows <= lh && src.iter().all(|s| s.len() == rows * lw));
+        Map { src, first, rows, lw, lh }
+    }
+
+    /// Index of pixel (x, y) of the torus, which must lie in the map's rows.
+    #[inline]
+    fn at(&self, x: isize, y: isize) -> usize {
+        let (w, h) = (self.lw as isize, self.lh as isize);
+        let row = (y - self.first as isize).rem_euclid(h) as usize;
+        debug_assert!(row < self.rows, "row {y} outside the map's rows");
+        row * self.lw + x.rem_euclid(w) as usize
+    }
 }
 
 /// mu = 1 in the 16-bit map.
 const MU_ONE: f32 = 65535.0;
 
 /// The exemplars and how they mix: output colours are read through source maps.
-struct Mixer {
+pub(crate) struct Mixer {
     exs: Vec<Exemplar>,
     /// The weight of exemplar 0 per output pixel, 65535 = 1 (None: one exemplar).
     mu: Option<Vec<u16>>,
@@ -361,11 +486,10 @@ impl Mixer {
         }
     }
 
-    /// The output colour at (x, y) of `level` (`w` pixels wide), whose source maps are
+    /// The output colour of pixel (x, y) of `level`, at index `i` of the source maps
     /// `src`: the sources' colours mixed by weight.
     #[inline]
-    fn colour(&self, level: usize, src: &[Vec<u32>], w: usize, x: usize, y: usize) -> [f32; 3] {
-        let i = y * w + x;
+    fn colour(&self, level: usize, src: &[Vec<u32>], i: usize, x: usize, y: usize) -> [f32; 3] {
         let read = |e: usize| self.exs[e].levels[level].data[src[e][i] as usize];
         if self.mu.is_none() {
             return read(0);
@@ -382,8 +506,8 @@ impl Mixer {
     }
 }
 
-/// Per-pixel working vectors, allocated once per level.
-struct Scratch {
+/// Per-pixel working vectors, allocated once per pass.
+pub(crate) struct Scratch {
     /// The output's neighbourhood feature.
     f: Vec<f32>,
     /// One exemplar's own-choices feature (partial weights).
@@ -392,7 +516,18 @@ struct Scratch {
     cands: Vec<(u32, u16)>,
 }
 
-struct Pass<'a> {
+impl Scratch {
+    pub fn new(full: &Shape) -> Scratch {
+        Scratch {
+            f: Vec::with_capacity(full.dim(true)),
+            own: Vec::with_capacity(full.dim(true)),
+            cands: Vec::with_capacity(64),
+        }
+    }
+}
+
+/// One pass over one level: what every pixel's match needs besides the level's map.
+pub(crate) struct Pass<'a> {
     mix: &'a Mixer,
     level: usize,
     /// This level's size and the parent level's.
@@ -403,39 +538,36 @@ struct Pass<'a> {
     exhaustive: bool,
     random: usize,
     parent_src: &'a [Vec<u32>],
+    /// Index deltas per exemplar, for the causal shape and the full one.
+    offsets: Vec<(Offsets, Offsets)>,
 }
 
 impl Pass<'_> {
     /// The output's feature at (x, y): own level read on the torus, parent level too.
-    fn feature(&self, src: &[Vec<u32>], x: usize, y: usize, shape: &Shape, f: &mut Vec<f32>) {
+    fn feature(&self, map: &Map, x: usize, y: usize, shape: &Shape, f: &mut Vec<f32>) {
         f.clear();
         let (lw, lh) = (self.lw as isize, self.lh as isize);
         for &(dx, dy) in &shape.own {
-            let (nx, ny) = ((x as isize + dx).rem_euclid(lw), (y as isize + dy).rem_euclid(lh));
-            f.extend_from_slice(&self.mix.colour(self.level, src, self.lw, nx as usize, ny as usize));
+            let (nx, ny) = (x as isize + dx, y as isize + dy);
+            let (gx, gy) = (nx.rem_euclid(lw) as usize, ny.rem_euclid(lh) as usize);
+            f.extend_from_slice(&self.mix.colour(self.level, &map.src, map.at(nx, ny), gx, gy));
         }
         if self.with_parent {
             let (pw, ph) = (self.parent_size.0 as isize, self.parent_size.1 as isize);
             for &(dx, dy) in &shape.parent {
                 let (nx, ny) = (((x / 2) as isize + dx).rem_euclid(pw), ((y / 2) as isize + dy).rem_euclid(ph));
-                f.extend_from_slice(&self.mix.colour(
-                    self.level + 1,
-                    self.parent_src,
-                    self.parent_size.0,
-                    nx as usize,
-                    ny as usize,
-                ));
+                let i = (ny * pw + nx) as usize;
+                f.extend_from_slice(&self.mix.colour(self.level + 1, self.parent_src, i, nx as usize, ny as usize));
             }
         }
     }
 
     /// Synthesizes output pixel (x, y) at this level: sets its source in every exemplar.
     #[allow(clippy::too_many_arguments)]
-    fn pixel(
+    pub fn pixel(
         &self,
-        src: &mut [Vec<u32>],
+        map: &mut Map,
         shape: &Shape,
-        offs: &[(Offsets, Offsets)],
         use_full: bool,
         x: usize,
         y: usize,
@@ -444,11 +576,11 @@ impl Pass<'_> {
     ) {
         let level = self.level;
         let Scratch { f, own, cands } = scratch;
-        self.feature(src, x, y, shape, f);
+        self.feature(map, x, y, shape, f);
         for (e, ex) in self.mix.exs.iter().enumerate() {
             let weight = self.mix.weight(e, level, x, y);
             let img = &ex.levels[level];
-            let off = if use_full { &offs[e].1 } else { &offs[e].0 };
+            let off = if use_full { &self.offsets[e].1 } else { &self.offsets[e].0 };
             // Where an exemplar has a partial weight, it is matched against the mixed
             // neighbourhood only in proportion to that weight; the rest is its own
             // choices around the pixel. At weight 1 this is the paper's rule; as the
@@ -457,7 +589,7 @@ impl Pass<'_> {
             // weight 0 it is synthesized against its own choices alone, so that where it
             // fades in it is already a texture of its own, not one long verbatim copy.
             let f: &[f32] = if weight < 1.0 {
-                self.own_feature(src, e, shape, x, y, own);
+                self.own_feature(map, e, shape, x, y, own);
                 for (o, m) in own.iter_mut().zip(f.iter()) {
                     *o = weight * m + (1.0 - weight) * *o;
                 }
@@ -475,7 +607,7 @@ impl Pass<'_> {
                 }
                 best.1
             } else {
-                self.coherent_candidates(src, e, shape, x, y, img, rng, cands);
+                self.coherent_candidates(map, e, shape, x, y, img, rng, cands);
                 let n = shape.own.len() as f32;
                 let mut best = (f32::INFINITY, cands[0].0);
                 for &(pos, votes) in cands.iter() {
@@ -487,21 +619,20 @@ impl Pass<'_> {
                 }
                 best.1
             };
-            src[e][y * self.lw + x] = best;
+            let i = map.at(x as isize, y as isize);
+            map.src[e][i] = best;
         }
     }
 
     /// The neighbourhood of exemplar `e`'s own choices around (x, y): each neighbour's
     /// source colour, at this level and the parent's.
-    #[allow(clippy::too_many_arguments)]
-    fn own_feature(&self, src: &[Vec<u32>], e: usize, shape: &Shape, x: usize, y: usize, v: &mut Vec<f32>) {
-        let (lw, lh) = (self.lw, self.lh);
+    fn own_feature(&self, map: &Map, e: usize, shape: &Shape, x: usize, y: usize, v: &mut Vec<f32>) {
         v.clear();
         let ex = &self.mix.exs[e];
         let img = &ex.levels[self.level];
         for &(dx, dy) in &shape.own {
-            let n = torus_index(x as isize + dx, y as isize + dy, lw, lh);
-            v.extend_from_slice(&img.data[src[e][n] as usize]);
+            let n = map.at(x as isize + dx, y as isize + dy);
+            v.extend_from_slice(&img.data[map.src[e][n] as usize]);
         }
         if self.with_parent {
             let parent = &ex.levels[self.level + 1];
@@ -519,7 +650,7 @@ impl Pass<'_> {
     #[allow(clippy::too_many_arguments)]
     fn coherent_candidates(
         &self,
-        src: &[Vec<u32>],
+        map: &Map,
         e: usize,
         shape: &Shape,
         x: usize,
@@ -528,7 +659,6 @@ impl Pass<'_> {
         rng: &mut Rng,
         cands: &mut Vec<(u32, u16)>,
     ) {
-        let (lw, lh) = (self.lw, self.lh);
         cands.clear();
         let (ew, eh) = (img.width as isize, img.height as isize);
         let push = |c: u32, cands: &mut Vec<(u32, u16)>| match cands.iter_mut().find(|(q, _)| *q == c) {
@@ -536,7 +666,7 @@ impl Pass<'_> {
             None => cands.push((c, 1)),
         };
         for &(dx, dy) in &shape.own {
-            let s = src[e][torus_index(x as isize + dx, y as isize + dy, lw, lh)] as isize;
+            let s = map.src[e][map.at(x as isize + dx, y as isize + dy)] as isize;
             let (sx, sy) = (s % ew - dx, s / ew - dy);
             if sx >= 0 && sx < ew && sy >= 0 && sy < eh {
                 push((sy * ew + sx) as u32, cands);

@@ -1,9 +1,10 @@
 //! The texture engines' entry points: `synthesize_texture` (one exemplar, "more of this
 //! texture") and `blend_textures` (two exemplars mixed by a generation coefficient).
 
+use super::bands;
 use super::coefficient::{self, Transfer};
 use super::image::{Image, Rgba};
-use super::synthesis::{synthesize, Params, Sources};
+use super::synthesis::{self, Job, Params, Schedule, Sources};
 use crate::error::{invalid, Result};
 use crate::progress::{Progress, Throttle};
 use serde::Deserialize;
@@ -19,6 +20,7 @@ pub struct TextureOptions {
     pub exhaustive: bool,
     pub levels: Option<usize>,
     pub neighbourhood: usize,
+    pub schedule: Schedule,
 }
 
 impl Default for TextureOptions {
@@ -32,6 +34,7 @@ impl Default for TextureOptions {
             exhaustive: false,
             levels: None,
             neighbourhood: p.neighbourhood,
+            schedule: p.schedule,
         }
     }
 }
@@ -72,6 +75,7 @@ impl TextureOptions {
             neighbourhood: self.neighbourhood,
             exhaustive: self.exhaustive,
             tileable: self.tileable,
+            schedule: self.schedule,
             ..Params::default()
         }
     }
@@ -79,7 +83,21 @@ impl TextureOptions {
 
 /// More of one texture: a `width x height` image that looks like `exemplar`.
 pub fn synthesize_texture(exemplar: &Image, opts: &TextureOptions, progress: &mut dyn Progress) -> Result<Rgba> {
-    synthesize(Sources::One(exemplar), &opts.params(), &mut Throttle::new(progress))
+    run(&texture_job(exemplar, opts)?, &mut Throttle::new(progress))
+}
+
+/// `synthesize_texture`'s work, prepared (for running its bands on several workers).
+pub fn texture_job(exemplar: &Image, opts: &TextureOptions) -> Result<Job> {
+    Job::new(Sources::One(exemplar), &opts.params())
+}
+
+/// Runs a job in the schedule its parameters ask for.
+pub fn run(job: &Job, progress: &mut Throttle) -> Result<Rgba> {
+    if job.params.banded() {
+        bands::synthesize(job, progress)
+    } else {
+        synthesis::synthesize(job, progress)
+    }
 }
 
 /// The coefficient map mu (weight of A) for these options.
@@ -96,11 +114,16 @@ pub fn coefficient_map(c: &Coefficient, width: usize, height: usize) -> Result<V
 /// Two exemplars blended: each output pixel takes the best match in A and in B for the
 /// same output neighbourhood and mixes them by mu(x, y) and 1 - mu(x, y).
 pub fn blend_textures(a: &Image, b: &Image, opts: &BlendOptions, progress: &mut dyn Progress) -> Result<Rgba> {
+    run(&blend_job(a, b, opts)?, &mut Throttle::new(progress))
+}
+
+/// `blend_textures`'s work, prepared.
+pub fn blend_job(a: &Image, b: &Image, opts: &BlendOptions) -> Result<Job> {
     let base = &opts.base;
     super::image::check_output(base.width, base.height)?;
     let mu = coefficient_map(&opts.coefficient, base.width, base.height)?;
     if mu.is_empty() {
         return invalid("The output is empty.");
     }
-    synthesize(Sources::Blend { a, b, mu }, &base.params(), &mut Throttle::new(progress))
+    Job::new(Sources::Blend { a, b, mu }, &base.params())
 }

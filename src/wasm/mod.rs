@@ -15,6 +15,8 @@ use serde::de::DeserializeOwned;
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
 
+#[cfg(feature = "texture")]
+mod bands;
 #[cfg(feature = "codec")]
 mod codec;
 #[cfg(any(feature = "texture", feature = "codec"))]

@@ -23,13 +23,18 @@ fn required(opts: &JsValue, call: &str) -> Result<(), JsValue> {
 /// More of one texture ("make more of this texture").
 #[wasm_bindgen(js_name = synthesizeTexture)]
 pub fn synthesize_texture(image: JsValue, opts: JsValue, on_progress: JsValue) -> Result<JsValue, JsValue> {
-    let ex = image_from_js(&image, "image")?;
-    required(&opts, "synthesizeTexture")?;
-    let opts: raster::TextureOptions = from_js(opts, "texture options")?;
+    let (ex, opts) = texture_args(image, opts)?;
     let mut progress = JsProgress::from_js(on_progress)?;
     let res = raster::synthesize_texture(&ex, &opts, &mut progress);
     let out = progress.finish(res)?;
     Ok(rgba_to_js(out.width, out.height, &out.data))
+}
+
+/// `synthesizeTexture`'s arguments read.
+pub(super) fn texture_args(image: JsValue, opts: JsValue) -> Result<(Image, raster::TextureOptions), JsValue> {
+    let ex = image_from_js(&image, "image")?;
+    required(&opts, "synthesizeTexture")?;
+    Ok((ex, from_js(opts, "texture options")?))
 }
 
 /// The blend options' own keys beside those of `TextureOptions` (read by hand:
@@ -48,6 +53,19 @@ fn transfer(name: &str) -> Result<Transfer, JsValue> {
 /// Two textures blended by a generation coefficient (A where it is 1, B where it is 0).
 #[wasm_bindgen(js_name = blendTextures)]
 pub fn blend_textures(a: JsValue, b: JsValue, opts: JsValue, on_progress: JsValue) -> Result<JsValue, JsValue> {
+    let (a, b, opts) = blend_args(a, b, opts)?;
+    let mut progress = JsProgress::from_js(on_progress)?;
+    let res = raster::blend_textures(&a, &b, &opts, &mut progress);
+    let out = progress.finish(res)?;
+    Ok(rgba_to_js(out.width, out.height, &out.data))
+}
+
+/// `blendTextures`'s arguments read.
+pub(super) fn blend_args(
+    a: JsValue,
+    b: JsValue,
+    opts: JsValue,
+) -> Result<(Image, Image, raster::BlendOptions), JsValue> {
     let a = image_from_js(&a, "first image (A)")?;
     let b = image_from_js(&b, "second image (B)")?;
     required(&opts, "blendTextures")?;
@@ -83,11 +101,7 @@ pub fn blend_textures(a: JsValue, b: JsValue, opts: JsValue, on_progress: JsValu
     } else {
         return Err(error("coefficient must be 'linear', 'ease', 'steep', 'radial' or a Float32Array."));
     };
-    let opts = raster::BlendOptions { base, coefficient };
-    let mut progress = JsProgress::from_js(on_progress)?;
-    let res = raster::blend_textures(&a, &b, &opts, &mut progress);
-    let out = progress.finish(res)?;
-    Ok(rgba_to_js(out.width, out.height, &out.data))
+    Ok((a, b, raster::BlendOptions { base, coefficient }))
 }
 
 /// A seamless tile (SPEC 3): E-TFMCM, TFMCM or toroidal synthesis.

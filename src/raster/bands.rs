@@ -1,0 +1,189 @@
+//! The banded schedule: Wei-Levoy synthesis in an order that several workers can share
+//! and that gives the same image however many there are.
+//!
+//! Each level starts from its parent's sources upsampled (Lefebvre and Hoppe 2005: the
+//! child (2x + i, 2y + j) of the exemplar position a parent pixel copies), or from noise
+//! at the coarsest level. Then come the same passes as in scanline order (one causal,
+//! then corrections with full neighbourhoods, the first reversed), but each pass cuts
+//! the level into bands of rows. A band is synthesized in scanline order reading its own
+//! rows as they change and the rows around it as they were when the pass began, with a
+//! random stream of its own; so the bands of a pass are independent, and a band's
+//! result depends only on the pass's starting state. Consecutive passes shift the bands
+//! by half a band, so that each band edge of one pass lies in the middle of a band of
+//! the next, which joins the two sides in its scanline order.
+
+use super::image::Rgba;
+use super::synthesis::{Job, Map, Scratch};
+use crate::error::Result;
+use crate::progress::Throttle;
+use crate::rng::Rng;
+
+/// Rows per band (at least; a level shorter than two bands is one band).
+pub const BAND_ROWS: usize = 32;
+
+/// One pass over one level.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Step {
+    pub level: usize,
+    /// 0 is the causal pass, 1.. the corrections.
+    pub pass: usize,
+}
+
+/// A band of a step: rows `first .. first + rows` of the level, modulo its height.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Band {
+    pub first: usize,
+    pub rows: usize,
+}
+
+/// The steps in order: coarse to fine, each level's passes in turn.
+pub fn steps(job: &Job) -> Vec<Step> {
+    let passes = 1 + job.params.corrections.max(1);
+    (0..job.levels).rev().flat_map(|level| (0..passes).map(move |pass| Step { level, pass })).collect()
+}
+
+/// The bands of `step`. Their number depends on the level's size only, not on how many
+/// workers run them.
+pub fn bands(job: &Job, step: Step) -> Vec<Band> {
+    let lh = job.sizes[step.level].1;
+    let n = if lh >= 2 * BAND_ROWS { lh / BAND_ROWS } else { 1 };
+    if n == 1 {
+        return vec![Band { first: 0, rows: lh }];
+    }
+    let shift = if step.pass % 2 == 1 { lh / n / 2 } else { 0 };
+    (0..n)
+        .map(|b| {
+            let (top, bottom) = (b * lh / n, (b + 1) * lh / n);
+            Band { first: (top + shift) % lh, rows: bottom - top }
+        })
+        .collect()
+}
+
+/// A random stream for each (level, pass, band), so a band draws the same numbers
+/// whichever worker runs it and whenever.
+fn stream(seed: u64, level: usize, pass: usize, band: usize) -> Rng {
+    let mut mix = Rng::new(seed ^ ((level as u64) << 48) ^ ((pass as u64) << 40) ^ band as u64);
+    Rng::new(mix.next_u64())
+}
+
+/// The `pass` number of the coarsest level's noise streams.
+const NOISE: usize = 255;
+
+/// The state a level starts from: noise at the coarsest level, otherwise the parent's
+/// sources upsampled (the child position under each pixel, clamped to the exemplar).
+pub fn initial(job: &Job, level: usize, parent: &[Vec<u32>]) -> Vec<Vec<u32>> {
+    let (lw, lh) = job.sizes[level];
+    if level + 1 == job.levels {
+        return (0..job.exemplars())
+            .map(|e| {
+                let mut rng = stream(job.params.seed, level, NOISE, e);
+                let n = job.positions(e, level);
+                (0..lw * lh).map(|_| rng.below(n) as u32).collect()
+            })
+            .collect();
+    }
+    let plw = job.sizes[level + 1].0;
+    (0..job.exemplars())
+        .map(|e| {
+            let (ew, eh) = job.exemplar_size(e, level);
+            let pw = job.exemplar_size(e, level + 1).0;
+            let mut out = Vec::with_capacity(lw * lh);
+            for y in 0..lh {
+                for x in 0..lw {
+                    let s = parent[e][(y / 2) * plw + x / 2] as usize;
+                    let sx = (2 * (s % pw) + x % 2).min(ew - 1);
+                    let sy = (2 * (s / pw) + y % 2).min(eh - 1);
+                    out.push((sy * ew + sx) as u32);
+                }
+            }
+            out
+        })
+        .collect()
+}
+
+/// Runs band `b` of `step` from the step's starting state `start` (the level's whole
+/// maps) and the parent level's sources; returns the band's rows of each map, top row
+/// first. `on_row` is called after each row (for progress; an error stops the band).
+pub fn run(
+    job: &Job,
+    step: Step,
+    start: &[Vec<u32>],
+    parent: &[Vec<u32>],
+    b: usize,
+    on_row: &mut dyn FnMut() -> Result<()>,
+) -> Result<Vec<Vec<u32>>> {
+    let Step { level, pass } = step;
+    let (lw, lh) = job.sizes[level];
+    let band = bands(job, step)[b];
+    // The band and the rows its neighbourhoods reach, as they were at the start.
+    let halo = if band.rows == lh { 0 } else { job.full.half as usize };
+    let first = (band.first + lh - halo) % lh;
+    let rows = band.rows + 2 * halo;
+    let window = start
+        .iter()
+        .map(|s| {
+            let mut w = Vec::with_capacity(rows * lw);
+            for r in 0..rows {
+                let y = (first + r) % lh;
+                w.extend_from_slice(&s[y * lw..(y + 1) * lw]);
+            }
+            w
+        })
+        .collect();
+    let mut map = Map::rows(window, first, rows, lw, lh);
+    let sweep = job.pass(level, parent);
+    let (shape, use_full, reverse) = match pass {
+        0 => (&job.causal, false, false),
+        p => (&job.full, true, p % 2 == 1),
+    };
+    let mut rng = stream(job.params.seed, level, pass, b);
+    let mut scratch = Scratch::new(&job.full);
+    for r in 0..band.rows {
+        let y = (band.first + if reverse { band.rows - 1 - r } else { r }) % lh;
+        for c in 0..lw {
+            let x = if reverse { lw - 1 - c } else { c };
+            sweep.pixel(&mut map, shape, use_full, x, y, &mut rng, &mut scratch);
+        }
+        on_row()?;
+    }
+    Ok(map.src.into_iter().map(|w| w[halo * lw..(halo + band.rows) * lw].to_vec()).collect())
+}
+
+/// Writes a band's rows (as `run` returns them) into a level's maps.
+pub fn store(job: &Job, step: Step, b: usize, rows: &[Vec<u32>], into: &mut [Vec<u32>]) {
+    let (lw, lh) = job.sizes[step.level];
+    let band = bands(job, step)[b];
+    for (src, dst) in rows.iter().zip(into.iter_mut()) {
+        for r in 0..band.rows {
+            let y = (band.first + r) % lh;
+            dst[y * lw..(y + 1) * lw].copy_from_slice(&src[r * lw..(r + 1) * lw]);
+        }
+    }
+}
+
+/// The banded schedule run in this thread: the same image as any number of workers
+/// running the bands of each step (see `tests/texture.rs`).
+pub fn synthesize(job: &Job, progress: &mut Throttle) -> Result<Rgba> {
+    let steps = steps(job);
+    let total: usize = steps.iter().map(|s| job.sizes[s.level].1).sum();
+    let mut done = 0usize;
+    let mut parent: Vec<Vec<u32>> = Vec::new();
+    let mut state: Vec<Vec<u32>> = Vec::new();
+    for &step in &steps {
+        if step.pass == 0 {
+            parent = std::mem::take(&mut state);
+            state = initial(job, step.level, &parent);
+        }
+        let mut next = state.clone();
+        for b in 0..bands(job, step).len() {
+            let rows = run(job, step, &state, &parent, b, &mut || {
+                done += 1;
+                progress.tick(done as f64 / total as f64)
+            })?;
+            store(job, step, b, &rows, &mut next);
+        }
+        state = next;
+    }
+    progress.tick(1.0)?;
+    Ok(job.colours(&state))
+}

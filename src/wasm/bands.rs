@@ -1,0 +1,174 @@
+//! The worker protocol of banded texture synthesis (`js/pkg/bands.js` drives it): each
+//! worker opens the same job, runs the bands it is given of each step from the step's
+//! starting state, and one of them turns the last state into the image. Jobs live in
+//! this instance between calls, under a handle.
+
+use super::rgba::rgba_to_js;
+use super::texture::{blend_args, texture_args};
+use super::{error, js_error, JsProgress};
+use crate::progress::Throttle;
+use crate::raster::{self, bands, synthesis::Job};
+use std::cell::RefCell;
+use std::collections::BTreeMap;
+use wasm_bindgen::prelude::*;
+
+/// An open job and the parent level's sources of the level it is at.
+struct Open {
+    job: Job,
+    parent: Vec<Vec<u32>>,
+}
+
+thread_local! {
+    static OPEN: RefCell<(u32, BTreeMap<u32, Open>)> = const { RefCell::new((0, BTreeMap::new())) };
+}
+
+fn with<T>(handle: u32, f: impl FnOnce(&mut Open) -> Result<T, JsValue>) -> Result<T, JsValue> {
+    OPEN.with_borrow_mut(|(_, jobs)| match jobs.get_mut(&handle) {
+        Some(open) => f(open),
+        None => Err(error(&format!(
+            "No open texture job {handle} in this worker (it was closed, or the engine restarted)."
+        ))),
+    })
+}
+
+/// Prepares `method(...args)` (`synthesizeTexture` or `blendTextures`) for banded runs:
+/// `{ handle, exemplars, steps: [{ level, pass, width, height, bands: [[first, rows]...] }] }`,
+/// or `null` when the call runs in scanline order (small outputs), in one call.
+#[wasm_bindgen(js_name = bandsOpen)]
+pub fn bands_open(method: &str, args: js_sys::Array) -> Result<JsValue, JsValue> {
+    let job = match method {
+        "synthesizeTexture" => {
+            let (ex, opts) = texture_args(args.get(0), args.get(1))?;
+            raster::texture_job(&ex, &opts)
+        }
+        "blendTextures" => {
+            let (a, b, opts) = blend_args(args.get(0), args.get(1), args.get(2))?;
+            raster::blend_job(&a, &b, &opts)
+        }
+        other => return Err(error(&format!("{other} has no banded schedule."))),
+    }
+    .map_err(js_error)?;
+    if !job.params.banded() {
+        return Ok(JsValue::NULL);
+    }
+    let steps = js_sys::Array::new();
+    for step in bands::steps(&job) {
+        let (width, height) = job.sizes[step.level];
+        let list = js_sys::Array::new();
+        for b in bands::bands(&job, step) {
+            list.push(&js_sys::Array::of2(&(b.first as u32).into(), &(b.rows as u32).into()));
+        }
+        let o = js_sys::Object::new();
+        for (k, v) in [
+            ("level", step.level.into()),
+            ("pass", step.pass.into()),
+            ("width", width.into()),
+            ("height", height.into()),
+            ("bands", list.into()),
+        ] {
+            js_sys::Reflect::set(&o, &k.into(), &v)?;
+        }
+        steps.push(&o);
+    }
+    let exemplars = job.exemplars();
+    let handle = OPEN.with_borrow_mut(|(next, jobs)| {
+        *next += 1;
+        jobs.insert(*next, Open { job, parent: Vec::new() });
+        *next
+    });
+    let out = js_sys::Object::new();
+    js_sys::Reflect::set(&out, &"handle".into(), &handle.into())?;
+    js_sys::Reflect::set(&out, &"exemplars".into(), &exemplars.into())?;
+    js_sys::Reflect::set(&out, &"steps".into(), &steps)?;
+    Ok(out.into())
+}
+
+/// Splits one array holding each exemplar's map of a level in turn.
+fn maps(all: &js_sys::Uint32Array, exemplars: usize, pixels: usize, what: &str) -> Result<Vec<Vec<u32>>, JsValue> {
+    if all.length() as usize != exemplars * pixels {
+        return Err(error(&format!(
+            "The {what} holds {} values; {exemplars} maps of {pixels} were expected.",
+            all.length()
+        )));
+    }
+    let v = all.to_vec();
+    Ok(v.chunks(pixels).map(<[u32]>::to_vec).collect())
+}
+
+/// Runs bands `from..to` of step `step` (an index into `steps`). `state`: the level's
+/// maps at the start of the step, or `undefined` for the level's first pass (it starts
+/// from the parent upsampled); `parent`: the parent level's maps, given at the level's
+/// first pass (kept for the others). Returns the bands' rows, band after band, each
+/// exemplar's rows in turn.
+#[wasm_bindgen(js_name = bandsRun)]
+pub fn bands_run(
+    handle: u32,
+    step: usize,
+    state: Option<js_sys::Uint32Array>,
+    parent: Option<js_sys::Uint32Array>,
+    from: usize,
+    to: usize,
+    on_progress: JsValue,
+) -> Result<js_sys::Uint32Array, JsValue> {
+    let mut progress = JsProgress::from_js(on_progress)?;
+    with(handle, |open| {
+        let job = &open.job;
+        let steps = bands::steps(job);
+        let &s = steps.get(step).ok_or_else(|| error(&format!("There is no step {step}.")))?;
+        let list = bands::bands(job, s);
+        if from > to || to > list.len() {
+            return Err(error(&format!("Bands {from}..{to} are not among the step's {}.", list.len())));
+        }
+        let n = job.exemplars();
+        if let Some(p) = parent {
+            if s.level + 1 < job.levels {
+                open.parent = maps(&p, n, job.level_pixels(s.level + 1), "parent")?;
+            }
+        }
+        let start = match state {
+            Some(st) => maps(&st, n, job.level_pixels(s.level), "state")?,
+            None if s.pass == 0 => bands::initial(job, s.level, &open.parent),
+            None => return Err(error("Only a level's first pass starts without a state.")),
+        };
+        let total: usize = list[from..to].iter().map(|b| b.rows).sum();
+        let mut done = 0usize;
+        let mut throttle = Throttle::new(&mut progress);
+        let mut out = Vec::with_capacity(n * total * job.sizes[s.level].0);
+        let mut result = Ok(());
+        for b in from..to {
+            let rows = bands::run(job, s, &start, &open.parent, b, &mut || {
+                done += 1;
+                throttle.tick(done as f64 / total.max(1) as f64)
+            });
+            match rows {
+                Ok(rows) => rows.iter().for_each(|r| out.extend_from_slice(r)),
+                Err(e) => {
+                    result = Err(e);
+                    break;
+                }
+            }
+        }
+        Ok((result, out))
+    })
+    .and_then(|(result, out)| {
+        progress.finish(result)?;
+        Ok(js_sys::Uint32Array::from(&out[..]))
+    })
+}
+
+/// The image from the last step's maps (as `bandsRun` takes a state).
+#[wasm_bindgen(js_name = bandsFinish)]
+pub fn bands_finish(handle: u32, state: js_sys::Uint32Array) -> Result<JsValue, JsValue> {
+    with(handle, |open| {
+        let job = &open.job;
+        let src = maps(&state, job.exemplars(), job.level_pixels(0), "state")?;
+        let out = job.colours(&src);
+        Ok(rgba_to_js(out.width, out.height, &out.data))
+    })
+}
+
+/// Frees a job (closing an unknown handle does nothing).
+#[wasm_bindgen(js_name = bandsClose)]
+pub fn bands_close(handle: u32) {
+    OPEN.with_borrow_mut(|(_, jobs)| jobs.remove(&handle));
+}
