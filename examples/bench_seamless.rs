@@ -1,8 +1,10 @@
-//! Seamless tiles of the four photographs by each method: time (median of 3), the
+//! Seamless tiles of every fixture photograph (`support::textures::ALL`) by each method: time (median of 3), the
 //! paper's restoration rate, the seam score and E-TFMCM's decisions, as JSON lines;
 //! each tile also saved repeated 2 x 2 in out/seamless/ to look at the seams.
 //! `cargo run --release --example bench_seamless [size]`
-use patternsynth::raster::codec::{decode_image, encode_png};
+#[path = "support/textures.rs"]
+mod textures;
+use patternsynth::raster::codec::encode_png;
 use patternsynth::seamless::{seamless_tile, Method, SeamlessOptions};
 use patternsynth::Silent;
 use std::time::Instant;
@@ -10,8 +12,8 @@ use std::time::Instant;
 fn main() {
     let size: Option<usize> = std::env::args().nth(1).and_then(|s| s.parse().ok());
     std::fs::create_dir_all("out/seamless").unwrap();
-    for name in ["wood", "brick", "grass", "gravel"] {
-        let img = decode_image(&std::fs::read(format!("tests/fixtures/textures/{name}.png")).unwrap()).unwrap();
+    for name in textures::ALL {
+        let img = textures::rgba(name);
         for method in [Method::Etfmcm, Method::Tfmcm, Method::Synthesis] {
             let opts = SeamlessOptions { method, size, seed: 1, ..Default::default() };
             let mut times = Vec::new();

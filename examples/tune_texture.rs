@@ -3,6 +3,8 @@
 //! (`BLEND=1`: the blends' band energies and repetition in the middle band instead).
 //! Each photograph's figure is `energy / repetition (exemplar's own repetition)`:
 //! repetition at shifts of 48 pixels or more (`energy::repetition`).
+#[path = "support/textures.rs"]
+mod textures;
 use patternsynth::raster::codec::{decode_image, encode_png};
 use patternsynth::raster::energy::{patch_energy, repetition};
 use patternsynth::raster::synthesis::Schedule;
@@ -10,15 +12,10 @@ use patternsynth::raster::{blend_textures, synthesize_texture, BlendOptions, Ima
 use patternsynth::Silent;
 use std::time::Instant;
 
-fn load(name: &str) -> Image {
-    let d = decode_image(&std::fs::read(format!("tests/fixtures/textures/{name}.png")).unwrap()).unwrap();
-    Image::from_rgba8(d.width, d.height, &d.data).unwrap()
-}
-
 /// Band energies of the blends (top vs A, bottom vs B, middle vs both) and their times.
 fn blends(seeds: u64, side: usize) {
     for (a, b) in [("wood", "gravel"), ("brick", "grass")] {
-        let (ea, eb) = (load(a), load(b));
+        let (ea, eb) = (textures::load(a), textures::load(b));
         let band = side / 6;
         let mut sums = [0.0; 5];
         let mut times = Vec::new();
@@ -59,9 +56,9 @@ fn main() {
     }
     let mut all = 0.0;
     let mut times = Vec::new();
-    for name in ["wood", "brick", "grass", "gravel"] {
-        let d = decode_image(&std::fs::read(format!("tests/fixtures/textures/{name}.png")).unwrap()).unwrap();
-        let ex = Image::from_rgba8(d.width, d.height, &d.data).unwrap();
+    let names: Vec<&str> = if std::env::var("ALL").is_ok() { textures::ALL.to_vec() } else { textures::TUNED.to_vec() };
+    for &name in &names {
+        let ex = textures::load(name);
         let mut sum = 0.0;
         let mut rep = 0.0;
         for seed in 1..=seeds {
@@ -99,5 +96,5 @@ fn main() {
         all += sum / seeds as f64;
     }
     times.sort_by(|a, b| a.total_cmp(b));
-    println!("| mean {:.2} | median {:.0} ms", all / 4.0, times[times.len() / 2]);
+    println!("| mean {:.2} | median {:.0} ms", all / names.len() as f64, times[times.len() / 2]);
 }

@@ -166,13 +166,15 @@ fn run_on_threads(make: &(dyn Fn() -> Job + Sync), workers: usize) -> Rgba {
             parent = std::mem::take(&mut state);
             state = bands::initial(&jobs[0], step.level, &parent);
         }
+        // Each worker makes a level's first windows itself, as in the browser.
+        let start = if step.pass == 0 { bands::Start::Initial } else { bands::Start::Maps(&state) };
         let n = bands::bands(&jobs[0], step).len();
         let results: Vec<(usize, Vec<Vec<u32>>)> = std::thread::scope(|scope| {
             let handles: Vec<_> = jobs
                 .iter()
                 .enumerate()
                 .map(|(w, job)| {
-                    let (start, parent) = (&state, &parent);
+                    let parent = &parent;
                     scope.spawn(move || {
                         (0..n)
                             .rev()

@@ -31,14 +31,33 @@ export async function runBands(pool, method, args, onProgress) {
         parent = state;
         state = undefined;
       }
-      const chunks = split(bands, pool.length);
-      const fractions = chunks.map(() => 0);
-      const report = () => onProgress?.((finished + chunks.reduce((n, c, k) => n + c.rows * fractions[k], 0)) / total);
+      // Bands go one at a time to whichever worker is free, so a slow worker (or a
+      // costly band) holds up the step by one band at most. A worker gets the step's
+      // starting state and the parent level with its first
+      // band of the step, and keeps them.
       const next = new Uint32Array(maps * width * height);
-      await Promise.all(chunks.map((chunk, k) => pool[k]
-        .request({ bands: 'run', handle: plans[k].handle, step: index, state, parent: step.pass === 0 ? parent : undefined, from: chunk.from, to: chunk.to },
-          (f) => { fractions[k] = f; report(); })
-        .then((rows) => place(rows, bands, chunk, maps, width, height, next))));
+      const running = new Map();
+      let done = 0;
+      let queue = 0;
+      const report = () => {
+        let rows = done;
+        for (const [b, f] of running) rows += f * bands[b][1];
+        onProgress?.((finished + rows) / total);
+      };
+      await Promise.all(pool.slice(0, bands.length).map(async (worker, k) => {
+        for (let first = true; queue < bands.length; first = false) {
+          const b = queue++;
+          running.set(b, 0);
+          const rows = await worker.request({
+            bands: 'run', handle: plans[k].handle, step: index, from: b, to: b + 1,
+            state: first ? state : undefined, parent: first ? parent : undefined,
+          }, (f) => { running.set(b, f); report(); });
+          place(rows, bands[b], maps, width, height, next);
+          running.delete(b);
+          done += bands[b][1];
+          report();
+        }
+      }));
       finished += height;
       state = next;
     }
@@ -48,30 +67,16 @@ export async function runBands(pool, method, args, onProgress) {
   }
 }
 
-/** Contiguous runs of bands, one per worker (at most one per band); bands are of
- *  equal height within a row, so equal counts are equal work. */
-function split(bands, workers) {
-  const n = Math.min(workers, bands.length);
-  return Array.from({ length: n }, (_, k) => {
-    const from = Math.round((k * bands.length) / n);
-    const to = Math.round(((k + 1) * bands.length) / n);
-    return { from, to, rows: bands.slice(from, to).reduce((s, [, rows]) => s + rows, 0) };
-  });
-}
-
-/** Copies the rows of bands `chunk.from .. chunk.to` (band after band, each map's rows
- *  in turn; a band may wrap past the last row) into the level's maps `into`. */
-function place(rows, bands, chunk, maps, width, height, into) {
+/** Copies a band's rows (each map's rows in turn; a band may wrap past the last
+ *  row) into the level's maps `into`. */
+function place(rows, [first, count], maps, width, height, into) {
+  if (rows.length !== maps * count * width) throw new Error(`patternsynth: a worker returned ${rows.length} values for a band of ${count} rows.`);
   let at = 0;
-  for (let b = chunk.from; b < chunk.to; b++) {
-    const [first, count] = bands[b];
-    for (let m = 0; m < maps; m++) {
-      for (let r = 0; r < count; r++) {
-        const y = (first + r) % height;
-        into.set(rows.subarray(at, at + width), (m * height + y) * width);
-        at += width;
-      }
+  for (let m = 0; m < maps; m++) {
+    for (let r = 0; r < count; r++) {
+      const y = (first + r) % height;
+      into.set(rows.subarray(at, at + width), (m * height + y) * width);
+      at += width;
     }
   }
-  if (at !== rows.length) throw new Error(`patternsynth: a worker returned ${rows.length} values for bands ${chunk.from}..${chunk.to}; ${at} were expected.`);
 }

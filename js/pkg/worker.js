@@ -22,7 +22,15 @@ const transferables = (r) => {
 // Banded texture synthesis (bands.js): { id, bands: 'open' | 'run' | 'finish' | 'close', ... }.
 async function bandsMessage({ id, bands, handle, method, args, step, state, parent, from, to }) {
   await ready;
-  const progress = (fraction) => { self.postMessage({ id, progress: fraction }); };
+  // A band is a small part of the call: a report every 100 ms is plenty, and spares
+  // the page thousands of messages.
+  let last = 0;
+  const progress = (fraction) => {
+    const now = performance.now();
+    if (now - last < 100) return;
+    last = now;
+    self.postMessage({ id, progress: fraction });
+  };
   switch (bands) {
     case 'open': return api.bands.open(method, args);
     case 'run': return api.bands.run(handle, step, state, parent, from, to, progress);

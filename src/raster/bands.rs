@@ -73,41 +73,51 @@ const NOISE: usize = 255;
 /// sources upsampled (the child position under each pixel, clamped to the exemplar).
 pub fn initial(job: &Job, level: usize, parent: &[Vec<u32>]) -> Vec<Vec<u32>> {
     let (lw, lh) = job.sizes[level];
-    if level + 1 == job.levels {
-        return (0..job.exemplars())
-            .map(|e| {
-                let mut rng = stream(job.params.seed, level, NOISE, e);
-                let n = job.positions(e, level);
-                (0..lw * lh).map(|_| rng.below(n) as u32).collect()
-            })
-            .collect();
-    }
-    let plw = job.sizes[level + 1].0;
     (0..job.exemplars())
         .map(|e| {
-            let (ew, eh) = job.exemplar_size(e, level);
-            let pw = job.exemplar_size(e, level + 1).0;
             let mut out = Vec::with_capacity(lw * lh);
-            for y in 0..lh {
-                for x in 0..lw {
-                    let s = parent[e][(y / 2) * plw + x / 2] as usize;
-                    let sx = (2 * (s % pw) + x % 2).min(ew - 1);
-                    let sy = (2 * (s / pw) + y % 2).min(eh - 1);
-                    out.push((sy * ew + sx) as u32);
-                }
-            }
+            (0..lh).for_each(|y| initial_row(job, level, parent, e, y, &mut out));
             out
         })
         .collect()
 }
 
-/// Runs band `b` of `step` from the step's starting state `start` (the level's whole
-/// maps) and the parent level's sources; returns the band's rows of each map, top row
-/// first. `on_row` is called after each row (for progress; an error stops the band).
+/// Appends row `y` of exemplar `e`'s map in `initial` to `out` (each row on its own, so
+/// that a band's window is made without the rest of the level).
+fn initial_row(job: &Job, level: usize, parent: &[Vec<u32>], e: usize, y: usize, out: &mut Vec<u32>) {
+    let lw = job.sizes[level].0;
+    if level + 1 == job.levels {
+        let mut rng = stream(job.params.seed, level, NOISE, y * job.exemplars() + e);
+        let n = job.positions(e, level);
+        out.extend((0..lw).map(|_| rng.below(n) as u32));
+        return;
+    }
+    let plw = job.sizes[level + 1].0;
+    let (ew, eh) = job.exemplar_size(e, level);
+    let pw = job.exemplar_size(e, level + 1).0;
+    let sy = |s: usize| (2 * (s / pw) + y % 2).min(eh - 1);
+    out.extend((0..lw).map(|x| {
+        let s = parent[e][(y / 2) * plw + x / 2] as usize;
+        let sx = (2 * (s % pw) + x % 2).min(ew - 1);
+        (sy(s) * ew + sx) as u32
+    }));
+}
+
+/// What a step starts from.
+#[derive(Clone, Copy)]
+pub enum Start<'a> {
+    /// The level's maps as the previous pass left them.
+    Maps(&'a [Vec<u32>]),
+    /// The level's `initial` state (its first pass), made row by row as bands need it.
+    Initial,
+}
+
+/// Runs band `b` of `step` from the step's starting state `start` and the parent
+/// level's sources; returns the band's rows of each map, top row first. `on_row` is called after each row (for progress; an error stops the band).
 pub fn run(
     job: &Job,
     step: Step,
-    start: &[Vec<u32>],
+    start: Start,
     parent: &[Vec<u32>],
     b: usize,
     on_row: &mut dyn FnMut() -> Result<()>,
@@ -119,13 +129,15 @@ pub fn run(
     let halo = if band.rows == lh { 0 } else { job.full.half as usize };
     let first = (band.first + lh - halo) % lh;
     let rows = band.rows + 2 * halo;
-    let window = start
-        .iter()
-        .map(|s| {
+    let window = (0..job.exemplars())
+        .map(|e| {
             let mut w = Vec::with_capacity(rows * lw);
             for r in 0..rows {
                 let y = (first + r) % lh;
-                w.extend_from_slice(&s[y * lw..(y + 1) * lw]);
+                match start {
+                    Start::Maps(maps) => w.extend_from_slice(&maps[e][y * lw..(y + 1) * lw]),
+                    Start::Initial => initial_row(job, level, parent, e, y, &mut w),
+                }
             }
             w
         })
@@ -170,13 +182,16 @@ pub fn synthesize(job: &Job, progress: &mut Throttle) -> Result<Rgba> {
     let mut parent: Vec<Vec<u32>> = Vec::new();
     let mut state: Vec<Vec<u32>> = Vec::new();
     for &step in &steps {
-        if step.pass == 0 {
+        let start = if step.pass == 0 {
             parent = std::mem::take(&mut state);
             state = initial(job, step.level, &parent);
-        }
+            Start::Initial
+        } else {
+            Start::Maps(&state)
+        };
         let mut next = state.clone();
         for b in 0..bands(job, step).len() {
-            let rows = run(job, step, &state, &parent, b, &mut || {
+            let rows = run(job, step, start, &parent, b, &mut || {
                 done += 1;
                 progress.tick(done as f64 / total as f64)
             })?;

@@ -12,10 +12,13 @@ use std::cell::RefCell;
 use std::collections::BTreeMap;
 use wasm_bindgen::prelude::*;
 
-/// An open job and the parent level's sources of the level it is at.
+/// An open job, the parent level's sources of the level it is at, and the step it is
+/// at with that step's starting maps (none at a level's first pass), kept for the
+/// step's next bands.
 struct Open {
     job: Job,
     parent: Vec<Vec<u32>>,
+    start: Option<(usize, Option<Vec<Vec<u32>>>)>,
 }
 
 thread_local! {
@@ -73,7 +76,7 @@ pub fn bands_open(method: &str, args: js_sys::Array) -> Result<JsValue, JsValue>
     let exemplars = job.exemplars();
     let handle = OPEN.with_borrow_mut(|(next, jobs)| {
         *next += 1;
-        jobs.insert(*next, Open { job, parent: Vec::new() });
+        jobs.insert(*next, Open { job, parent: Vec::new(), start: None });
         *next
     });
     let out = js_sys::Object::new();
@@ -91,15 +94,15 @@ fn maps(all: &js_sys::Uint32Array, exemplars: usize, pixels: usize, what: &str) 
             all.length()
         )));
     }
-    let v = all.to_vec();
-    Ok(v.chunks(pixels).map(<[u32]>::to_vec).collect())
+    Ok((0..exemplars).map(|e| all.subarray((e * pixels) as u32, ((e + 1) * pixels) as u32).to_vec()).collect())
 }
 
 /// Runs bands `from..to` of step `step` (an index into `steps`). `state`: the level's
-/// maps at the start of the step, or `undefined` for the level's first pass (it starts
-/// from the parent upsampled); `parent`: the parent level's maps, given at the level's
-/// first pass (kept for the others). Returns the bands' rows, band after band, each
-/// exemplar's rows in turn.
+/// maps at the start of the step, with the step's first bands in this worker (kept for
+/// its next ones); at a level's first pass there is none (the level starts from the
+/// parent upsampled). `parent`: the parent level's maps, with the level's first bands
+/// in this worker. Returns the bands' rows, band after band, each exemplar's rows in
+/// turn.
 #[wasm_bindgen(js_name = bandsRun)]
 pub fn bands_run(
     handle: u32,
@@ -125,10 +128,18 @@ pub fn bands_run(
                 open.parent = maps(&p, n, job.level_pixels(s.level + 1), "parent")?;
             }
         }
-        let start = match state {
-            Some(st) => maps(&st, n, job.level_pixels(s.level), "state")?,
-            None if s.pass == 0 => bands::initial(job, s.level, &open.parent),
-            None => return Err(error("Only a level's first pass starts without a state.")),
+        let kept = matches!(&open.start, Some((k, _)) if *k == step);
+        if !kept || state.is_some() {
+            let start = match state {
+                Some(st) => Some(maps(&st, n, job.level_pixels(s.level), "state")?),
+                None if s.pass == 0 => None,
+                None => return Err(error(&format!("Step {step}'s starting state was not given to this worker."))),
+            };
+            open.start = Some((step, start));
+        }
+        let start = match &open.start {
+            Some((_, Some(m))) => bands::Start::Maps(m),
+            _ => bands::Start::Initial,
         };
         let total: usize = list[from..to].iter().map(|b| b.rows).sum();
         let mut done = 0usize;
@@ -136,7 +147,7 @@ pub fn bands_run(
         let mut out = Vec::with_capacity(n * total * job.sizes[s.level].0);
         let mut result = Ok(());
         for b in from..to {
-            let rows = bands::run(job, s, &start, &open.parent, b, &mut || {
+            let rows = bands::run(job, s, start, &open.parent, b, &mut || {
                 done += 1;
                 throttle.tick(done as f64 / total.max(1) as f64)
             });
@@ -162,6 +173,7 @@ pub fn bands_finish(handle: u32, state: js_sys::Uint32Array) -> Result<JsValue, 
     with(handle, |open| {
         let job = &open.job;
         let src = maps(&state, job.exemplars(), job.level_pixels(0), "state")?;
+        open.start = None;
         let out = job.colours(&src);
         Ok(rgba_to_js(out.width, out.height, &out.data))
     })

@@ -1,0 +1,23 @@
+//! The exemplar photographs of tests/fixtures/textures (see SOURCES.md there), shared by
+//! the texture probes and benchmarks.
+#![allow(dead_code)]
+
+use patternsynth::raster::codec::decode_image;
+use patternsynth::raster::{Image, Rgba};
+
+/// The four the engine was tuned on.
+pub const TUNED: [&str; 4] = ["wood", "brick", "grass", "gravel"];
+
+/// All of them: the tuned four and six of other kinds nobody chose for the engine.
+pub const ALL: [&str; 10] = ["wood", "brick", "grass", "gravel", "moon", "hubble", "tissue", "fur", "print", "coins"];
+
+/// A fixture as RGBA.
+pub fn rgba(name: &str) -> Rgba {
+    decode_image(&std::fs::read(format!("tests/fixtures/textures/{name}.png")).unwrap()).unwrap()
+}
+
+/// A fixture as an engine image.
+pub fn load(name: &str) -> Image {
+    let d = rgba(name);
+    Image::from_rgba8(d.width, d.height, &d.data).unwrap()
+}
