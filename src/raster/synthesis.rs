@@ -177,8 +177,12 @@ fn block(
 }
 
 /// Output pixels x exemplar positions x neighbourhood pixels up to which the coarsest
-/// level is searched exhaustively (a 128-pixel exemplar at 256 x 256 out needs 7 M).
-const COARSE_EXHAUSTIVE_BUDGET: usize = 25 << 23;
+/// level is searched exhaustively (a 128-pixel exemplar at 256 x 256 out needs 7 M, at
+/// 512 x 512 26 M). Above it, coherent search: at 1024 x 1024 (104 M) that was 17%
+/// faster and lowered the mean patch energy of the four photographs from 7.20 to 6.60
+/// (brick rose from 3.8 to 5.0 but kept its joints, which the exhaustive coarse level
+/// had merged into long vertical stripes).
+const COARSE_EXHAUSTIVE_BUDGET: usize = 25 << 21;
 /// Output pixels x exemplar positions (in 5 x 5 neighbourhoods) the exhaustive
 /// reference mode may compare.
 const EXHAUSTIVE_BUDGET: f64 = 4e9;
