@@ -168,18 +168,19 @@ fn run_on_threads(make: &(dyn Fn() -> Job + Sync), workers: usize) -> Rgba {
         }
         // Each worker makes a level's first windows itself, as in the browser.
         let start = if step.pass == 0 { bands::Start::Initial } else { bands::Start::Maps(&state) };
+        let uses = bands::uses(&jobs[0], step, start, &parent);
         let n = bands::bands(&jobs[0], step).len();
         let results: Vec<(usize, Vec<Vec<u32>>)> = std::thread::scope(|scope| {
             let handles: Vec<_> = jobs
                 .iter()
                 .enumerate()
                 .map(|(w, job)| {
-                    let parent = &parent;
+                    let (parent, uses) = (&parent, &uses);
                     scope.spawn(move || {
                         (0..n)
                             .rev()
                             .filter(|b| b % workers == w)
-                            .map(|b| (b, bands::run(job, step, start, parent, b, &mut || Ok(())).unwrap()))
+                            .map(|b| (b, bands::run(job, step, start, uses, parent, b, &mut || Ok(())).unwrap()))
                             .collect::<Vec<_>>()
                     })
                 })

@@ -13,7 +13,7 @@
 //! the next, which joins the two sides in its scanline order.
 
 use super::image::Rgba;
-use super::synthesis::{Job, Map, Scratch};
+use super::synthesis::{Job, Map, Scratch, Uses};
 use crate::error::Result;
 use crate::progress::Throttle;
 use crate::rng::Rng;
@@ -112,12 +112,14 @@ pub enum Start<'a> {
     Initial,
 }
 
-/// Runs band `b` of `step` from the step's starting state `start` and the parent
+/// Runs band `b` of `step` from the step's starting state `start` (with its use counts,
+/// `uses(start)`, which the band then keeps up to date for itself) and the parent
 /// level's sources; returns the band's rows of each map, top row first. `on_row` is called after each row (for progress; an error stops the band).
 pub fn run(
     job: &Job,
     step: Step,
     start: Start,
+    uses: &Option<Uses>,
     parent: &[Vec<u32>],
     b: usize,
     on_row: &mut dyn FnMut() -> Result<()>,
@@ -142,7 +144,7 @@ pub fn run(
             w
         })
         .collect();
-    let mut map = Map::rows(window, first, rows, lw, lh);
+    let mut map = Map::rows(window, uses.clone(), first, rows, lw, lh);
     let sweep = job.pass(level, parent);
     let (shape, use_full, reverse) = match pass {
         0 => (&job.causal, false, false),
@@ -159,6 +161,15 @@ pub fn run(
         on_row()?;
     }
     Ok(map.src.into_iter().map(|w| w[halo * lw..(halo + band.rows) * lw].to_vec()).collect())
+}
+
+/// The use counts of a step's starting state (the same in every worker).
+pub fn uses(job: &Job, step: Step, start: Start, parent: &[Vec<u32>]) -> Option<Uses> {
+    let (level, lw) = (step.level, job.sizes[step.level].0);
+    match start {
+        Start::Maps(maps) => Uses::count(job, level, |e, y, out| out.extend_from_slice(&maps[e][y * lw..(y + 1) * lw])),
+        Start::Initial => Uses::count(job, level, |e, y, out| initial_row(job, level, parent, e, y, out)),
+    }
 }
 
 /// Writes a band's rows (as `run` returns them) into a level's maps.
@@ -189,9 +200,10 @@ pub fn synthesize(job: &Job, progress: &mut Throttle) -> Result<Rgba> {
         } else {
             Start::Maps(&state)
         };
+        let uses = uses(job, step, start, &parent);
         let mut next = state.clone();
         for b in 0..bands(job, step).len() {
-            let rows = run(job, step, start, &parent, b, &mut || {
+            let rows = run(job, step, start, &uses, &parent, b, &mut || {
                 done += 1;
                 progress.tick(done as f64 / total as f64)
             })?;

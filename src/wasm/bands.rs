@@ -7,18 +7,25 @@ use super::rgba::rgba_to_js;
 use super::texture::{blend_args, texture_args};
 use super::{error, js_error, JsProgress};
 use crate::progress::Throttle;
-use crate::raster::{self, bands, synthesis::Job};
+use crate::raster::{self, bands, synthesis::Job, synthesis::Uses};
 use std::cell::RefCell;
 use std::collections::BTreeMap;
 use wasm_bindgen::prelude::*;
 
 /// An open job, the parent level's sources of the level it is at, and the step it is
-/// at with that step's starting maps (none at a level's first pass), kept for the
-/// step's next bands.
+/// at, kept for the step's next bands.
 struct Open {
     job: Job,
     parent: Vec<Vec<u32>>,
-    start: Option<(usize, Option<Vec<Vec<u32>>>)>,
+    start: Option<StepStart>,
+}
+
+/// A step's starting maps (none at a level's first pass, which starts from the parent)
+/// and their use counts.
+struct StepStart {
+    step: usize,
+    maps: Option<Vec<Vec<u32>>>,
+    uses: Option<Uses>,
 }
 
 thread_local! {
@@ -128,18 +135,23 @@ pub fn bands_run(
                 open.parent = maps(&p, n, job.level_pixels(s.level + 1), "parent")?;
             }
         }
-        let kept = matches!(&open.start, Some((k, _)) if *k == step);
+        let kept = matches!(&open.start, Some(k) if k.step == step);
         if !kept || state.is_some() {
             let start = match state {
                 Some(st) => Some(maps(&st, n, job.level_pixels(s.level), "state")?),
                 None if s.pass == 0 => None,
                 None => return Err(error(&format!("Step {step}'s starting state was not given to this worker."))),
             };
-            open.start = Some((step, start));
+            let uses = match &start {
+                Some(m) => bands::uses(job, s, bands::Start::Maps(m), &open.parent),
+                None => bands::uses(job, s, bands::Start::Initial, &open.parent),
+            };
+            open.start = Some(StepStart { step, maps: start, uses });
         }
-        let start = match &open.start {
-            Some((_, Some(m))) => bands::Start::Maps(m),
-            _ => bands::Start::Initial,
+        let Some(StepStart { maps, uses, .. }) = &open.start else { unreachable!("set above") };
+        let start = match maps {
+            Some(m) => bands::Start::Maps(m),
+            None => bands::Start::Initial,
         };
         let total: usize = list[from..to].iter().map(|b| b.rows).sum();
         let mut done = 0usize;
@@ -147,7 +159,7 @@ pub fn bands_run(
         let mut out = Vec::with_capacity(n * total * job.sizes[s.level].0);
         let mut result = Ok(());
         for b in from..to {
-            let rows = bands::run(job, s, start, &open.parent, b, &mut || {
+            let rows = bands::run(job, s, start, uses, &open.parent, b, &mut || {
                 done += 1;
                 throttle.tick(done as f64 / total.max(1) as f64)
             });

@@ -16,8 +16,8 @@ export const defaultOptions = {
   b: 'gravel',
 };
 
-/** Built-in exemplars: CC0 photographs (see tests/fixtures/textures/SOURCES.md). */
-export const textures = ['wood', 'brick', 'grass', 'gravel'];
+/** Built-in exemplars: CC0, public-domain or unrestricted photographs (see tests/fixtures/textures/SOURCES.md). */
+export const textures = ['wood', 'brick', 'grass', 'gravel', 'fur', 'hubble', 'tissue', 'coins'];
 
 /** Exemplars larger than this are scaled down (uniformly, with a message). */
 export const maxExemplarSide = 512;

@@ -15,8 +15,8 @@ export const methods = [
   ['synthesis', 'Toroidal synthesis (ours: keeps structure)'],
 ];
 
-/** Built-in photographs (CC0; see tests/fixtures/textures/SOURCES.md). */
-export const textures = ['wood', 'brick', 'grass', 'gravel'];
+/** Built-in photographs (CC0, public domain or unrestricted; see tests/fixtures/textures/SOURCES.md). */
+export const textures = ['wood', 'brick', 'grass', 'gravel', 'fur', 'hubble', 'tissue', 'coins'];
 
 /** Images larger than this are scaled down before they reach the engine. */
 export const maxInputSide = 1024;
