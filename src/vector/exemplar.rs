@@ -123,113 +123,169 @@ fn build(name: &'static str, lattice: Lattice, ni: i32, nj: i32, draw: Motif, ji
     Exemplar { name, strokes, classes, lattice }
 }
 
-/// All families of SPEC 1.5 at jitter `jitter` (fraction of the spacing, e.g. 0.02).
-pub fn families(jitter: f64, seed: u64) -> Vec<Exemplar> {
+/// A family of SPEC 1.5: its lattice, how its classes are drawn, and the periods its
+/// example spans.
+#[derive(Clone, Debug)]
+pub struct Family {
+    pub name: &'static str,
+    pub lattice: Lattice,
+    draw: Motif,
+    ni: i32,
+    nj: i32,
+    /// Added to the seed, so the families' jitters differ.
+    seed_offset: u64,
+}
+
+/// The families of SPEC 1.5.
+pub fn family_list() -> Vec<Family> {
     let o = Point::new(20.0, 20.0);
     let one = |off: Vec2| vec![(off, 0u32)];
     vec![
-        build(
-            "row",
-            Lattice { origin: o, a: Vec2::new(24.0, 0.0), b: None, motif: one(Vec2::ZERO) },
-            10,
-            1,
-            |p, _| dash(p, Vec2::new(0.0, 12.0), 2.0, [20, 20, 20]),
-            jitter,
-            seed,
-        ),
-        build(
-            "grid",
-            Lattice { origin: o, a: Vec2::new(24.0, 0.0), b: Some(Vec2::new(0.0, 24.0)), motif: one(Vec2::ZERO) },
-            6,
-            6,
-            |p, _| dash(p, Vec2::new(9.0, 9.0), 2.0, [20, 20, 20]),
-            jitter,
-            seed + 1,
-        ),
-        build(
-            "hexagonal",
-            Lattice {
+        Family {
+            name: "row",
+            lattice: Lattice { origin: o, a: Vec2::new(24.0, 0.0), b: None, motif: one(Vec2::ZERO) },
+            ni: 10,
+            nj: 1,
+            draw: |p, _| dash(p, Vec2::new(0.0, 12.0), 2.0, [20, 20, 20]),
+            seed_offset: 0,
+        },
+        Family {
+            name: "grid",
+            lattice: Lattice {
+                origin: o,
+                a: Vec2::new(24.0, 0.0),
+                b: Some(Vec2::new(0.0, 24.0)),
+                motif: one(Vec2::ZERO),
+            },
+            ni: 6,
+            nj: 6,
+            draw: |p, _| dash(p, Vec2::new(9.0, 9.0), 2.0, [20, 20, 20]),
+            seed_offset: 1,
+        },
+        Family {
+            name: "hexagonal",
+            lattice: Lattice {
                 origin: o,
                 a: Vec2::new(24.0, 0.0),
                 b: Some(Vec2::new(12.0, 24.0 * 0.75f64.sqrt())),
                 motif: one(Vec2::ZERO),
             },
-            6,
-            6,
-            |p, _| ring(p, 5.0, Some([40, 90, 160]), None),
-            jitter,
-            seed + 2,
-        ),
-        build(
-            "brick",
-            Lattice { origin: o, a: Vec2::new(36.0, 0.0), b: Some(Vec2::new(18.0, 14.0)), motif: one(Vec2::ZERO) },
-            5,
-            6,
-            |p, _| dash(p, Vec2::new(26.0, 0.0), 3.0, [150, 60, 30]),
-            jitter,
-            seed + 3,
-        ),
-        build(
-            "classes-by-shape",
-            Lattice {
+            ni: 6,
+            nj: 6,
+            draw: |p, _| ring(p, 5.0, Some([40, 90, 160]), None),
+            seed_offset: 2,
+        },
+        Family {
+            name: "brick",
+            lattice: Lattice {
+                origin: o,
+                a: Vec2::new(36.0, 0.0),
+                b: Some(Vec2::new(18.0, 14.0)),
+                motif: one(Vec2::ZERO),
+            },
+            ni: 5,
+            nj: 6,
+            draw: |p, _| dash(p, Vec2::new(26.0, 0.0), 3.0, [150, 60, 30]),
+            seed_offset: 3,
+        },
+        Family {
+            name: "classes-by-shape",
+            lattice: Lattice {
                 origin: o,
                 a: Vec2::new(40.0, 0.0),
                 b: Some(Vec2::new(0.0, 30.0)),
                 motif: vec![(Vec2::ZERO, 0), (Vec2::new(20.0, 0.0), 1), (Vec2::new(10.0, 15.0), 2)],
             },
-            4,
-            5,
-            |p, c| match c {
+            ni: 4,
+            nj: 5,
+            draw: |p, c| match c {
                 0 => dash(p, Vec2::new(0.0, 12.0), 2.0, [20, 20, 20]),
                 1 => ring(p, 5.0, None, Some([20, 20, 20])),
                 _ => chevron(p, 10.0, [20, 20, 20]),
             },
-            jitter,
-            seed + 4,
-        ),
-        build(
-            "classes-by-colour",
-            Lattice {
+            seed_offset: 4,
+        },
+        Family {
+            name: "classes-by-colour",
+            lattice: Lattice {
                 origin: o,
                 a: Vec2::new(40.0, 0.0),
                 b: Some(Vec2::new(0.0, 20.0)),
                 motif: vec![(Vec2::ZERO, 0), (Vec2::new(20.0, 0.0), 1)],
             },
-            4,
-            7,
-            |p, c| ring(p, 6.0, Some(if c == 0 { [210, 40, 40] } else { [40, 60, 210] }), None),
-            jitter,
-            seed + 5,
-        ),
-        build(
-            "pairs-row",
-            Lattice {
+            ni: 4,
+            nj: 7,
+            draw: |p, c| ring(p, 6.0, Some(if c == 0 { [210, 40, 40] } else { [40, 60, 210] }), None),
+            seed_offset: 5,
+        },
+        Family {
+            name: "pairs-row",
+            lattice: Lattice {
                 origin: o,
                 a: Vec2::new(34.0, 0.0),
                 b: None,
                 motif: vec![(Vec2::ZERO, 0), (Vec2::new(9.0, 0.0), 0)],
             },
-            6,
-            1,
-            |p, _| dash(p, Vec2::new(0.0, 14.0), 2.0, [20, 20, 20]),
-            jitter,
-            seed + 6,
-        ),
-        build(
-            "pairs-grid",
-            Lattice {
+            ni: 6,
+            nj: 1,
+            draw: |p, _| dash(p, Vec2::new(0.0, 14.0), 2.0, [20, 20, 20]),
+            seed_offset: 6,
+        },
+        Family {
+            name: "pairs-grid",
+            lattice: Lattice {
                 origin: o,
                 a: Vec2::new(34.0, 0.0),
                 b: Some(Vec2::new(0.0, 26.0)),
                 motif: vec![(Vec2::ZERO, 0), (Vec2::new(9.0, 0.0), 0)],
             },
-            5,
-            5,
-            |p, _| dash(p, Vec2::new(0.0, 14.0), 2.0, [20, 20, 20]),
-            jitter,
-            seed + 7,
-        ),
+            ni: 5,
+            nj: 5,
+            draw: |p, _| dash(p, Vec2::new(0.0, 14.0), 2.0, [20, 20, 20]),
+            seed_offset: 7,
+        },
     ]
+}
+
+/// All families of SPEC 1.5 at jitter `jitter` (fraction of the spacing, e.g. 0.02).
+pub fn families(jitter: f64, seed: u64) -> Vec<Exemplar> {
+    family_list()
+        .into_iter()
+        .map(|f| build(f.name, f.lattice, f.ni, f.nj, f.draw, jitter, seed + f.seed_offset))
+        .collect()
+}
+
+impl Family {
+    /// The family drawn over a canvas `periods_x x periods_y` periods of `a` and `b`
+    /// across (one row for a row family) from `origin - margin`: every site in it,
+    /// jittered, in the order a person would draw them (row after row, copy after
+    /// copy), with the canvas.
+    pub fn canvas(&self, periods_x: f64, periods_y: f64, jitter: f64, seed: u64) -> (Exemplar, kurbo::Rect) {
+        let l = &self.lattice;
+        // Half the smallest gap before the first site, so no site sits on an edge.
+        let margin = 0.5 * l.spacing();
+        let (x0, y0) = (l.origin.x - margin, l.origin.y - margin);
+        let extent = |v: Vec2| v.x.abs().max(v.y.abs());
+        let motif_x = l.motif.iter().map(|(m, _)| m.x).fold(0.0, f64::max);
+        let motif_y = l.motif.iter().map(|(m, _)| m.y).fold(0.0, f64::max);
+        let x1 = x0 + periods_x * extent(l.a).max(motif_x + margin);
+        let y1 = match l.b {
+            Some(b) => y0 + periods_y * b.y.abs(),
+            None => l.origin.y + motif_y + margin,
+        };
+        let mut sites = l.sites_in(x0, y0, x1, y1);
+        let index = |m: Vec2| l.motif.iter().position(|(o, _)| *o == m).unwrap_or(0);
+        sites.sort_by_key(|s| (s.3, s.2, index(s.4)));
+        let mut rng = Rng::new(seed + self.seed_offset);
+        let sigma = jitter * l.spacing();
+        let (mut strokes, mut classes) = (Vec::new(), Vec::new());
+        for (p, c, ..) in sites {
+            let jit = Vec2::new(rng.normal(), rng.normal()) * sigma;
+            strokes.push((self.draw)(p + jit, c));
+            classes.push(c);
+        }
+        (Exemplar { name: self.name, strokes, classes, lattice: l.clone() }, kurbo::Rect::new(x0, y0, x1, y1))
+    }
 }
 
 /// A busy tile: `count` elements of three kinds at random places (at least `gap` apart,
@@ -278,6 +334,28 @@ pub fn irregular_dashes(count: usize, side: f64, seed: u64) -> Vec<Stroke> {
         .map(|_| {
             let (x, y) = (rng.next_f64() * side, rng.next_f64() * side);
             Stroke::new(vec![[x, y], [x + 6.0, y + 6.0]], 1.5, Some(Rgb([30, 30, 30])))
+        })
+        .collect()
+}
+
+/// `count` freehand strokes in a `side` square: wandering curves of random length,
+/// bend and colour, the way a sketch is drawn, with no repetition in it.
+pub fn freehand_sketch(count: usize, side: f64, seed: u64) -> Vec<Stroke> {
+    let mut rng = Rng::new(seed);
+    let palette = [[30, 30, 30], [200, 60, 40], [40, 90, 160]];
+    (0..count)
+        .map(|_| {
+            let (mut x, mut y) = (rng.next_f64() * side, rng.next_f64() * side);
+            let mut heading = rng.next_f64() * std::f64::consts::TAU;
+            let (steps, step, bend) = (4 + rng.below(12), 2.0 + rng.next_f64() * 10.0, rng.normal() * 0.6);
+            let mut points = vec![[x, y]];
+            for _ in 0..steps {
+                heading += bend + rng.normal() * 0.3;
+                x += step * heading.cos();
+                y += step * heading.sin();
+                points.push([x, y]);
+            }
+            Stroke::new(points, 1.0 + rng.next_f64() * 3.0, Some(Rgb(palette[rng.below(3)])))
         })
         .collect()
 }

@@ -13,8 +13,11 @@ pub mod period;
 mod reference;
 #[cfg(feature = "test-support")]
 pub mod regularity;
+#[cfg(feature = "test-support")]
+pub mod replay;
 pub mod spatial;
 pub mod stroke;
+pub mod suggest;
 pub mod svg;
 pub mod synthesize;
 pub mod tile;
@@ -22,6 +25,7 @@ pub mod tile;
 pub use classify::Tolerances;
 pub use color::Rgb;
 pub use stroke::{FillRule, Stroke};
+pub use suggest::{suggest_strokes, SuggestOptions, Suggestions};
 pub use svg::{parse_svg, Import, ImportOptions};
 pub use synthesize::{classify_strokes, synthesize_strokes, Classification, StrokeOptions, StrokeResult};
 pub use tile::{stroke_tile, TileOptions, TileResult};

@@ -1,0 +1,47 @@
+//! The autocomplete replay table (issue 10): each family drawn over a canvas of about
+//! 8 x 6 periods (12 periods for rows), stroke by stroke, accepting the proposals that
+//! are among the strokes still to draw; then irregular dashes and freehand sketches,
+//! where nothing should be proposed. `cargo run --release --example replay_suggest
+//! [jitter]` (jitter as a fraction of the spacing, default 0.03).
+use patternsynth::vector::exemplar::{family_list, freehand_sketch, irregular_dashes};
+use patternsynth::vector::replay::replay;
+use patternsynth::vector::{suggest_strokes, SuggestOptions};
+
+fn main() {
+    let jitter: f64 = std::env::args().nth(1).and_then(|a| a.parse().ok()).unwrap_or(0.03);
+    println!("jitter {jitter} of the spacing; canvases of 8 x 6 periods (rows: 12)");
+    println!("| family | strokes | by hand | accepted | accepted after 2 periods | shown | wrong | median ms | slowest ms (native) |");
+    println!("|---|---:|---:|---:|---:|---:|---:|---:|---:|");
+    let only = std::env::var("FAMILY").ok();
+    for f in family_list().into_iter().filter(|f| only.as_deref().is_none_or(|o| o == f.name)) {
+        let (x, y) = if f.lattice.b.is_some() { (8.0, 6.0) } else { (12.0, 1.0) };
+        let (ex, canvas) = f.canvas(x, y, jitter, 5);
+        let r = replay(&ex.strokes, &ex.classes, canvas, 0.3 * f.lattice.spacing());
+        let skip = 2 * f.lattice.motif.len();
+        println!(
+            "| {} | {} | {} | {} | {:.1}% | {} | {} ({:.1}%) | {:.2} | {:.2} |",
+            f.name,
+            r.strokes,
+            r.by_hand,
+            r.accepted,
+            100.0 * r.accepted_after(skip),
+            r.shown,
+            r.wrong,
+            100.0 * r.wrong_share(),
+            r.median_ms,
+            r.slowest_ms
+        );
+    }
+    // Input with no repetition: every prefix of the drawing, nothing may be proposed.
+    let quiet = |name: &str, strokes: &[patternsynth::vector::Stroke]| {
+        let mut shown = 0;
+        for n in 1..=strokes.len() {
+            shown += suggest_strokes(&strokes[..n], &SuggestOptions::default()).unwrap().strokes.len();
+        }
+        println!("{name}: {} strokes drawn one by one, {shown} proposals shown", strokes.len());
+    };
+    for seed in 1..=3 {
+        quiet(&format!("irregular dashes (seed {seed})"), &irregular_dashes(60, 300.0, seed));
+        quiet(&format!("freehand sketch (seed {seed})"), &freehand_sketch(40, 300.0, seed));
+    }
+}

@@ -1,0 +1,109 @@
+//! Replays a drawing session through `suggest_strokes` (test support): a person draws
+//! a known pattern stroke by stroke and, after each stroke or acceptance, accepts the
+//! proposals that are among the strokes still to draw. Counts what was drawn by hand,
+//! what was accepted and how many shown proposals were wrong.
+
+use super::stroke::Stroke;
+use super::suggest::{suggest_strokes, SuggestOptions};
+use kurbo::Rect;
+use std::time::Instant;
+
+/// What a replay counted.
+#[derive(Clone, Debug, Default)]
+pub struct Replay {
+    /// Strokes of the finished drawing.
+    pub strokes: usize,
+    pub by_hand: usize,
+    pub accepted: usize,
+    /// Proposals shown over the session (a proposal shown again counts again).
+    pub shown: usize,
+    /// Shown proposals that are not among the strokes still to draw.
+    pub wrong: usize,
+    /// Strokes drawn by hand before the first acceptance.
+    pub before_first: usize,
+    /// Slowest and median call, in milliseconds (native).
+    pub slowest_ms: f64,
+    pub median_ms: f64,
+}
+
+impl Replay {
+    /// Share of the strokes after the first `skip` that came from accepted proposals.
+    pub fn accepted_after(&self, skip: usize) -> f64 {
+        self.accepted as f64 / (self.strokes.saturating_sub(skip)).max(1) as f64
+    }
+
+    pub fn wrong_share(&self) -> f64 {
+        self.wrong as f64 / self.shown.max(1) as f64
+    }
+}
+
+/// Replays drawing `truth` (strokes in drawing order with their classes) on the canvas
+/// `region`; a proposal matches a stroke to draw of its class whose reference point is
+/// within `tol`.
+pub fn replay(truth: &[Stroke], classes: &[u32], region: Rect, tol: f64) -> Replay {
+    let opts =
+        SuggestOptions { region: Some([region.x0, region.y0, region.width(), region.height()]), ..Default::default() };
+    let mut done = vec![false; truth.len()];
+    let mut drawn: Vec<Stroke> = Vec::new();
+    let mut drawn_class: Vec<u32> = Vec::new();
+    let mut r = Replay { strokes: truth.len(), ..Replay::default() };
+    let mut times = Vec::new();
+    while let Some(first) = done.iter().position(|d| !d) {
+        let t = Instant::now();
+        let s = suggest_strokes(&drawn, &opts).expect("suggestions on a drawing");
+        times.push(t.elapsed().as_secs_f64() * 1e3);
+        r.shown += s.strokes.len();
+        let debug = std::env::var("REPLAY_DEBUG").is_ok();
+        if debug {
+            eprintln!(
+                "drawn {} periods {:?} reason {:?} cells {:?}",
+                drawn.len(),
+                s.periods,
+                s.reason,
+                s.cells.iter().zip(&s.strokes).map(|(c, st)| (c, st.reference_point())).collect::<Vec<_>>()
+            );
+        }
+        let mut matched = Vec::new();
+        for (k, stroke) in s.strokes.iter().enumerate() {
+            let class = drawn_class[s.sources[k] as usize];
+            let p = stroke.reference_point();
+            let hit = (0..truth.len())
+                .filter(|&g| !done[g] && classes[g] == class && !matched.iter().any(|&(h, _)| h == g))
+                .map(|g| (g, truth[g].reference_point().distance(p)))
+                .filter(|&(_, d)| d < tol)
+                .min_by(|x, y| x.1.total_cmp(&y.1));
+            match hit {
+                Some((g, _)) => matched.push((g, k)),
+                None => {
+                    r.wrong += 1;
+                    if std::env::var("REPLAY_DEBUG").is_ok() {
+                        let near = (0..truth.len())
+                            .map(|g| (truth[g].reference_point().distance(p), done[g]))
+                            .min_by(|x, y| x.0.total_cmp(&y.0));
+                        eprintln!("  wrong {:?} at {p:?}: nearest truth {near:?}", s.cells[k]);
+                    }
+                }
+            }
+        }
+        if matched.is_empty() {
+            done[first] = true;
+            drawn.push(truth[first].clone());
+            drawn_class.push(classes[first]);
+            r.by_hand += 1;
+            if r.accepted == 0 {
+                r.before_first += 1;
+            }
+        } else {
+            for (g, k) in matched {
+                done[g] = true;
+                drawn.push(s.strokes[k].clone());
+                drawn_class.push(classes[g]);
+                r.accepted += 1;
+            }
+        }
+    }
+    crate::order::floats(&mut times);
+    r.slowest_ms = times.last().copied().unwrap_or(0.0);
+    r.median_ms = times.get(times.len() / 2).copied().unwrap_or(0.0);
+    r
+}

@@ -1,0 +1,630 @@
+//! Autocomplete while drawing (SPEC 1.7, after Xing et al., "Autocomplete Painting
+//! Repetitions", 2014): the drawing so far is the example; once it shows a repetition,
+//! the next copies of the motif near the latest strokes are proposed as ghost strokes.
+//!
+//! A repetition is a lattice `origin_m + u a + w b` of motif positions `m` (a row when
+//! there is no `b`). Its periods are offsets between same-class strokes that recur
+//! (found at least twice among the latest strokes), tried shortest first; a candidate is
+//! kept only when it explains the drawing:
+//! - most strokes (70%) sit at a motif position drawn at least twice;
+//! - no motif position is drawn twice in one cell, and none stops short of a stroke of
+//!   its class further along its line (a period that skips drawn copies is a sub-period,
+//!   such as the gap inside a pair);
+//! - the strokes lie near their lattice sites (median residual at most 20% of the
+//!   spacing).
+//!
+//! Predictions then complete the cells already begun (the copy being drawn) and add the
+//! next `count` cells along the rhythm of the latest cells. Nothing is proposed on a
+//! first stroke, on irregular input, or when the latest stroke does not repeat anything
+//! (a stroke that contradicts the prediction dismisses it). Each proposed stroke is a
+//! random member of its class placed at its site with a drawn member's own deviation,
+//! as synthesis places them, so accepted copies keep the hand-drawn character.
+
+use super::element::Element;
+use super::reference::Spread;
+use super::stroke::Stroke;
+use super::synthesize::classify_strokes;
+use crate::error::{invalid, Result};
+use crate::rng::Rng;
+use kurbo::{Point, Rect, Vec2};
+use serde::{Deserialize, Serialize};
+use std::collections::{BTreeMap, BTreeSet};
+
+/// Options of `suggest_strokes`.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(rename_all = "camelCase", default, deny_unknown_fields)]
+pub struct SuggestOptions {
+    /// The area suggestions must fall in, `[x, y, width, height]` (the canvas); none:
+    /// anywhere.
+    pub region: Option<[f64; 4]>,
+    /// How many copies of the motif to propose beyond those already begun.
+    pub count: usize,
+    /// Propose every copy in the region instead (the region is then required).
+    pub fill: bool,
+    pub path_tolerance: Option<f64>,
+    pub width_tolerance: Option<f64>,
+    pub color_tolerance: Option<f64>,
+    /// Each proposal takes a random member of its class (else the stroke at its place).
+    pub variation: bool,
+    pub seed: u64,
+}
+
+impl Default for SuggestOptions {
+    fn default() -> Self {
+        SuggestOptions {
+            region: None,
+            count: 3,
+            fill: false,
+            path_tolerance: None,
+            width_tolerance: None,
+            color_tolerance: None,
+            variation: true,
+            seed: 1,
+        }
+    }
+}
+
+/// Proposed strokes (empty when the drawing shows no repetition yet).
+#[derive(Clone, Debug, Default, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct Suggestions {
+    pub strokes: Vec<Stroke>,
+    /// Of each proposed stroke, in (0, 1]: how well the lattice explains the drawing,
+    /// lower for copies further from the drawn ones.
+    pub confidence: Vec<f64>,
+    /// The drawn stroke whose place (and deviation) each proposal repeats.
+    pub sources: Vec<u32>,
+    /// Lattice cell `[u, w]` of each proposal; proposals of one copy share it.
+    pub cells: Vec<[i64; 2]>,
+    /// The repetition's period vectors (one for a row, two for a lattice; none found).
+    pub periods: Vec<[f64; 2]>,
+    /// Why nothing is proposed, when nothing is.
+    pub reason: Option<String>,
+}
+
+/// The most strokes a suggestion reads; beyond, only the latest ones (the repetition
+/// is near them and the answer must come within a pen-up's patience).
+pub const MAX_STROKES: usize = 400;
+/// The most copies `fill` proposes.
+pub const MAX_FILL_CELLS: usize = 5_000;
+/// Candidate periods start at the latest strokes.
+const RECENT: usize = 32;
+/// Candidate periods evaluated in full, shortest first.
+const MAX_TRIED: usize = 48;
+/// Share of the strokes that must sit at a motif position drawn at least twice.
+const EXPLAINED: f64 = 0.7;
+/// Matching tolerance, as a fraction of the spacing.
+const TOLERANCE: f64 = 0.3;
+/// Median distance of strokes from their lattice sites, as a fraction of the spacing.
+const MAX_RESIDUAL: f64 = 0.2;
+/// Confidence lost per period of distance from the nearest drawn copy.
+const FALLOFF: f64 = 0.85;
+
+fn nothing(reason: &str) -> Suggestions {
+    Suggestions { reason: Some(reason.into()), ..Suggestions::default() }
+}
+
+/// Proposes the next strokes of the repetition in `strokes` (in drawing order).
+pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Suggestions> {
+    if opts.count > 64 {
+        return invalid("count can be at most 64 copies; use fill to propose the whole region.");
+    }
+    let region = match opts.region {
+        Some([x, y, w, h]) => {
+            if ![x, y, w, h].iter().all(|v| v.is_finite()) || w <= 0.0 || h <= 0.0 {
+                return invalid("region must be [x, y, width, height] with finite numbers and a positive size.");
+            }
+            Some(Rect::new(x, y, x + w, y + h))
+        }
+        None if opts.fill => return invalid("fill needs a region: the canvas to fill."),
+        None => None,
+    };
+    if strokes.len() < 3 {
+        return Ok(nothing("Draw a motif two or three times and the next copies are proposed."));
+    }
+    let skip = strokes.len().saturating_sub(MAX_STROKES);
+    let strokes = &strokes[skip..];
+    let classification = classify_strokes(strokes, opts.path_tolerance, opts.width_tolerance, opts.color_tolerance)?;
+    let elems: Vec<Element> = strokes
+        .iter()
+        .zip(&classification.classes)
+        .map(|(s, &class)| Element { pos: s.reference_point(), class })
+        .collect();
+    let Ok(spread) = Spread::new(&elems) else {
+        return Ok(nothing("The strokes have no spacing to repeat."));
+    };
+    let Some(fit) = Fit::find(&elems, &spread) else {
+        return Ok(nothing("The drawing shows no repetition yet."));
+    };
+    let latest = elems.len() - 1;
+    if fit.motif[fit.cell[latest].0].members.len() < 2 {
+        return Ok(nothing("The latest stroke does not repeat the pattern."));
+    }
+    let wanted = fit.wanted(&elems, region, opts);
+    let mut out = Suggestions {
+        periods: std::iter::once(fit.a).chain(fit.b).map(|v| [v.x, v.y]).collect(),
+        ..Suggestions::default()
+    };
+    let mut members = vec![Vec::new(); classification.count as usize];
+    for (i, &c) in classification.classes.iter().enumerate() {
+        members[c as usize].push(i);
+    }
+    for (m, cell, steps) in wanted {
+        let motif = &fit.motif[m];
+        // Seeded by the place, so a copy keeps its look from one pen-up to the next.
+        let mut rng = Rng::new(
+            opts.seed
+                ^ (m as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15)
+                ^ (cell.0 as u64).wrapping_mul(0xC2B2_AE3D)
+                ^ (cell.1 as u64).wrapping_mul(0x1656_67B1),
+        );
+        let source = motif.members[rng.below(motif.members.len())];
+        let class = &members[elems[source].class as usize];
+        let pick = if opts.variation { class[rng.below(class.len())] } else { source };
+        let target = fit.site(m, cell) + (elems[source].pos - fit.site(m, fit.at(source)));
+        let s = &strokes[pick];
+        let r = s.reference_point();
+        out.strokes.push(s.translated(target.x - r.x, target.y - r.y));
+        out.confidence.push(fit.quality * FALLOFF.powi(steps as i32));
+        out.sources.push((source + skip) as u32);
+        out.cells.push([cell.0, cell.1]);
+    }
+    if out.strokes.is_empty() {
+        out.reason = Some("Every copy of the repetition in the region is drawn.".into());
+    }
+    Ok(out)
+}
+
+/// A motif position: its class, its site in cell (0, 0) and the strokes drawn there.
+#[derive(Clone, Debug)]
+struct MotifPosition {
+    class: u32,
+    origin: Point,
+    members: Vec<usize>,
+}
+
+/// A lattice that explains the drawing.
+#[derive(Clone, Debug)]
+struct Fit {
+    a: Vec2,
+    b: Option<Vec2>,
+    motif: Vec<MotifPosition>,
+    /// Motif position and cell of each stroke.
+    cell: Vec<(usize, (i64, i64))>,
+    /// Share of the strokes explained, less their residual.
+    quality: f64,
+}
+
+impl Fit {
+    /// The best lattice of `elems`, or `None` when no candidate explains them.
+    fn find(elems: &[Element], spread: &Spread) -> Option<Fit> {
+        let tol = TOLERANCE * spread.spacing;
+        let candidates = candidates(elems, spread, tol);
+        let row = candidates.iter().take(MAX_TRIED).find_map(|&a| Fit::build(elems, spread, tol, a, None));
+        let row = row?;
+        let a = row.a;
+        for &b in candidates.iter().filter(|v| a.cross(**v).abs() > 0.3 * a.hypot() * v.hypot()).take(MAX_TRIED) {
+            if let Some(f) = Fit::build(elems, spread, tol, a, Some(b)) {
+                return Some(f);
+            }
+        }
+        Some(row)
+    }
+
+    /// The lattice of periods `a` (and `b`) over `elems`, if it explains them.
+    fn build(elems: &[Element], spread: &Spread, tol: f64, a: Vec2, b: Option<Vec2>) -> Option<Fit> {
+        let n = elems.len();
+        let partner = |i: usize, v: Vec2| -> Option<usize> {
+            let p = elems[i].pos + v;
+            let mut best: Option<(usize, f64)> = None;
+            spread.grid.for_each_near(p, tol, |j| {
+                let o = &elems[j as usize];
+                let d2 = (o.pos - p).hypot2();
+                if o.class == elems[i].class && d2 < tol * tol && best.is_none_or(|b| d2 < b.1) {
+                    best = Some((j as usize, d2));
+                }
+            });
+            best.map(|b| b.0)
+        };
+        let steps: Vec<(Vec2, i64, i64)> =
+            [(a, 1, 0), (-a, -1, 0)].into_iter().chain(b.into_iter().flat_map(|b| [(b, 0, 1), (-b, 0, -1)])).collect();
+        // Components reached by whole periods, each with lattice coordinates.
+        let mut coord: Vec<Option<(usize, i64, i64)>> = vec![None; n];
+        let mut components = 0;
+        for root in 0..n {
+            if coord[root].is_some() {
+                continue;
+            }
+            coord[root] = Some((components, 0, 0));
+            let mut stack = vec![root];
+            while let Some(i) = stack.pop() {
+                let (c, u, w) = coord[i].expect("set before pushed");
+                for &(v, du, dw) in &steps {
+                    if let Some(j) = partner(i, v) {
+                        match coord[j] {
+                            None => {
+                                coord[j] = Some((c, u + du, w + dw));
+                                stack.push(j);
+                            }
+                            // Reached again at another cell: the periods do not fit.
+                            Some((_, u2, w2)) if (u2, w2) != (u + du, w + dw) => return None,
+                            Some(_) => {}
+                        }
+                    }
+                }
+            }
+            components += 1;
+        }
+        // Components of one class whose sites differ by whole periods are one motif
+        // position (a copy left out between them splits a chain).
+        let lattice = Lattice { a, b };
+        let origin = elems[0].pos;
+        let mut sums = vec![(Vec2::ZERO, 0usize, 0u32); components];
+        for (i, c) in coord.iter().enumerate() {
+            let (k, u, w) = c.expect("every stroke reached");
+            sums[k].0 += elems[i].pos - lattice.step(u, w) - origin;
+            sums[k].1 += 1;
+            sums[k].2 = elems[i].class;
+        }
+        let mut motif: Vec<MotifPosition> = Vec::new();
+        // Per component: its motif position and the cell shift that aligns it.
+        let mut place = vec![(0usize, 0i64, 0i64); components];
+        for (k, &(sum, count, class)) in sums.iter().enumerate() {
+            let site = origin + sum / count as f64;
+            let found = motif.iter().enumerate().find_map(|(m, mp)| {
+                if mp.class != class {
+                    return None;
+                }
+                let (du, dw) = lattice.whole(site - mp.origin, tol)?;
+                Some((m, du, dw))
+            });
+            place[k] = match found {
+                Some(p) => p,
+                None => {
+                    motif.push(MotifPosition { class, origin: site, members: Vec::new() });
+                    (motif.len() - 1, 0, 0)
+                }
+            };
+        }
+        let cell: Vec<(usize, (i64, i64))> = coord
+            .iter()
+            .map(|c| {
+                let (k, u, w) = c.expect("every stroke reached");
+                let (m, du, dw) = place[k];
+                (m, (u + du, w + dw))
+            })
+            .collect();
+        for (i, &(m, _)) in cell.iter().enumerate() {
+            motif[m].members.push(i);
+        }
+        let explained: usize = motif.iter().filter(|m| m.members.len() >= 2).map(|m| m.members.len()).sum();
+        if explained < 3 || (explained as f64) < EXPLAINED * n as f64 {
+            return None;
+        }
+        // Periods by least squares over every stroke (one pair's offset carries its two
+        // strokes' jitter), then each site from its members' mean, then the residuals.
+        let (a, b) = refine(elems, &motif, &cell, a, b);
+        let a = square(a);
+        let b = b.map(|b| shear(a, square(b)));
+        let lattice = Lattice { a, b };
+        for mp in motif.iter_mut() {
+            let sum = mp
+                .members
+                .iter()
+                .fold(Vec2::ZERO, |s, &i| s + (elems[i].pos - lattice.step(cell[i].1 .0, cell[i].1 .1)).to_vec2());
+            mp.origin = (sum / mp.members.len() as f64).to_point();
+        }
+        let fit = Fit { a, b, motif, cell, quality: 0.0 };
+        let mut residuals: Vec<f64> =
+            (0..n).map(|i| fit.site(fit.cell[i].0, fit.cell[i].1).distance(elems[i].pos)).collect();
+        crate::order::floats(&mut residuals);
+        let residual = residuals[n / 2];
+        if residual > MAX_RESIDUAL * spread.spacing || fit.contradicted(elems, tol) {
+            return None;
+        }
+        let quality = (explained as f64 / n as f64) * (1.0 - residual / spread.spacing);
+        Some(Fit { quality, ..fit })
+    }
+
+    /// Whether a motif position is drawn twice in one cell, leaves a cell out inside one
+    /// of its lines, or stops short of a stroke of its class further along a line
+    /// (within three periods).
+    fn contradicted(&self, elems: &[Element], tol: f64) -> bool {
+        let mut cells: BTreeSet<(usize, i64, i64)> = BTreeSet::new();
+        for &(m, (u, w)) in &self.cell {
+            if !cells.insert((m, u, w)) {
+                return true;
+            }
+        }
+        let lattice = self.lattice();
+        // Lines along the periods and, in a lattice, along their diagonals: a lattice
+        // too fine for the drawing puts sites between drawn copies on one of them.
+        let axes: Vec<(i64, i64)> = if self.b.is_some() {
+            vec![(1, 0), (-1, 0), (0, 1), (0, -1), (1, 1), (-1, -1), (1, -1), (-1, 1)]
+        } else {
+            vec![(1, 0), (-1, 0)]
+        };
+        for (m, mp) in self.motif.iter().enumerate() {
+            for &(du, dw) in &axes {
+                let dir = lattice.step(du, dw);
+                let len = dir.hypot();
+                // Per line of cells along (du, dw): the lowest and highest place on it,
+                // the last cell, and how many cells are drawn.
+                let mut lines: BTreeMap<i64, (i64, i64, (i64, i64), usize)> = BTreeMap::new();
+                for &i in &mp.members {
+                    let (u, w) = self.cell[i].1;
+                    let (line, along) = (u * dw - w * du, u * du + w * dw);
+                    let e = lines.entry(line).or_insert((along, along, (u, w), 0));
+                    e.0 = e.0.min(along);
+                    if along > e.1 {
+                        e.1 = along;
+                        e.2 = (u, w);
+                    }
+                    e.3 += 1;
+                }
+                // A row with a cell left out inside it: the period skips copies. (Only
+                // for a row: in a lattice, copies are often filled in out of order.)
+                if self.b.is_none() && lines.values().any(|&(low, high, _, k)| high - low + 1 != k as i64) {
+                    return true;
+                }
+                for &(_, _, (u, w), _) in lines.values() {
+                    let next = self.site(m, (u + du, w + dw));
+                    let beyond = elems.iter().any(|o| {
+                        if o.class != mp.class {
+                            return false;
+                        }
+                        let d = o.pos - next;
+                        let t = d.dot(dir) / len;
+                        let off = (d.cross(dir) / len).abs();
+                        off < tol && t > tol && t < 3.0 * len
+                    });
+                    let there = elems.iter().any(|o| o.class == mp.class && o.pos.distance(next) < tol);
+                    if beyond && !there {
+                        return true;
+                    }
+                }
+            }
+        }
+        false
+    }
+
+    fn lattice(&self) -> Lattice {
+        Lattice { a: self.a, b: self.b }
+    }
+
+    /// Site of motif position `m` in cell `(u, w)`.
+    fn site(&self, m: usize, (u, w): (i64, i64)) -> Point {
+        self.motif[m].origin + self.lattice().step(u, w)
+    }
+
+    fn at(&self, i: usize) -> (i64, i64) {
+        self.cell[i].1
+    }
+
+    /// The (motif position, cell, periods from the nearest drawn copy) to propose.
+    fn wanted(
+        &self,
+        elems: &[Element],
+        region: Option<Rect>,
+        opts: &SuggestOptions,
+    ) -> Vec<(usize, (i64, i64), usize)> {
+        let inside = |m: usize, c: (i64, i64)| region.is_none_or(|r| r.contains(self.site(m, c)));
+        let drawn: BTreeSet<(usize, (i64, i64))> = self.cell.iter().copied().collect();
+        let occupied: BTreeSet<(i64, i64)> = self.cell.iter().map(|c| c.1).collect();
+        let neighbours: Vec<(i64, i64)> =
+            if self.b.is_some() { vec![(1, 0), (-1, 0), (0, 1), (0, -1)] } else { vec![(1, 0), (-1, 0)] };
+        let any_inside = |c: (i64, i64)| (0..self.motif.len()).any(|m| inside(m, c));
+        let latest = self.at(elems.len() - 1);
+        // The rhythm: from the cell drawn before the latest one to the latest.
+        let previous = (0..elems.len()).rev().map(|i| self.at(i)).find(|&c| c != latest);
+        let rhythm = previous.map_or((1, 0), |p| (latest.0 - p.0, latest.1 - p.1));
+
+        let mut cells: Vec<((i64, i64), usize)> = occupied.iter().map(|&c| (c, 0)).collect();
+        let mut taken: BTreeSet<(i64, i64)> = occupied.clone();
+        if opts.fill {
+            // Every cell reachable from the drawn ones through cells in the region.
+            let mut queue: std::collections::VecDeque<((i64, i64), usize)> = cells.iter().copied().collect();
+            while let Some((c, d)) = queue.pop_front() {
+                for &(du, dw) in &neighbours {
+                    let n = (c.0 + du, c.1 + dw);
+                    if taken.len() < MAX_FILL_CELLS && !taken.contains(&n) && any_inside(n) {
+                        taken.insert(n);
+                        cells.push((n, d + 1));
+                        queue.push_back((n, d + 1));
+                    }
+                }
+            }
+        } else {
+            // The next cells along the rhythm, else the free neighbour nearest the latest.
+            let mut last = latest;
+            for _ in 0..opts.count {
+                let along = (last.0 + rhythm.0, last.1 + rhythm.1);
+                let next = if !taken.contains(&along) && any_inside(along) && adjacent(&taken, along, &neighbours) {
+                    Some(along)
+                } else {
+                    let here = self.lattice().step(latest.0, latest.1);
+                    taken
+                        .iter()
+                        .flat_map(|&c| neighbours.iter().map(move |&(du, dw)| (c.0 + du, c.1 + dw)))
+                        .filter(|c| !taken.contains(c) && any_inside(*c))
+                        // The latest copy's line of cells first: a row is finished before the next.
+                        .min_by(|p, q| {
+                            let dp = (self.lattice().step(p.0, p.1) - here).hypot2();
+                            let dq = (self.lattice().step(q.0, q.1) - here).hypot2();
+                            (p.1 != latest.1).cmp(&(q.1 != latest.1)).then(dp.total_cmp(&dq)).then(p.cmp(q))
+                        })
+                };
+                let Some(next) = next else { break };
+                let steps = neighbours
+                    .iter()
+                    .filter_map(|&(du, dw)| cells.iter().find(|(c, _)| *c == (next.0 - du, next.1 - dw)).map(|x| x.1))
+                    .min()
+                    .unwrap_or(0)
+                    + 1;
+                taken.insert(next);
+                cells.push((next, steps));
+                last = next;
+            }
+        }
+        let mut out = Vec::new();
+        for (c, steps) in cells {
+            // Motif positions drawn once are not yet part of the repetition.
+            for m in 0..self.motif.len() {
+                if self.motif[m].members.len() >= 2 && !drawn.contains(&(m, c)) && inside(m, c) {
+                    out.push((m, c, steps));
+                }
+            }
+        }
+        out
+    }
+}
+
+/// The periods that best explain the strokes' positions given their cells: with `d`
+/// a stroke's offset from its motif position's mean and `(du, dw)` its cell's, the least
+/// squares solution of `d = du a + dw b`.
+fn refine(
+    elems: &[Element],
+    motif: &[MotifPosition],
+    cell: &[(usize, (i64, i64))],
+    a: Vec2,
+    b: Option<Vec2>,
+) -> (Vec2, Option<Vec2>) {
+    let (mut suu, mut suw, mut sww) = (0.0, 0.0, 0.0);
+    let (mut su, mut sw) = (Vec2::ZERO, Vec2::ZERO);
+    for mp in motif.iter().filter(|m| m.members.len() >= 2) {
+        let k = mp.members.len() as f64;
+        let mean_p = mp.members.iter().fold(Vec2::ZERO, |s, &i| s + elems[i].pos.to_vec2()) / k;
+        let mean_u = mp.members.iter().map(|&i| cell[i].1 .0 as f64).sum::<f64>() / k;
+        let mean_w = mp.members.iter().map(|&i| cell[i].1 .1 as f64).sum::<f64>() / k;
+        for &i in &mp.members {
+            let d = elems[i].pos.to_vec2() - mean_p;
+            let (du, dw) = (cell[i].1 .0 as f64 - mean_u, cell[i].1 .1 as f64 - mean_w);
+            suu += du * du;
+            suw += du * dw;
+            sww += dw * dw;
+            su += d * du;
+            sw += d * dw;
+        }
+    }
+    match b {
+        None if suu > 0.0 => (su / suu, None),
+        Some(_) => {
+            let det = suu * sww - suw * suw;
+            if det.abs() < 1e-9 * (suu * sww).max(1e-300) {
+                // Every stroke on one line of cells: `b` is not observed apart from `a`.
+                return (a, b);
+            }
+            ((su * sww - sw * suw) / det, Some((sw * suu - su * suw) / det))
+        }
+        None => (a, b),
+    }
+}
+
+/// Periods within this angle of the canvas's axes are taken along them.
+const SQUARE_DEGREES: f64 = 2.5;
+
+/// `v` turned onto the nearest canvas axis when it is within `SQUARE_DEGREES` of it: a
+/// row drawn by hand is meant level (a few copies leave its slope uncertain by a degree
+/// or two, and every copy proposed further along would drift off the row).
+fn square(v: Vec2) -> Vec2 {
+    let len = v.hypot();
+    let quarter = std::f64::consts::FRAC_PI_2;
+    let angle = v.y.atan2(v.x);
+    let axis = (angle / quarter).round() * quarter;
+    if (angle - axis).abs() < SQUARE_DEGREES.to_radians() {
+        Vec2::new(len * axis.cos(), len * axis.sin())
+    } else {
+        v
+    }
+}
+
+/// `b`'s offset along `a` taken as a simple fraction of `a` (whole, halves, thirds,
+/// quarters) when it is within this share of `a` of one.
+const SHEAR_SNAP: f64 = 0.04;
+
+/// `b` with its offset along `a` snapped to a simple fraction: rows of a lattice drawn
+/// by hand sit straight above one another or half a period over (brick, hexagonal),
+/// and a few copies leave the offset uncertain by a few percent, which grows row by row.
+fn shear(a: Vec2, b: Vec2) -> Vec2 {
+    let t = b.dot(a) / a.hypot2();
+    let nearest = [1.0, 2.0, 3.0, 4.0]
+        .iter()
+        .map(|&q| (t * q).round() / q)
+        .min_by(|x, y| (x - t).abs().total_cmp(&(y - t).abs()))
+        .unwrap_or(t);
+    if (nearest - t).abs() < SHEAR_SNAP {
+        b + a * (nearest - t)
+    } else {
+        b
+    }
+}
+
+fn adjacent(taken: &BTreeSet<(i64, i64)>, c: (i64, i64), neighbours: &[(i64, i64)]) -> bool {
+    neighbours.iter().any(|&(du, dw)| taken.contains(&(c.0 - du, c.1 - dw)))
+}
+
+/// Periods `a` and `b` (a row when there is no `b`).
+#[derive(Clone, Copy, Debug)]
+struct Lattice {
+    a: Vec2,
+    b: Option<Vec2>,
+}
+
+impl Lattice {
+    fn step(&self, u: i64, w: i64) -> Vec2 {
+        self.a * u as f64 + self.b.unwrap_or(Vec2::ZERO) * w as f64
+    }
+
+    /// The whole periods `(u, w)` that make up `d` (within `tol`), if any.
+    fn whole(&self, d: Vec2, tol: f64) -> Option<(i64, i64)> {
+        let (u, w) = match self.b {
+            Some(b) => {
+                let det = self.a.cross(b);
+                ((d.cross(b) / det).round() as i64, (self.a.cross(d) / det).round() as i64)
+            }
+            None => ((d.dot(self.a) / self.a.hypot2()).round() as i64, 0),
+        };
+        ((d - self.step(u, w)).hypot() < tol).then_some((u, w))
+    }
+}
+
+/// Offsets between same-class strokes that recur (at least twice from the latest
+/// strokes), in one half-plane, shortest first.
+fn candidates(elems: &[Element], spread: &Spread, tol: f64) -> Vec<Vec2> {
+    let n = elems.len();
+    let mut offsets: Vec<Vec2> = Vec::new();
+    let first = n.saturating_sub(RECENT);
+    for i in first..n {
+        for (j, o) in elems.iter().enumerate() {
+            // Each pair once: a pair of two recent strokes was seen from the earlier.
+            if j == i || (j >= first && j < i) || o.class != elems[i].class {
+                continue;
+            }
+            let mut v = o.pos - elems[i].pos;
+            if v.hypot() <= 0.5 * spread.spacing {
+                continue;
+            }
+            if v.x < 0.0 || (v.x == 0.0 && v.y < 0.0) {
+                v = -v;
+            }
+            offsets.push(v);
+        }
+    }
+    let offsets = crate::order::sorted(&offsets, |v| v.hypot2());
+    // Cluster: each kept offset with the number of offsets within `tol` of it.
+    let mut kept: Vec<(Vec2, usize)> = Vec::new();
+    for v in offsets {
+        let len = v.hypot();
+        // Offsets near the half-plane's edge may have flipped: compare both signs.
+        let near = kept
+            .iter_mut()
+            .rev()
+            .take_while(|(k, _)| len - k.hypot() < tol)
+            .find(|(k, _)| (*k - v).hypot() < tol || (*k + v).hypot() < tol);
+        match near {
+            Some(k) => k.1 += 1,
+            None => kept.push((v, 1)),
+        }
+    }
+    kept.into_iter().filter(|&(_, votes)| votes >= 2).map(|(v, _)| v).collect()
+}
