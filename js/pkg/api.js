@@ -11,6 +11,7 @@ export const METHODS = {
   classifyStrokes: { args: 2, module: 'vector' },
   synthesizeStrokes: { args: 2, progress: true, module: 'vector' },
   strokeTile: { args: 2, module: 'vector' },
+  suggestStrokes: { args: 2, module: 'vector' },
   synthesizeTexture: { args: 2, progress: true, module: 'texture' },
   blendTextures: { args: 3, progress: true, module: 'texture' },
   seamlessTile: { args: 2, progress: true, module: 'texture' },

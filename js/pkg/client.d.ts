@@ -1,5 +1,5 @@
 import type {
-  Stroke, StrokeOptions, StrokeResult, TileOptions, TileResult, ParseSvgOptions, SvgImport, Classification, ClassifyOptions,
+  Stroke, StrokeOptions, StrokeResult, TileOptions, TileResult, ParseSvgOptions, SvgImport, Classification, ClassifyOptions, SuggestOptions, Suggestions,
   Rgba, RgbaImage, TextureOptions, BlendOptions, SeamlessOptions, SeamlessResult,
 } from './types.js';
 
@@ -25,6 +25,7 @@ export class PatternSynthClient {
   classifyStrokes(strokes: Stroke[], opts?: ClassifyOptions, options?: CallOptions): Promise<Classification>;
   synthesizeStrokes(strokes: Stroke[], opts: StrokeOptions, options?: CallOptions): Promise<StrokeResult>;
   strokeTile(strokes: Stroke[], opts?: TileOptions, options?: CallOptions): Promise<TileResult>;
+  suggestStrokes(strokes: Stroke[], opts?: SuggestOptions, options?: CallOptions): Promise<Suggestions>;
   synthesizeTexture(image: Rgba, opts: TextureOptions, options?: CallOptions): Promise<RgbaImage>;
   blendTextures(a: Rgba, b: Rgba, opts: BlendOptions, options?: CallOptions): Promise<RgbaImage>;
   seamlessTile(image: Rgba, opts?: SeamlessOptions, options?: CallOptions): Promise<SeamlessResult>;

@@ -11,6 +11,6 @@ export function restarts(): number;
 /** Loads the image codec module (decodeImage, encodePng); Node loads it at import. */
 export declare const initCodecs: Init;
 export declare const initCodecsSync: InitSync;
-export { version, parseSvg, parseSvgReport, classifyStrokes, synthesizeStrokes, strokeTile } from './vector.js';
+export { version, parseSvg, parseSvgReport, classifyStrokes, synthesizeStrokes, strokeTile, suggestStrokes } from './vector.js';
 export { synthesizeTexture, blendTextures, seamlessTile } from './texture.js';
 export { decodeImage, encodePng } from './codec.js';

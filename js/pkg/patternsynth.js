@@ -19,6 +19,7 @@ export const parseSvgReport = full.method('parseSvgReport');
 export const classifyStrokes = full.method('classifyStrokes');
 export const synthesizeStrokes = full.method('synthesizeStrokes');
 export const strokeTile = full.method('strokeTile');
+export const suggestStrokes = full.method('suggestStrokes');
 export const synthesizeTexture = full.method('synthesizeTexture');
 export const blendTextures = full.method('blendTextures');
 export const seamlessTile = full.method('seamlessTile');

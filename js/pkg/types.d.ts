@@ -31,6 +31,24 @@ export interface SvgImport { strokes: Stroke[]; warnings: string[]; width: numbe
 export interface Tolerances { path: number; width: number; color: number }
 export interface Classification { classes: number[]; count: number; tolerances: Tolerances; proposed: Tolerances }
 export interface ClassifyOptions { pathTolerance?: number; widthTolerance?: number; colorTolerance?: number }
+/** Options of `suggestStrokes`: `region` is the canvas `[x, y, width, height]` (required with `fill`). */
+export interface SuggestOptions extends ClassifyOptions {
+  region?: [number, number, number, number];
+  /** Copies to propose beyond those begun (default 3, at most 64). */
+  count?: number;
+  /** Propose every copy in the region instead. */
+  fill?: boolean;
+  variation?: boolean;
+  seed?: number;
+}
+/** Proposed strokes, each with its confidence in (0, 1], the drawn stroke whose place it repeats and its lattice cell. */
+export interface Suggestions {
+  strokes: Stroke[]; confidence: number[]; sources: number[]; cells: [number, number][];
+  /** The repetition's period vectors: one for a row, two for a lattice, none when there is none. */
+  periods: [number, number][];
+  /** Why nothing is proposed, when nothing is. */
+  reason?: string | null;
+}
 export interface StrokeOptions extends ClassifyOptions {
   width: number; height: number; variation?: boolean; seed?: number; support?: number;
   /** Refuse outputs estimated above this many elements (default 500,000; at most 2,000,000). */

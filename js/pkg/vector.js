@@ -16,3 +16,4 @@ export const parseSvgReport = vector.method('parseSvgReport');
 export const classifyStrokes = vector.method('classifyStrokes');
 export const synthesizeStrokes = vector.method('synthesizeStrokes');
 export const strokeTile = vector.method('strokeTile');
+export const suggestStrokes = vector.method('suggestStrokes');

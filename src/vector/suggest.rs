@@ -85,8 +85,9 @@ pub struct Suggestions {
 /// The most strokes a suggestion reads; beyond, only the latest ones (the repetition
 /// is near them and the answer must come within a pen-up's patience).
 pub const MAX_STROKES: usize = 400;
-/// The most copies `fill` proposes.
+/// The most copies `fill` proposes, and the most points all its strokes may hold.
 pub const MAX_FILL_CELLS: usize = 5_000;
+pub const MAX_FILL_POINTS: usize = 2_000_000;
 /// Candidate periods start at the latest strokes.
 const RECENT: usize = 32;
 /// Candidate periods evaluated in full, shortest first.
@@ -140,7 +141,9 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
     if fit.motif[fit.cell[latest].0].members.len() < 2 {
         return Ok(nothing("The latest stroke does not repeat the pattern."));
     }
-    let wanted = fit.wanted(&elems, region, opts);
+    let points = strokes.iter().map(|s| s.points.len().max(1)).sum::<usize>();
+    let per_copy = points.div_ceil(elems.len()) * fit.motif.len();
+    let wanted = fit.wanted(&elems, region, opts, (MAX_FILL_POINTS / per_copy.max(1)).clamp(1, MAX_FILL_CELLS));
     let mut out = Suggestions {
         periods: std::iter::once(fit.a).chain(fit.b).map(|v| [v.x, v.y]).collect(),
         ..Suggestions::default()
@@ -407,6 +410,7 @@ impl Fit {
         elems: &[Element],
         region: Option<Rect>,
         opts: &SuggestOptions,
+        max_cells: usize,
     ) -> Vec<(usize, (i64, i64), usize)> {
         let inside = |m: usize, c: (i64, i64)| region.is_none_or(|r| r.contains(self.site(m, c)));
         let drawn: BTreeSet<(usize, (i64, i64))> = self.cell.iter().copied().collect();
@@ -427,7 +431,7 @@ impl Fit {
             while let Some((c, d)) = queue.pop_front() {
                 for &(du, dw) in &neighbours {
                     let n = (c.0 + du, c.1 + dw);
-                    if taken.len() < MAX_FILL_CELLS && !taken.contains(&n) && any_inside(n) {
+                    if taken.len() < max_cells && !taken.contains(&n) && any_inside(n) {
                         taken.insert(n);
                         cells.push((n, d + 1));
                         queue.push_back((n, d + 1));

@@ -64,6 +64,15 @@ pub fn synthesize_strokes(strokes: JsValue, opts: JsValue, on_progress: JsValue)
     to_js(&progress.finish(res)?)
 }
 
+/// The next strokes of the repetition in a drawing (autocomplete): ghost strokes with a
+/// confidence each, or none with the reason.
+#[wasm_bindgen(js_name = suggestStrokes)]
+pub fn suggest_strokes(strokes: JsValue, opts: JsValue) -> Result<JsValue, JsValue> {
+    let strokes = strokes_from_js(strokes)?;
+    let opts: vector::SuggestOptions = from_js(opts, "suggestion options")?;
+    to_js(&vector::suggest_strokes(&strokes, &opts).map_err(js_error)?)
+}
+
 /// A seamless SVG tile of the strokes' repeat (SPEC 1.4): repeats as a CSS background.
 #[wasm_bindgen(js_name = strokeTile)]
 pub fn stroke_tile(strokes: JsValue, opts: JsValue) -> Result<JsValue, JsValue> {

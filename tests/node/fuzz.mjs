@@ -156,6 +156,7 @@ export function cases(seeds) {
     ['parseSvg', (r, ps) => ps.parseSvg(r.chance(0.5) ? weird(r) : r.pick(svgs), r.chance(0.3) ? weird(r) : undefined)],
     ['synthesizeStrokes', (r, ps) => ps.synthesizeStrokes(r.chance(0.05) ? weird(r) : strokes(r, ps, svgs), options(r, STROKE_OPTS, true), r.chance(0.1) ? weird(r) : undefined).strokes.length],
     ['strokeTile', (r, ps) => ps.strokeTile(strokes(r, ps, svgs), options(r, { repeats: (q) => number(q, 0, 9), seed: (q) => number(q, 0, 9), variation: (q) => q.chance(0.5) }, false)).strokes.length],
+    ['suggestStrokes', (r, ps) => ps.suggestStrokes(strokes(r, ps, svgs), options(r, { count: (q) => number(q, 0, 80), fill: (q) => q.chance(0.5), region: (q) => (q.chance(0.7) ? [number(q, -50, 50), number(q, -50, 50), number(q, -10, 2000), number(q, -10, 2000)] : weird(q)), seed: (q) => number(q, 0, 9) }, false)).strokes.length],
     ['classifyStrokes', (r, ps) => ps.classifyStrokes(strokes(r, ps, svgs), options(r, STROKE_OPTS, false)).count],
     ['decodeImage', (r, ps) => ps.decodeImage(r.chance(0.9) ? mutateBytes(r, r.pick(images)) : weird(r))],
     ['encodePng', (r, ps) => ps.encodePng(image(r)).length],
