@@ -126,11 +126,7 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
     let skip = strokes.len().saturating_sub(MAX_STROKES);
     let strokes = &strokes[skip..];
     let classification = classify_strokes(strokes, opts.path_tolerance, opts.width_tolerance, opts.color_tolerance)?;
-    let elems: Vec<Element> = strokes
-        .iter()
-        .zip(&classification.classes)
-        .map(|(s, &class)| Element { pos: s.reference_point(), class })
-        .collect();
+    let elems = classification.elements(strokes);
     let Ok(spread) = Spread::new(&elems) else {
         return Ok(nothing("The strokes have no spacing to repeat."));
     };
@@ -148,10 +144,7 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
         periods: std::iter::once(fit.a).chain(fit.b).map(|v| [v.x, v.y]).collect(),
         ..Suggestions::default()
     };
-    let mut members = vec![Vec::new(); classification.count as usize];
-    for (i, &c) in classification.classes.iter().enumerate() {
-        members[c as usize].push(i);
-    }
+    let members = classification.members();
     for (m, cell, steps) in wanted {
         let motif = &fit.motif[m];
         // Seeded by the place, so a copy keeps its look from one pen-up to the next.

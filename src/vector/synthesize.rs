@@ -65,6 +65,22 @@ pub struct Classification {
     pub proposed: Tolerances,
 }
 
+impl Classification {
+    /// Each stroke as a point element: its reference point and class.
+    pub fn elements(&self, strokes: &[Stroke]) -> Vec<Element> {
+        strokes.iter().zip(&self.classes).map(|(s, &class)| Element { pos: s.reference_point(), class }).collect()
+    }
+
+    /// The strokes of each class, in drawing order.
+    pub fn members(&self) -> Vec<Vec<usize>> {
+        let mut members = vec![Vec::new(); self.count as usize];
+        for (i, &c) in self.classes.iter().enumerate() {
+            members[c as usize].push(i);
+        }
+        members
+    }
+}
+
 #[derive(Clone, Debug, Serialize)]
 #[serde(rename_all = "camelCase")]
 pub struct StrokeResult {
@@ -136,11 +152,7 @@ pub fn synthesize_strokes(
     let mean_points = strokes.iter().map(|s| s.points.len().max(1)).sum::<usize>() / strokes.len().max(1);
     let max_elements = opts.max_elements.min(MAX_OUTPUT_POINTS / mean_points.max(1));
     Throttle::new(progress).tick(0.02)?;
-    let elements: Vec<Element> = strokes
-        .iter()
-        .zip(&classification.classes)
-        .map(|(s, &class)| Element { pos: s.reference_point(), class })
-        .collect();
+    let elements = classification.elements(strokes);
     let grow_opts = GrowOptions {
         width: opts.width,
         height: opts.height,
@@ -160,10 +172,7 @@ pub fn synthesize_strokes(
     };
     let (placed, stats): (_, GrowStats) = grow(&elements, &grow_opts, &mut Throttle::with_range(progress, 0.02, 0.98))?;
 
-    let mut members = vec![Vec::new(); classification.count as usize];
-    for (i, &c) in classification.classes.iter().enumerate() {
-        members[c as usize].push(i);
-    }
+    let members = classification.members();
     let mut rng = Rng::new(opts.seed);
     let mut order: Vec<usize> = (0..placed.len()).collect();
     // Layering follows the example: by the drawing order of the copied stroke.

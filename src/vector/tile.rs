@@ -16,7 +16,7 @@
 //! Strokes that cross the tile's edge are drawn again one period over, so the parts cut
 //! off at one edge come in at the opposite one.
 
-use super::grow::{fit_lattice, Element};
+use super::grow::fit_lattice;
 use super::stroke::Stroke;
 use super::svg::to_svg;
 use super::synthesize::{classify_strokes, Classification};
@@ -101,11 +101,7 @@ pub fn stroke_tile(strokes: &[Stroke], opts: &TileOptions) -> Result<TileResult>
         return invalid("repeats must be from 1 to 8.");
     }
     let classification = classify_strokes(strokes, opts.path_tolerance, opts.width_tolerance, opts.color_tolerance)?;
-    let elems: Vec<Element> = strokes
-        .iter()
-        .zip(&classification.classes)
-        .map(|(s, &class)| Element { pos: s.reference_point(), class })
-        .collect();
+    let elems = classification.elements(strokes);
     let Some(fit) = fit_lattice(&elems)? else {
         return invalid(
             "No regular repeat found in these strokes: a seamless tile needs a drawing that repeats \
@@ -169,10 +165,7 @@ pub fn stroke_tile(strokes: &[Stroke], opts: &TileOptions) -> Result<TileResult>
         }
     }
 
-    let mut members = vec![Vec::new(); classification.count as usize];
-    for (n, &c) in classification.classes.iter().enumerate() {
-        members[c as usize].push(n);
-    }
+    let members = classification.members();
     let mut rng = Rng::new(opts.seed);
     let tile = Rect::new(0.0, 0.0, width, height);
     let reach = (i.abs() + j.abs() + k.abs() + l.abs()) + 1;
