@@ -12,25 +12,66 @@ fn replayed(name: &str, jitter: f64) -> (patternsynth::vector::replay::Replay, u
 }
 
 #[test]
-fn rows_hexagons_and_colour_classes_come_mostly_from_accepted_proposals_and_none_is_wrong() {
-    for name in ["row", "pairs-row", "hexagonal", "classes-by-colour"] {
-        let (r, skip) = replayed(name, 0.03);
-        assert!(r.accepted_after(skip) >= 0.8, "{name}: {r:?}");
-        assert_eq!(r.wrong, 0, "{name}: {r:?}");
-        // A row needs three copies, a motif of several strokes two.
-        assert!(r.before_first <= skip + 1, "{name}: {r:?}");
+fn every_lattice_family_comes_mostly_from_accepted_proposals_and_none_is_wrong() {
+    // The aim at hand-drawn jitters of 2% and 3% of the spacing. (At 5% the
+    // periods of grids and hexagons are misjudged by more than the matching tolerance
+    // over a few periods: see the replay example.)
+    for jitter in [0.02, 0.03] {
+        for f in family_list() {
+            let (r, skip) = replayed(f.name, jitter);
+            assert!(r.accepted_after(skip) >= 0.8, "{} at {jitter}: {r:?}", f.name);
+            assert_eq!(r.wrong, 0, "{} at {jitter}: {r:?}", f.name);
+            // A row needs three copies, a motif of several strokes two (and a lattice
+            // a few more, to show its second period).
+            assert!(r.before_first <= skip + 1, "{} at {jitter}: {r:?}", f.name);
+        }
+    }
+}
+
+/// A hand-drawn cross: two strokes whose centres are a fraction of a unit apart.
+fn cross(x: f64, y: f64, wobble: f64) -> [Stroke; 2] {
+    [
+        Stroke::new(vec![[x - 15.0, y - 15.0 + wobble], [x, y + wobble / 2.0], [x + 15.0, y + 15.0]], 3.0, None),
+        Stroke::new(vec![[x + 15.0 + wobble, y - 15.0], [x, y], [x - 15.0, y + 15.0 - wobble]], 3.0, None),
+    ]
+}
+
+#[test]
+fn motifs_whose_parts_sit_on_one_another_repeat_by_their_own_period() {
+    // The nearest stroke of any class is the cross's other half, 0.5 units away: the
+    // spacing is taken between strokes further apart than a quarter of the class spacing.
+    let strokes: Vec<Stroke> =
+        [0.8, -0.6, 0.4].iter().enumerate().flat_map(|(i, &w)| cross(100.0 + 70.0 * i as f64, 120.0, w)).collect();
+    let s = suggest_strokes(&strokes, &SuggestOptions { region: Some([0.0, 0.0, 800.0, 500.0]), ..Default::default() })
+        .unwrap();
+    assert_eq!(s.strokes.len(), 6, "{:?}", s.reason);
+    for (k, p) in s.strokes.iter().enumerate() {
+        let c = p.reference_point();
+        let want = 100.0 + 70.0 * (3 + k / 2) as f64;
+        assert!((c.x - want).abs() < 1.5 && (c.y - 120.0).abs() < 1.5, "proposal {k} at {c:?}, want x {want}");
     }
 }
 
 #[test]
-fn every_lattice_family_is_mostly_accepted() {
-    // The floor measured, not the aim: wrong proposals reach 8-57% on grids, bricks and
-    // pairs drawn with this jitter (the period is estimated from a few copies).
-    for f in family_list() {
-        let (r, skip) = replayed(f.name, 0.03);
-        assert!(r.accepted_after(skip) >= 0.65, "{}: {r:?}", f.name);
-        assert!(r.accepted + r.by_hand == r.strokes, "{}: {r:?}", f.name);
-    }
+fn accepted_proposals_weigh_little_so_the_next_hand_drawn_copy_corrects_the_period() {
+    // Copies drawn at 0, 25 and 50, five accepted at 75-175, then one drawn by hand at
+    // 201, a unit further than the period says: marked as accepted, the five no longer
+    // hold the period at 25 and it moves toward the hand-drawn copies.
+    let dash = |x: f64| Stroke::new(vec![[x, 0.0], [x, 12.0]], 2.0, None);
+    let xs = [0.0, 25.0, 50.0, 75.0, 100.0, 125.0, 150.0, 175.0, 201.0];
+    let strokes: Vec<Stroke> = xs.iter().map(|&x| dash(x)).collect();
+    let next = |suggested: Vec<u32>| {
+        let s = suggest_strokes(&strokes, &SuggestOptions { count: 1, suggested, ..Default::default() }).unwrap();
+        assert_eq!(s.periods.len(), 1, "{:?}", s.reason);
+        s.periods[0][0]
+    };
+    let unmarked = next(vec![]);
+    let marked = next(vec![3, 4, 5, 6, 7]);
+    // Least squares over all nine copies vs over the four hand-drawn ones (weight 1).
+    assert!((unmarked - 25.0).abs() < 0.2, "{unmarked}");
+    assert!(marked > unmarked + 0.05, "{marked} vs {unmarked}");
+    let bad = suggest_strokes(&strokes, &SuggestOptions { suggested: vec![9], ..Default::default() });
+    assert!(bad.unwrap_err().to_string().contains("suggested lists stroke 9"));
 }
 
 fn proposals_over_prefixes(strokes: &[Stroke]) -> usize {

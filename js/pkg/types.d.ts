@@ -38,6 +38,8 @@ export interface SuggestOptions extends ClassifyOptions {
   count?: number;
   /** Propose every copy in the region instead. */
   fill?: boolean;
+  /** Indices of the strokes that are accepted proposals: they weigh little in the fit. */
+  suggested?: number[];
   variation?: boolean;
   seed?: number;
 }

@@ -46,8 +46,9 @@ pub(super) struct Reference<'a> {
     pub(super) surrounded: Vec<bool>,
 }
 
-fn nearest_distances(elems: &[Element], same_class: bool, skip_coincident: bool, grid: &Grid, scale: f64) -> Vec<f64> {
-    let eps = scale * 1e-9;
+/// Each element's distance to its nearest other (of its class, with `same_class`)
+/// further than `beyond`; pass a negative `beyond` to count coincident elements.
+fn nearest_distances(elems: &[Element], same_class: bool, beyond: f64, grid: &Grid, scale: f64) -> Vec<f64> {
     elems
         .iter()
         .enumerate()
@@ -61,7 +62,7 @@ fn nearest_distances(elems: &[Element], same_class: bool, skip_coincident: bool,
                         return;
                     }
                     let d = o.pos.distance(e.pos);
-                    if (!skip_coincident || d > eps) && d < best {
+                    if d > beyond && d < best {
                         best = d;
                     }
                 });
@@ -205,12 +206,27 @@ impl Spread {
         for (i, e) in elems.iter().enumerate() {
             grid.insert(i as u32, e.pos);
         }
-        let mut any = nearest_distances(elems, false, true, &grid, rough);
+        let mut any = nearest_distances(elems, false, rough * 1e-9, &grid, rough);
         let spacing = median(&mut any);
         if !spacing.is_finite() || spacing <= 0.0 {
             return invalid("All strokes are centred on the same point: there is no spacing to repeat.");
         }
         Ok(Spread { bounds, grid, rough, spacing })
+    }
+
+    /// The spacing without near-coincident neighbours: the median distance to the
+    /// nearest element further than a quarter of the median distance between elements
+    /// of one class. The parts of a motif drawn on one another (the two strokes of a
+    /// hand-drawn cross, a fraction of a unit apart) say nothing of the period.
+    pub(super) fn apart(&self, elems: &[Element]) -> f64 {
+        let finite = |d: Vec<f64>| -> Vec<f64> { d.into_iter().filter(|d| d.is_finite()).collect() };
+        let mut same = finite(nearest_distances(elems, true, self.rough * 1e-9, &self.grid, self.rough));
+        let floor = 0.25 * median(&mut same);
+        let mut any = finite(nearest_distances(elems, false, floor.max(self.rough * 1e-9), &self.grid, self.rough));
+        match median(&mut any) {
+            m if m > 0.0 => m,
+            _ => self.spacing,
+        }
     }
 }
 
@@ -222,7 +238,7 @@ impl<'a> Reference<'a> {
     pub(super) fn on(elems: &'a [Element], spread: Spread) -> Result<Self> {
         let Spread { bounds, grid, rough, spacing } = spread;
         let (n, extent) = (elems.len(), bounds.width().max(bounds.height()));
-        let mut with_coincident = nearest_distances(elems, false, false, &grid, rough);
+        let mut with_coincident = nearest_distances(elems, false, -1.0, &grid, rough);
         let cross_radius = 0.5 * median(&mut with_coincident);
 
         let classes = elems.iter().map(|e| e.class as usize + 1).max().unwrap_or(0);
@@ -230,7 +246,7 @@ impl<'a> Reference<'a> {
         for (i, e) in elems.iter().enumerate() {
             by_class[e.class as usize].push(i as u32);
         }
-        let same = nearest_distances(elems, true, true, &grid, rough);
+        let same = nearest_distances(elems, true, rough * 1e-9, &grid, rough);
         let pair_radius = (0..classes)
             .map(|c| {
                 let mut d: Vec<f64> = by_class[c].iter().map(|&i| same[i as usize]).filter(|d| d.is_finite()).collect();

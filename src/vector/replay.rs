@@ -41,7 +41,7 @@ impl Replay {
 /// `region`; a proposal matches a stroke to draw of its class whose reference point is
 /// within `tol`.
 pub fn replay(truth: &[Stroke], classes: &[u32], region: Rect, tol: f64) -> Replay {
-    let opts =
+    let mut opts =
         SuggestOptions { region: Some([region.x0, region.y0, region.width(), region.height()]), ..Default::default() };
     let mut done = vec![false; truth.len()];
     let mut drawn: Vec<Stroke> = Vec::new();
@@ -96,6 +96,8 @@ pub fn replay(truth: &[Stroke], classes: &[u32], region: Rect, tol: f64) -> Repl
         } else {
             for (g, k) in matched {
                 done[g] = true;
+                // As the page does: accepted strokes are marked so.
+                opts.suggested.push(drawn.len() as u32);
                 drawn.push(s.strokes[k].clone());
                 drawn_class.push(classes[g]);
                 r.accepted += 1;

@@ -28,7 +28,6 @@ use crate::error::{invalid, Result};
 use crate::rng::Rng;
 use kurbo::{Point, Rect, Vec2};
 use serde::{Deserialize, Serialize};
-use std::collections::{BTreeMap, BTreeSet};
 
 /// Options of `suggest_strokes`.
 #[derive(Clone, Debug, Deserialize)]
@@ -47,6 +46,11 @@ pub struct SuggestOptions {
     /// Each proposal takes a random member of its class (else the stroke at its place).
     pub variation: bool,
     pub seed: u64,
+    /// Indices of the strokes that are accepted proposals. They count for little in the
+    /// periods' fit: they repeat the periods they were proposed with, so without this a
+    /// period misjudged from the first copies drifts on through every accepted copy and
+    /// the next hand-drawn stroke cannot correct it.
+    pub suggested: Vec<u32>,
 }
 
 impl Default for SuggestOptions {
@@ -60,6 +64,7 @@ impl Default for SuggestOptions {
             color_tolerance: None,
             variation: true,
             seed: 1,
+            suggested: Vec::new(),
         }
     }
 }
@@ -100,6 +105,8 @@ const TOLERANCE: f64 = 0.3;
 const MAX_RESIDUAL: f64 = 0.2;
 /// Confidence lost per period of distance from the nearest drawn copy.
 const FALLOFF: f64 = 0.85;
+/// Weight of an accepted proposal in the periods' fit (a hand-drawn stroke's is 1).
+const SUGGESTED_WEIGHT: f64 = 0.05;
 
 fn nothing(reason: &str) -> Suggestions {
     Suggestions { reason: Some(reason.into()), ..Suggestions::default() }
@@ -120,17 +127,27 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
         None if opts.fill => return invalid("fill needs a region: the canvas to fill."),
         None => None,
     };
+    if let Some(&i) = opts.suggested.iter().find(|&&i| i as usize >= strokes.len()) {
+        return invalid(format!("suggested lists stroke {i}, but there are {} strokes.", strokes.len()));
+    }
     if strokes.len() < 3 {
         return Ok(nothing("Draw a motif two or three times and the next copies are proposed."));
     }
     let skip = strokes.len().saturating_sub(MAX_STROKES);
-    let strokes = &strokes[skip..];
+    let mut weight = vec![1.0; strokes.len() - skip];
+    for &i in &opts.suggested {
+        if let Some(w) = (i as usize).checked_sub(skip).and_then(|k| weight.get_mut(k)) {
+            *w = SUGGESTED_WEIGHT;
+        }
+    }
+    let (earlier, strokes) = strokes.split_at(skip);
     let classification = classify_strokes(strokes, opts.path_tolerance, opts.width_tolerance, opts.color_tolerance)?;
     let elems = classification.elements(strokes);
-    let Ok(spread) = Spread::new(&elems) else {
+    let Ok(mut spread) = Spread::new(&elems) else {
         return Ok(nothing("The strokes have no spacing to repeat."));
     };
-    let Some(fit) = Fit::find(&elems, &spread) else {
+    spread.spacing = spread.apart(&elems);
+    let Some(fit) = Fit::find(&elems, &weight, &spread) else {
         return Ok(nothing("The drawing shows no repetition yet."));
     };
     let latest = elems.len() - 1;
@@ -145,6 +162,19 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
         ..Suggestions::default()
     };
     let members = classification.members();
+    // A copy drawn where the lattice (fitted to hand-drawn copies) no longer puts it is
+    // still drawn: nothing is proposed on a stroke of its class.
+    let tol = TOLERANCE * spread.spacing;
+    let drawn_at = |class: u32, p: Point, size: f64| {
+        let mut hit = false;
+        spread.grid.for_each_near(p, tol, |j| {
+            let o = &elems[j as usize];
+            hit |= o.class == class && o.pos.distance(p) < tol;
+        });
+        hit || earlier.iter().any(|e| {
+            e.reference_point().distance(p) < tol && (e.bounds().size().to_vec2().hypot() - size).abs() <= 0.25 * size
+        })
+    };
     for (m, cell, steps) in wanted {
         let motif = &fit.motif[m];
         // Seeded by the place, so a copy keeps its look from one pen-up to the next.
@@ -159,6 +189,9 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
         let pick = if opts.variation { class[rng.below(class.len())] } else { source };
         let target = fit.site(m, cell) + (elems[source].pos - fit.site(m, fit.at(source)));
         let s = &strokes[pick];
+        if drawn_at(elems[source].class, target, s.bounds().size().to_vec2().hypot()) {
+            continue;
+        }
         let r = s.reference_point();
         out.strokes.push(s.translated(target.x - r.x, target.y - r.y));
         out.confidence.push(fit.quality * FALLOFF.powi(steps as i32));
@@ -193,22 +226,38 @@ struct Fit {
 
 impl Fit {
     /// The best lattice of `elems`, or `None` when no candidate explains them.
-    fn find(elems: &[Element], spread: &Spread) -> Option<Fit> {
+    fn find(elems: &[Element], weight: &[f64], spread: &Spread) -> Option<Fit> {
         let tol = TOLERANCE * spread.spacing;
         let candidates = candidates(elems, spread, tol);
-        let row = candidates.iter().take(MAX_TRIED).find_map(|&a| Fit::build(elems, spread, tol, a, None));
-        let row = row?;
-        let a = row.a;
+        let rows = |check| {
+            candidates.iter().take(MAX_TRIED).find_map(|&a| Fit::build(elems, weight, spread, tol, a, None, check))
+        };
+        let row = rows(true);
+        // A lattice filled in out of order leaves cells out of its rows, which no row
+        // explains: its first period is then the first that fits as a row with a few.
+        let a = match &row {
+            Some(r) => r.a,
+            None => rows(false)?.a,
+        };
         for &b in candidates.iter().filter(|v| a.cross(**v).abs() > 0.3 * a.hypot() * v.hypot()).take(MAX_TRIED) {
-            if let Some(f) = Fit::build(elems, spread, tol, a, Some(b)) {
+            if let Some(f) = Fit::build(elems, weight, spread, tol, a, Some(b), true) {
                 return Some(f);
             }
         }
-        Some(row)
+        row
     }
 
-    /// The lattice of periods `a` (and `b`) over `elems`, if it explains them.
-    fn build(elems: &[Element], spread: &Spread, tol: f64, a: Vec2, b: Option<Vec2>) -> Option<Fit> {
+    /// The lattice of periods `a` (and `b`) over `elems`, if it explains them (without
+    /// `strict`, a row may leave a third of its cells out).
+    fn build(
+        elems: &[Element],
+        weight: &[f64],
+        spread: &Spread,
+        tol: f64,
+        a: Vec2,
+        b: Option<Vec2>,
+        strict: bool,
+    ) -> Option<Fit> {
         let n = elems.len();
         let partner = |i: usize, v: Vec2| -> Option<usize> {
             let p = elems[i].pos + v;
@@ -299,38 +348,39 @@ impl Fit {
         }
         // Periods by least squares over every stroke (one pair's offset carries its two
         // strokes' jitter), then each site from its members' mean, then the residuals.
-        let (a, b) = refine(elems, &motif, &cell, a, b);
+        let (a, b) = refine(elems, weight, &motif, &cell, a, b);
         let a = square(a);
         let b = b.map(|b| shear(a, square(b)));
         let lattice = Lattice { a, b };
         for mp in motif.iter_mut() {
-            let sum = mp
-                .members
-                .iter()
-                .fold(Vec2::ZERO, |s, &i| s + (elems[i].pos - lattice.step(cell[i].1 .0, cell[i].1 .1)).to_vec2());
-            mp.origin = (sum / mp.members.len() as f64).to_point();
+            let sum = mp.members.iter().fold(Vec2::ZERO, |s, &i| {
+                s + (elems[i].pos - lattice.step(cell[i].1 .0, cell[i].1 .1)).to_vec2() * weight[i]
+            });
+            mp.origin = (sum / mp.members.iter().map(|&i| weight[i]).sum::<f64>()).to_point();
         }
         let fit = Fit { a, b, motif, cell, quality: 0.0 };
         let mut residuals: Vec<f64> =
             (0..n).map(|i| fit.site(fit.cell[i].0, fit.cell[i].1).distance(elems[i].pos)).collect();
         crate::order::floats(&mut residuals);
         let residual = residuals[n / 2];
-        if residual > MAX_RESIDUAL * spread.spacing || fit.contradicted(elems, tol) {
+        if residual > MAX_RESIDUAL * spread.spacing || fit.contradicted(elems, tol, strict) {
             return None;
         }
         let quality = (explained as f64 / n as f64) * (1.0 - residual / spread.spacing);
         Some(Fit { quality, ..fit })
     }
 
-    /// Whether a motif position is drawn twice in one cell, leaves a cell out inside one
-    /// of its lines, or stops short of a stroke of its class further along a line
+    /// Whether a motif position is drawn twice in one cell, leaves cells out inside its
+    /// lines (in a row: any when `strict`, else a third of them: a sub-period leaves
+    /// half or more), or stops short of a stroke of its class further along a line
     /// (within three periods).
-    fn contradicted(&self, elems: &[Element], tol: f64) -> bool {
-        let mut cells: BTreeSet<(usize, i64, i64)> = BTreeSet::new();
-        for &(m, (u, w)) in &self.cell {
-            if !cells.insert((m, u, w)) {
-                return true;
-            }
+    fn contradicted(&self, elems: &[Element], tol: f64, strict: bool) -> bool {
+        // Sorted vectors rather than sets throughout: this runs on a few hundred strokes
+        // and the module stays smaller without the tree code.
+        let mut cells = self.cell.clone();
+        cells.sort_unstable();
+        if cells.windows(2).any(|p| p[0] == p[1]) {
+            return true;
         }
         let lattice = self.lattice();
         // Lines along the periods and, in a lattice, along their diagonals: a lattice
@@ -346,24 +396,30 @@ impl Fit {
                 let len = dir.hypot();
                 // Per line of cells along (du, dw): the lowest and highest place on it,
                 // the last cell, and how many cells are drawn.
-                let mut lines: BTreeMap<i64, (i64, i64, (i64, i64), usize)> = BTreeMap::new();
-                for &i in &mp.members {
-                    let (u, w) = self.cell[i].1;
-                    let (line, along) = (u * dw - w * du, u * du + w * dw);
-                    let e = lines.entry(line).or_insert((along, along, (u, w), 0));
-                    e.0 = e.0.min(along);
-                    if along > e.1 {
-                        e.1 = along;
-                        e.2 = (u, w);
-                    }
-                    e.3 += 1;
+                let mut places: Vec<(i64, i64, (i64, i64))> = mp
+                    .members
+                    .iter()
+                    .map(|&i| {
+                        let (u, w) = self.cell[i].1;
+                        (u * dw - w * du, u * du + w * dw, (u, w))
+                    })
+                    .collect();
+                places.sort_unstable();
+                let mut lines: Vec<(i64, i64, (i64, i64), usize)> = Vec::new();
+                for group in places.chunk_by(|p, q| p.0 == q.0) {
+                    let (first, last) = (group[0], group[group.len() - 1]);
+                    lines.push((first.1, last.1, last.2, group.len()));
                 }
                 // A row with a cell left out inside it: the period skips copies. (Only
                 // for a row: in a lattice, copies are often filled in out of order.)
-                if self.b.is_none() && lines.values().any(|&(low, high, _, k)| high - low + 1 != k as i64) {
-                    return true;
+                if self.b.is_none() {
+                    let span: i64 = lines.iter().map(|&(low, high, _, _)| high - low + 1).sum();
+                    let drawn = mp.members.len() as i64;
+                    if (strict && span != drawn) || 3 * drawn < 2 * span {
+                        return true;
+                    }
                 }
-                for &(_, _, (u, w), _) in lines.values() {
+                for &(_, _, (u, w), _) in &lines {
                     let next = self.site(m, (u + du, w + dw));
                     let beyond = elems.iter().any(|o| {
                         if o.class != mp.class {
@@ -406,8 +462,11 @@ impl Fit {
         max_cells: usize,
     ) -> Vec<(usize, (i64, i64), usize)> {
         let inside = |m: usize, c: (i64, i64)| region.is_none_or(|r| r.contains(self.site(m, c)));
-        let drawn: BTreeSet<(usize, (i64, i64))> = self.cell.iter().copied().collect();
-        let occupied: BTreeSet<(i64, i64)> = self.cell.iter().map(|c| c.1).collect();
+        let mut drawn = self.cell.clone();
+        drawn.sort_unstable();
+        let mut occupied: Vec<(i64, i64)> = self.cell.iter().map(|c| c.1).collect();
+        occupied.sort_unstable();
+        occupied.dedup();
         let neighbours: Vec<(i64, i64)> =
             if self.b.is_some() { vec![(1, 0), (-1, 0), (0, 1), (0, -1)] } else { vec![(1, 0), (-1, 0)] };
         let any_inside = |c: (i64, i64)| (0..self.motif.len()).any(|m| inside(m, c));
@@ -417,17 +476,18 @@ impl Fit {
         let rhythm = previous.map_or((1, 0), |p| (latest.0 - p.0, latest.1 - p.1));
 
         let mut cells: Vec<((i64, i64), usize)> = occupied.iter().map(|&c| (c, 0)).collect();
-        let mut taken: BTreeSet<(i64, i64)> = occupied.clone();
+        let mut taken = Cells(occupied);
         if opts.fill {
-            // Every cell reachable from the drawn ones through cells in the region.
-            let mut queue: std::collections::VecDeque<((i64, i64), usize)> = cells.iter().copied().collect();
-            while let Some((c, d)) = queue.pop_front() {
+            // Every cell reachable from the drawn ones through cells in the region, in
+            // breadth-first order (`cells` is the queue).
+            let mut head = 0;
+            while let Some(&(c, d)) = cells.get(head) {
+                head += 1;
                 for &(du, dw) in &neighbours {
                     let n = (c.0 + du, c.1 + dw);
-                    if taken.len() < max_cells && !taken.contains(&n) && any_inside(n) {
+                    if taken.len() < max_cells && !taken.contains(n) && any_inside(n) {
                         taken.insert(n);
                         cells.push((n, d + 1));
-                        queue.push_back((n, d + 1));
                     }
                 }
             }
@@ -436,14 +496,15 @@ impl Fit {
             let mut last = latest;
             for _ in 0..opts.count {
                 let along = (last.0 + rhythm.0, last.1 + rhythm.1);
-                let next = if !taken.contains(&along) && any_inside(along) && adjacent(&taken, along, &neighbours) {
+                let next = if !taken.contains(along) && any_inside(along) && taken.adjacent(along, &neighbours) {
                     Some(along)
                 } else {
                     let here = self.lattice().step(latest.0, latest.1);
                     taken
+                        .0
                         .iter()
                         .flat_map(|&c| neighbours.iter().map(move |&(du, dw)| (c.0 + du, c.1 + dw)))
-                        .filter(|c| !taken.contains(c) && any_inside(*c))
+                        .filter(|&c| !taken.contains(c) && any_inside(c))
                         // The latest copy's line of cells first: a row is finished before the next.
                         .min_by(|p, q| {
                             let dp = (self.lattice().step(p.0, p.1) - here).hypot2();
@@ -467,7 +528,7 @@ impl Fit {
         for (c, steps) in cells {
             // Motif positions drawn once are not yet part of the repetition.
             for m in 0..self.motif.len() {
-                if self.motif[m].members.len() >= 2 && !drawn.contains(&(m, c)) && inside(m, c) {
+                if self.motif[m].members.len() >= 2 && drawn.binary_search(&(m, c)).is_err() && inside(m, c) {
                     out.push((m, c, steps));
                 }
             }
@@ -477,10 +538,11 @@ impl Fit {
 }
 
 /// The periods that best explain the strokes' positions given their cells: with `d`
-/// a stroke's offset from its motif position's mean and `(du, dw)` its cell's, the least
-/// squares solution of `d = du a + dw b`.
+/// a stroke's offset from its motif position's (weighted) mean and `(du, dw)` its
+/// cell's, the weighted least squares solution of `d = du a + dw b`.
 fn refine(
     elems: &[Element],
+    weight: &[f64],
     motif: &[MotifPosition],
     cell: &[(usize, (i64, i64))],
     a: Vec2,
@@ -489,18 +551,19 @@ fn refine(
     let (mut suu, mut suw, mut sww) = (0.0, 0.0, 0.0);
     let (mut su, mut sw) = (Vec2::ZERO, Vec2::ZERO);
     for mp in motif.iter().filter(|m| m.members.len() >= 2) {
-        let k = mp.members.len() as f64;
-        let mean_p = mp.members.iter().fold(Vec2::ZERO, |s, &i| s + elems[i].pos.to_vec2()) / k;
-        let mean_u = mp.members.iter().map(|&i| cell[i].1 .0 as f64).sum::<f64>() / k;
-        let mean_w = mp.members.iter().map(|&i| cell[i].1 .1 as f64).sum::<f64>() / k;
+        let k: f64 = mp.members.iter().map(|&i| weight[i]).sum();
+        let mean_p = mp.members.iter().fold(Vec2::ZERO, |s, &i| s + elems[i].pos.to_vec2() * weight[i]) / k;
+        let mean_u = mp.members.iter().map(|&i| weight[i] * cell[i].1 .0 as f64).sum::<f64>() / k;
+        let mean_w = mp.members.iter().map(|&i| weight[i] * cell[i].1 .1 as f64).sum::<f64>() / k;
         for &i in &mp.members {
             let d = elems[i].pos.to_vec2() - mean_p;
             let (du, dw) = (cell[i].1 .0 as f64 - mean_u, cell[i].1 .1 as f64 - mean_w);
-            suu += du * du;
-            suw += du * dw;
-            sww += dw * dw;
-            su += d * du;
-            sw += d * dw;
+            let wi = weight[i];
+            suu += wi * du * du;
+            suw += wi * du * dw;
+            sww += wi * dw * dw;
+            su += d * (wi * du);
+            sw += d * (wi * dw);
         }
     }
     match b {
@@ -556,8 +619,28 @@ fn shear(a: Vec2, b: Vec2) -> Vec2 {
     }
 }
 
-fn adjacent(taken: &BTreeSet<(i64, i64)>, c: (i64, i64), neighbours: &[(i64, i64)]) -> bool {
-    neighbours.iter().any(|&(du, dw)| taken.contains(&(c.0 - du, c.1 - dw)))
+/// A set of lattice cells, kept sorted.
+struct Cells(Vec<(i64, i64)>);
+
+impl Cells {
+    fn len(&self) -> usize {
+        self.0.len()
+    }
+
+    fn contains(&self, c: (i64, i64)) -> bool {
+        self.0.binary_search(&c).is_ok()
+    }
+
+    fn insert(&mut self, c: (i64, i64)) {
+        if let Err(at) = self.0.binary_search(&c) {
+            self.0.insert(at, c);
+        }
+    }
+
+    /// Whether a neighbour of `c` is in the set.
+    fn adjacent(&self, c: (i64, i64), neighbours: &[(i64, i64)]) -> bool {
+        neighbours.iter().any(|&(du, dw)| self.contains((c.0 - du, c.1 - dw)))
+    }
 }
 
 /// Periods `a` and `b` (a row when there is no `b`).

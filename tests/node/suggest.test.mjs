@@ -35,4 +35,5 @@ test('a scribble gets no proposals and bad options a message', () => {
   assert.throws(() => ps.suggestStrokes(row(3), { fill: true }), /fill needs a region/);
   assert.throws(() => ps.suggestStrokes(row(3), { count: 1000 }), /at most 64/);
   assert.throws(() => ps.suggestStrokes(row(3), { regoin: [0, 0, 1, 1] }), /unknown option `regoin`/);
+  assert.throws(() => ps.suggestStrokes(row(3), { suggested: [3] }), /suggested lists stroke 3, but there are 3 strokes/);
 });

@@ -1,5 +1,6 @@
 // The drawing: strokes in canvas coordinates, pointer-event input (mouse, pen, touch),
-// undo/redo history, and rendering with an optional class overlay.
+// undo/redo history, and rendering with an optional class overlay and ghost strokes
+// (autocomplete's proposals, drawn faint; a tap on one is handed to `onTap`).
 
 /** Draws one stroke (polyline, maybe compound and closed) on a 2D context. */
 export function drawStroke(ctx, s) {
@@ -54,11 +55,13 @@ export function fitStrokes(strokes, w, h, margin = 20) {
 }
 
 export class Drawing {
-  constructor(canvas, { onChange, getPen }) {
+  constructor(canvas, { onChange, getPen, onTap }) {
     this.canvas = canvas;
     this.ctx = canvas.getContext('2d');
     this.onChange = onChange;
     this.getPen = getPen;
+    this.onTap = onTap;
+    this.ghosts = [];
     this.strokes = [];
     this.past = [];
     this.future = [];
@@ -116,10 +119,26 @@ export class Drawing {
     this.render();
   }
 
+  /** Shows proposed strokes faintly, fainter for lower `confidence` (0..1 each). */
+  showGhosts(ghosts, confidence = []) {
+    this.ghosts = ghosts;
+    this.ghostAlpha = ghosts.map((_, i) => 0.2 + 0.25 * (confidence[i] ?? 1));
+    this.render();
+  }
+
+  /** Whether `p` is on a ghost (within a few pixels of its bounds). */
+  onGhost([x, y]) {
+    return this.ghosts.some((s) => {
+      const b = bounds([s]);
+      return x >= b.x0 - 6 && x <= b.x1 + 6 && y >= b.y0 - 6 && y <= b.y1 + 6;
+    });
+  }
+
   render() {
     const { ctx } = this;
     ctx.clearRect(0, 0, this.logical.w, this.logical.h);
     for (const s of this.strokes) drawStroke(ctx, s);
+    this.ghosts.forEach((s, i) => drawStroke(ctx, { ...s, opacity: (s.opacity ?? 1) * this.ghostAlpha[i] }));
     if (this.live) drawStroke(ctx, this.live);
     if (this.classes && this.classes.length === this.strokes.length) {
       ctx.save();
@@ -168,7 +187,11 @@ export class Drawing {
       if (!this.live) return;
       const s = this.live;
       this.live = null;
-      if (keep && (s.stroke || s.fill)) this.set([...this.strokes, s]);
+      // A tap (no drag) on a ghost is not a dot: it is handed on (to accept the ghosts).
+      const b = bounds([s]);
+      const tap = Math.max(b.x1 - b.x0, b.y1 - b.y0) - s.width <= 4;
+      if (keep && tap && this.ghosts.length && this.onGhost(s.points[0]) && this.onTap?.(s.points[0])) this.render();
+      else if (keep && (s.stroke || s.fill)) this.set([...this.strokes, s]);
       else this.render();
     };
     c.addEventListener('pointerup', () => finish(true));

@@ -1,6 +1,7 @@
 // Vector strokes tab: draw or import, see classes, synthesize in the worker, download.
 import { Drawing, fitStrokes } from './canvas.js';
-import { classColors, defaultOptions, defaultPen, maxSide, storageKey } from '../shared/meta.js';
+import { Autocomplete } from './autocomplete.js';
+import { classColors, defaultOptions, defaultPen, maxSide, storageKey, suggestCount } from '../shared/meta.js';
 import { load, store as save } from '../../../shared/storage.js';
 import { offerDownload, runControls } from '../../../shared/run.js';
 
@@ -55,6 +56,7 @@ export function mountStrokes(root, client) {
   bind('regularize', 'regularize', Boolean, 'checked');
   bind('seed', 'seed', Number);
   bind('tile-repeats', 'tileRepeats', Number);
+  bind('autocomplete', 'autocomplete', Boolean, 'checked');
   for (const [key, id] of [['pathTolerance', 'path'], ['widthTolerance', 'width'], ['colorTolerance', 'color']]) {
     const input = $(`tol-${id}`), auto = $(`auto-${id}`);
     auto.checked = settings[key] === null || settings[key] === undefined;
@@ -65,27 +67,78 @@ export function mountStrokes(root, client) {
       settings[key] = auto.checked || input.value === '' ? null : Number(input.value);
       save(SETTINGS_KEY, settings);
       scheduleClassify();
+      autocomplete?.update();
     };
     auto.addEventListener('change', update);
     input.addEventListener('input', update);
   }
 
   // --- the drawing ---
+  let autocomplete = null;
   const drawing = new Drawing(canvas, {
     getPen: () => ({ width: Number(penWidth.value), stroke: settings.stroke, strokeOn: settings.strokeOn, fill: settings.fill, fillOn: settings.fillOn }),
     onChange: (strokes) => {
       save(storageKey, strokes);
       $('stroke-count').textContent = `${strokes.length} stroke${strokes.length === 1 ? '' : 's'}`;
       scheduleClassify();
+      autocomplete?.update();
+    },
+    onTap: () => {
+      if (!autocomplete.ghosts().length) return false;
+      autocomplete.accept();
+      return true;
     },
   });
+  canvas.addEventListener('pointerdown', () => canvas.focus());
   $('undo').addEventListener('click', () => drawing.undo());
   $('redo').addEventListener('click', () => drawing.redo());
   $('clear').addEventListener('click', () => drawing.set([]));
   document.addEventListener('keydown', (e) => {
-    if (!(e.ctrlKey || e.metaKey) || e.key.toLowerCase() !== 'z' || root.hidden) return;
+    if (root.hidden) return;
+    // Tab and Escape act on ghosts only from the canvas (or nothing focused), so Tab
+    // still moves focus through the page's controls.
+    const onCanvas = document.activeElement === canvas || document.activeElement === document.body;
+    if (e.key === 'Tab' && !e.shiftKey && onCanvas && autocomplete.ghosts().length) {
+      e.preventDefault();
+      autocomplete.accept();
+      return;
+    }
+    if (e.key === 'Escape' && onCanvas && autocomplete.dismiss()) return void e.preventDefault();
+    if (!(e.ctrlKey || e.metaKey) || e.key.toLowerCase() !== 'z') return;
     e.preventDefault();
     if (e.shiftKey) drawing.redo(); else drawing.undo();
+  });
+
+  // --- autocomplete ---
+  autocomplete = new Autocomplete({
+    client,
+    drawing,
+    options: () => ({ count: suggestCount, variation: settings.variation, seed: Number(settings.seed) || 0, ...tolerances() }),
+    enabled: () => settings.autocomplete !== false,
+    busy: () => runs.busy,
+    onState: ({ count, reason }) => {
+      $('accept-ghosts').disabled = !count;
+      $('dismiss-ghosts').disabled = !count;
+      $('suggest-status').textContent = count
+        ? `${count} suggested stroke${count === 1 ? '' : 's'}: Tab or tap a ghost to accept, Esc to dismiss.`
+        : settings.autocomplete === false ? '' : reason ?? '';
+    },
+  });
+  $('autocomplete').addEventListener('change', () => autocomplete.update());
+  $('accept-ghosts').addEventListener('click', () => autocomplete.accept());
+  $('dismiss-ghosts').addEventListener('click', () => autocomplete.dismiss());
+  $('fill-canvas').addEventListener('click', async () => {
+    if (runs.busy) return say('Wait for the synthesis to finish, or cancel it.', 'warn');
+    $('fill-canvas').disabled = true;
+    try {
+      const { added, reason } = await autocomplete.fill();
+      if (added) say(`Filled the canvas: ${added} strokes added (Undo takes them back).`);
+      else say(reason ?? 'Nothing to add.', 'warn');
+    } catch (e) {
+      say(e.message, 'error');
+    } finally {
+      $('fill-canvas').disabled = false;
+    }
   });
   $('show-classes').addEventListener('change', () => scheduleClassify(0));
 
@@ -191,6 +244,7 @@ export function mountStrokes(root, client) {
       say('Done.');
     });
     scheduleClassify(0);
+    autocomplete.update();
   });
 
   // --- seamless tile ---

@@ -13,7 +13,12 @@ export const defaultOptions = {
   seed: 1,
   /** Smallest repeats per side of a seamless tile. */
   tileRepeats: 2,
+  /** Propose the next copies of a repetition while drawing. */
+  autocomplete: true,
 };
+
+/** Copies autocomplete proposes beyond those begun. */
+export const suggestCount = 3;
 
 /** Drawing tool defaults. */
 export const defaultPen = { width: 3, stroke: '#1f2a44', strokeOn: true, fill: '#e8a33d', fillOn: false };
