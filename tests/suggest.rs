@@ -12,15 +12,15 @@ fn replayed(name: &str, jitter: f64) -> (patternsynth::vector::replay::Replay, u
 }
 
 #[test]
-fn every_lattice_family_comes_mostly_from_accepted_proposals_and_none_is_wrong() {
-    // The aim at hand-drawn jitters of 2% and 3% of the spacing. (At 5% the
-    // periods of grids and hexagons are misjudged by more than the matching tolerance
-    // over a few periods: see the replay example.)
+fn every_lattice_family_comes_mostly_from_accepted_proposals_and_few_are_wrong() {
+    // The aim (80% accepted, under 5% of shown ghosts wrong) at hand-drawn
+    // jitters of 2% and 3% of the spacing. (At 5%, a grid's period is misjudged by more
+    // than the matching tolerance over a few rows: see the replay example.)
     for jitter in [0.02, 0.03] {
         for f in family_list() {
             let (r, skip) = replayed(f.name, jitter);
             assert!(r.accepted_after(skip) >= 0.8, "{} at {jitter}: {r:?}", f.name);
-            assert_eq!(r.wrong, 0, "{} at {jitter}: {r:?}", f.name);
+            assert!(r.wrong_share() < 0.05, "{} at {jitter}: {r:?}", f.name);
             // A row needs three copies, a motif of several strokes two (and a lattice
             // a few more, to show its second period).
             assert!(r.before_first <= skip + 1, "{} at {jitter}: {r:?}", f.name);

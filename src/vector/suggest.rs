@@ -105,6 +105,9 @@ const TOLERANCE: f64 = 0.3;
 const MAX_RESIDUAL: f64 = 0.2;
 /// Confidence lost per period of distance from the nearest drawn copy.
 const FALLOFF: f64 = 0.85;
+/// A proposal is shown only where this many standard errors of its site fit in the
+/// matching tolerance.
+const UNCERTAIN: f64 = 2.5;
 /// Weight of an accepted proposal in the periods' fit (a hand-drawn stroke's is 1).
 const SUGGESTED_WEIGHT: f64 = 0.05;
 
@@ -192,6 +195,11 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
         if drawn_at(elems[source].class, target, s.bounds().size().to_vec2().hypot()) {
             continue;
         }
+        // Not so far ahead of the hand-drawn copies that the site is likely off by more
+        // than the tolerance (fill is asked for explicitly and goes everywhere).
+        if !opts.fill && UNCERTAIN * fit.error_at(cell) > tol {
+            continue;
+        }
         let r = s.reference_point();
         out.strokes.push(s.translated(target.x - r.x, target.y - r.y));
         out.confidence.push(fit.quality * FALLOFF.powi(steps as i32));
@@ -222,6 +230,18 @@ struct Fit {
     cell: Vec<(usize, (i64, i64))>,
     /// Share of the strokes explained, less their residual.
     quality: f64,
+    /// How far off the lattice may be in cell `(u, w)`: see `Fit::error_at`.
+    certainty: Certainty,
+}
+
+/// What the (weighted) drawn copies say about the lattice's error: their mean squared
+/// distance from their sites, their mean cell and the spread of their cells.
+#[derive(Clone, Copy, Debug, Default)]
+struct Certainty {
+    residual2: f64,
+    count: f64,
+    mean: (f64, f64),
+    spread: (f64, f64),
 }
 
 impl Fit {
@@ -358,7 +378,7 @@ impl Fit {
             });
             mp.origin = (sum / mp.members.iter().map(|&i| weight[i]).sum::<f64>()).to_point();
         }
-        let fit = Fit { a, b, motif, cell, quality: 0.0 };
+        let fit = Fit { a, b, motif, cell, quality: 0.0, certainty: Certainty::default() };
         let mut residuals: Vec<f64> =
             (0..n).map(|i| fit.site(fit.cell[i].0, fit.cell[i].1).distance(elems[i].pos)).collect();
         crate::order::floats(&mut residuals);
@@ -367,7 +387,8 @@ impl Fit {
             return None;
         }
         let quality = (explained as f64 / n as f64) * (1.0 - residual / spread.spacing);
-        Some(Fit { quality, ..fit })
+        let certainty = fit.certainty(elems, weight);
+        Some(Fit { quality, certainty, ..fit })
     }
 
     /// Whether a motif position is drawn twice in one cell, leaves cells out inside its
@@ -438,6 +459,31 @@ impl Fit {
             }
         }
         false
+    }
+
+    fn certainty(&self, elems: &[Element], weight: &[f64]) -> Certainty {
+        let count: f64 = weight.iter().sum();
+        let (mut mu, mut mw, mut r2) = (0.0, 0.0, 0.0);
+        for (i, &(m, (u, w))) in self.cell.iter().enumerate() {
+            mu += weight[i] * u as f64;
+            mw += weight[i] * w as f64;
+            r2 += weight[i] * self.site(m, (u, w)).distance_squared(elems[i].pos);
+        }
+        let mean = (mu / count, mw / count);
+        let spread = self.cell.iter().zip(weight).fold((0.0, 0.0), |s, (&(_, (u, w)), &wi)| {
+            (s.0 + wi * (u as f64 - mean.0).powi(2), s.1 + wi * (w as f64 - mean.1).powi(2))
+        });
+        Certainty { residual2: r2 / count, count, mean, spread }
+    }
+
+    /// The standard error of the lattice's site in cell `(u, w)`: a period fitted to
+    /// copies that spread over `s` cells with residual `r` is off by about `r / sqrt(s)`,
+    /// and its error grows with each period away from the copies' mean cell.
+    fn error_at(&self, (u, w): (i64, i64)) -> f64 {
+        let c = &self.certainty;
+        let along = |d: f64, s: f64| if s > 0.0 { d * d / s } else { 0.0 };
+        let k = 1.0 / c.count + along(u as f64 - c.mean.0, c.spread.0) + along(w as f64 - c.mean.1, c.spread.1);
+        (c.residual2 * k).sqrt()
     }
 
     fn lattice(&self) -> Lattice {
