@@ -48,12 +48,12 @@ pub fn replay(truth: &[Stroke], classes: &[u32], region: Rect, tol: f64) -> Repl
     let mut drawn_class: Vec<u32> = Vec::new();
     let mut r = Replay { strokes: truth.len(), ..Replay::default() };
     let mut times = Vec::new();
+    let debug = std::env::var("REPLAY_DEBUG").is_ok();
     while let Some(first) = done.iter().position(|d| !d) {
         let t = Instant::now();
         let s = suggest_strokes(&drawn, &opts).expect("suggestions on a drawing");
         times.push(t.elapsed().as_secs_f64() * 1e3);
         r.shown += s.strokes.len();
-        let debug = std::env::var("REPLAY_DEBUG").is_ok();
         if debug {
             eprintln!(
                 "drawn {} periods {:?} reason {:?} cells {:?}",
@@ -76,7 +76,7 @@ pub fn replay(truth: &[Stroke], classes: &[u32], region: Rect, tol: f64) -> Repl
                 Some((g, _)) => matched.push((g, k)),
                 None => {
                     r.wrong += 1;
-                    if std::env::var("REPLAY_DEBUG").is_ok() {
+                    if debug {
                         let near = (0..truth.len())
                             .map(|g| (truth[g].reference_point().distance(p), done[g]))
                             .min_by(|x, y| x.0.total_cmp(&y.0));

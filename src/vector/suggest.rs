@@ -179,6 +179,11 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
         })
     };
     for (m, cell, steps) in wanted {
+        // Not so far ahead of the hand-drawn copies that the site is likely off by more
+        // than the tolerance (fill is asked for explicitly and goes everywhere).
+        if !opts.fill && UNCERTAIN * fit.error_at(cell) > tol {
+            continue;
+        }
         let motif = &fit.motif[m];
         // Seeded by the place, so a copy keeps its look from one pen-up to the next.
         let mut rng = Rng::new(
@@ -193,11 +198,6 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
         let target = fit.site(m, cell) + (elems[source].pos - fit.site(m, fit.at(source)));
         let s = &strokes[pick];
         if drawn_at(elems[source].class, target, s.bounds().size().to_vec2().hypot()) {
-            continue;
-        }
-        // Not so far ahead of the hand-drawn copies that the site is likely off by more
-        // than the tolerance (fill is asked for explicitly and goes everywhere).
-        if !opts.fill && UNCERTAIN * fit.error_at(cell) > tol {
             continue;
         }
         let r = s.reference_point();
