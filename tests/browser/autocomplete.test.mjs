@@ -98,7 +98,11 @@ test('a stroke that contradicts the repetition makes the ghosts go away; drawing
   await waitGhosts();
   // A long squiggle across the row's line is no copy of the motif.
   await drag([[300, 300], [420, 340], [380, 420], [520, 380], [600, 460]]);
-  await page.waitForFunction(() => document.querySelector('#accept-ghosts').disabled && document.querySelector('#suggest-status').textContent !== '');
+  // Wait for the answer to this drawing, not a status left from the one before.
+  await page.waitForFunction(() => {
+    const status = document.querySelector('#suggest-status');
+    return document.querySelector('#accept-ghosts').disabled && status.getAttribute('aria-busy') === 'false' && status.textContent !== '';
+  });
   assert.equal(await count(), 21);
   assert.match(await page.textContent('#suggest-status'), /latest stroke does not repeat|no repetition/i);
   // Strokes drawn in quick succession while suggestions are computed are all kept.

@@ -4,6 +4,8 @@
 // when it returns (aborting it would end the worker), and an answer for a drawing that
 // has changed since is dropped. Accepting adds the ghosts as one undo step.
 
+const DISMISSED = 'Dismissed; draw on for new suggestions.';
+
 export class Autocomplete {
   /**
    * @param {object} o
@@ -42,6 +44,8 @@ export class Autocomplete {
   update() {
     this.drawing.showGhosts([]);
     this.shownFor = null;
+    // A reason given for the previous drawing no longer holds.
+    this.reason = null;
     if (!this.enabled() || this.busy()) return this.state(null);
     if (this.running) {
       this.again = true;
@@ -52,7 +56,7 @@ export class Autocomplete {
       if (this.again) {
         this.again = false;
         this.update();
-      }
+      } else this.state(null); // settled: no longer pending
     });
     this.state(null);
   }
@@ -63,7 +67,7 @@ export class Autocomplete {
       const r = await this.client.suggestStrokes(strokes, this.request(strokes));
       // A stale answer (the drawing changed meanwhile) is dropped; `update` asks again.
       if (strokes !== this.drawing.strokes || this.again) return;
-      if (strokes === this.dismissedFor) return this.state(null);
+      if (strokes === this.dismissedFor) return this.state(DISMISSED);
       this.shownFor = strokes;
       this.drawing.showGhosts(r.strokes, r.confidence);
       this.state(r.reason ?? null);
@@ -99,7 +103,7 @@ export class Autocomplete {
     this.dismissedFor = this.drawing.strokes;
     this.drawing.showGhosts([]);
     this.shownFor = null;
-    this.state('Dismissed; draw on for new suggestions.');
+    this.state(DISMISSED);
     return true;
   }
 

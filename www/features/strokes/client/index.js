@@ -116,7 +116,9 @@ export function mountStrokes(root, client) {
     options: () => ({ count: suggestCount, variation: settings.variation, seed: Number(settings.seed) || 0, ...tolerances() }),
     enabled: () => settings.autocomplete !== false,
     busy: () => runs.busy,
-    onState: ({ count, reason }) => {
+    onState: ({ count, reason, pending }) => {
+      // Lets a test (or a screen reader, via aria-busy) tell a settled answer from one under way.
+      $('suggest-status').setAttribute('aria-busy', String(pending));
       $('accept-ghosts').disabled = !count;
       $('dismiss-ghosts').disabled = !count;
       $('suggest-status').textContent = count
