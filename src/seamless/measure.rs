@@ -28,38 +28,42 @@ pub fn restoration_rgb(ex: &[[u8; 3]], out: &[[u8; 3]]) -> f64 {
     1.0 - diff / (2.0 * ex.len() as f64 * 3.0)
 }
 
-/// How visible the wrap-around seams are: the mean colour difference between the last
-/// and first columns (and rows), over the mean difference between neighbouring pixels
-/// inside. About 1 for a seamless tile; a cut shows as several times that.
+/// How many boundaries on each side of the wrap the seam is compared with.
+const NEAR: usize = 4;
+
+/// How visible the wrap-around seams are: the mean colour difference across the wrap
+/// (last column to first, last row to first) over the mean difference across the
+/// `NEAR` parallel boundaries on each side of it, at the same places along the seam.
+/// About 1 for a seamless tile; a cut shows as several times that.
+///
+/// The comparison is local because the eye sees a seam as a line that breaks from its
+/// surroundings. Against the whole image's mean instead, a tile whose wrap happens to
+/// run along flat background scored 0.27 and one whose wrap runs along a mortar line
+/// 1.9, with no seam to see in either.
 pub fn seam_score(rgb: &[[u8; 3]], width: usize, height: usize) -> f64 {
     let d = |a: [u8; 3], b: [u8; 3]| (0..3).map(|c| (a[c] as f64 - b[c] as f64).abs()).sum::<f64>();
-    let at = |x: usize, y: usize| rgb[y * width + x];
-    let (mut inner, mut n_inner) = (0.0, 0usize);
-    for y in 0..height {
-        for x in 0..width - 1 {
-            inner += d(at(x, y), at(x + 1, y));
-            n_inner += 1;
+    let at = |x: usize, y: usize| rgb[(y % height) * width + x % width];
+    // Boundary `b` lies between line `b` and line `b + 1`; the wrap is boundary `n - 1`.
+    let (mut seam, mut near, mut n_seam, mut n_near) = (0.0, 0.0, 0usize, 0usize);
+    let mut side = |n: usize, len: usize, pair: &dyn Fn(usize, usize) -> f64| {
+        let k = NEAR.min(n.saturating_sub(1) / 2);
+        for i in 0..len {
+            seam += pair(n - 1, i);
+            for o in 1..=k {
+                near += pair(n - 1 - o, i) + pair(o - 1, i);
+            }
         }
-    }
-    for y in 0..height - 1 {
-        for x in 0..width {
-            inner += d(at(x, y), at(x, y + 1));
-            n_inner += 1;
-        }
-    }
-    let mut seam = 0.0;
-    for y in 0..height {
-        seam += d(at(width - 1, y), at(0, y));
-    }
-    for x in 0..width {
-        seam += d(at(x, height - 1), at(x, 0));
-    }
-    let inner = inner / n_inner.max(1) as f64;
-    let seam = seam / (width + height) as f64;
-    if inner == 0.0 {
+        n_seam += len;
+        n_near += 2 * k * len;
+    };
+    side(width, height, &|b, y| d(at(b, y), at(b + 1, y)));
+    side(height, width, &|b, x| d(at(x, b), at(x, b + 1)));
+    let seam = seam / n_seam.max(1) as f64;
+    let near = near / n_near.max(1) as f64;
+    if near == 0.0 {
         return if seam == 0.0 { 1.0 } else { f64::INFINITY };
     }
-    seam / inner
+    seam / near
 }
 
 #[cfg(test)]
