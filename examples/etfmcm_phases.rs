@@ -24,6 +24,7 @@ fn main() {
             })
             .collect();
         let grey = Grey { width: size, height: size, data: rgb.iter().map(|p| p[0]).collect() };
+        println!("{name}: rebuilds alone {:.1} ms", rebuilds(&grey));
         let mut t = [Vec::new(), Vec::new(), Vec::new(), Vec::new()];
         for _ in 0..5 {
             let s = Instant::now();
@@ -48,4 +49,23 @@ fn main() {
             m[0], m[1], m[2], m[3]
         );
     }
+}
+
+/// Time of the side sets' rebuilds alone (as `generate` does them at every kind and scale).
+#[allow(dead_code)]
+fn rebuilds(grey: &Grey) -> f64 {
+    use patternsynth::seamless::cooccurrence::Triples;
+    let n = grey.width as isize;
+    let mut t = Triples::build(grey, (-1, -1), (1, -1));
+    let s = Instant::now();
+    let mut h = n / 2;
+    while h >= 1 {
+        for verts in [[(-h, -h), (h, -h), (h, h), (-h, h)], [(0, -h), (h, 0), (0, h), (-h, 0)]] {
+            for i in 0..4 {
+                t.rebuild(grey, verts[i], verts[(i + 1) % 4]);
+            }
+        }
+        h /= 2;
+    }
+    s.elapsed().as_secs_f64() * 1e3
 }

@@ -39,36 +39,48 @@ pub fn colourise(out: &Grey, ex: &Grey, rgb: &[[u8; 3]]) -> Vec<[u8; 3]> {
     }
     let present = |l: usize| start[l + 1] > start[l];
     let offsets: Vec<isize> = PLACES.iter().map(|&(dx, dy)| dy * w as isize + dx).collect();
-    // Each candidate's 8 places packed in a word, in `by_level`'s order: the agreement
-    // of two neighbourhoods is the count of equal bytes (`agreement`).
-    let packed: Vec<u64> =
-        by_level.iter().map(|&i| pack(offsets.iter().map(|&o| ex.data[(i as isize + o) as usize]))).collect();
+    // Each level's candidates, sampled at an even stride down to `MAX_CANDIDATES`, with
+    // their 8 places packed in a word: the agreement of two neighbourhoods is the count
+    // of equal bytes (`agreement`). Contiguous per level, so a pixel's search is one scan.
+    let (mut words, mut pixels, mut first) = (Vec::new(), Vec::new(), vec![0u32; 257]);
+    for l in 0..256 {
+        let list = &by_level[start[l] as usize..start[l + 1] as usize];
+        for &i in list.iter().step_by(list.len().div_ceil(MAX_CANDIDATES).max(1)) {
+            words.push(pack(offsets.iter().map(|&o| ex.data[(i as isize + o) as usize])));
+            pixels.push(i);
+        }
+        first[l + 1] = words.len() as u32;
+    }
+    // The level whose candidates serve each output value: its own, or the nearest
+    // present one (the lower on a tie).
+    let serve: Vec<usize> = (0..256usize)
+        .map(|v| {
+            (0..256usize)
+                .flat_map(|d| [v.wrapping_sub(d), v + d])
+                .find(|&l| l < 256 && present(l))
+                .expect("an interior")
+        })
+        .collect();
     let (n, m) = (out.width as isize, out.height as isize);
     let mut result = Vec::with_capacity(out.data.len());
     for y in 0..m {
         for x in 0..n {
-            let v = out.data[(y * n + x) as usize] as usize;
-            let level = (0..256usize)
-                .flat_map(|d| [v.wrapping_sub(d), v + d])
-                .find(|&l| l < 256 && present(l))
-                .expect("the exemplar has an interior");
+            let level = serve[out.data[(y * n + x) as usize] as usize];
             let around = pack(
                 PLACES.iter().map(|&(dx, dy)| out.data[((y + dy).rem_euclid(m) * n + (x + dx).rem_euclid(n)) as usize]),
             );
-            let range = start[level] as usize..start[level + 1] as usize;
-            let (list, words) = (&by_level[range.clone()], &packed[range]);
-            let stride = list.len().div_ceil(MAX_CANDIDATES);
-            let mut best = (0u32, list[0]);
-            for (&i, &word) in list.iter().zip(words).step_by(stride) {
+            let range = first[level] as usize..first[level + 1] as usize;
+            let mut best = (0u32, range.start);
+            for (k, &word) in words[range.clone()].iter().enumerate() {
                 let agree = agreement(word, around);
                 if agree > best.0 {
-                    best = (agree, i);
+                    best = (agree, range.start + k);
                     if agree == 8 {
                         break;
                     }
                 }
             }
-            result.push(rgb[best.1 as usize]);
+            result.push(rgb[pixels[best.1] as usize]);
         }
     }
     result

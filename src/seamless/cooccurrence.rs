@@ -121,17 +121,81 @@ impl Triples {
         }
     }
 
-    /// Calls `f(k)` for every apex value seen with `(va, vb)` at this side, ascending.
-    pub fn for_each_apex(&self, va: u8, vb: u8, mut f: impl FnMut(u8)) {
+    /// The apex values seen with `(va, vb)` at this side, as a 256-bit set (bit `k` of
+    /// word `k / 64`).
+    #[inline]
+    pub fn apexes(&self, va: u8, vb: u8) -> Levels {
         let first = ((va as usize) << 16 | (vb as usize) << 8) >> 6;
-        for (w, &word) in self.bits[first..first + 4].iter().enumerate() {
-            let mut word = word;
-            while word != 0 {
-                let bit = word.trailing_zeros() as usize;
-                f((w * 64 + bit) as u8);
-                word &= word - 1;
+        Levels(self.bits[first..first + 4].try_into().unwrap())
+    }
+}
+
+/// A set of grey levels: bit `k % 64` of word `k / 64`.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Levels(pub [u64; 4]);
+
+impl Levels {
+    /// The levels in `self` and in `other`.
+    #[inline]
+    pub fn and(self, other: Levels) -> Levels {
+        Levels([0, 1, 2, 3].map(|w| self.0[w] & other.0[w]))
+    }
+
+    /// The levels in `self` or in `other`.
+    #[inline]
+    pub fn or(self, other: Levels) -> Levels {
+        Levels([0, 1, 2, 3].map(|w| self.0[w] | other.0[w]))
+    }
+
+    pub fn is_empty(self) -> bool {
+        self.0 == [0; 4]
+    }
+
+    pub fn len(self) -> usize {
+        self.0.iter().map(|w| w.count_ones() as usize).sum()
+    }
+
+    /// The levels, ascending.
+    pub fn iter(self) -> impl Iterator<Item = u8> {
+        (0..4).flat_map(move |w| {
+            let mut word = self.0[w];
+            std::iter::from_fn(move || {
+                (word != 0).then(|| {
+                    let bit = word.trailing_zeros() as usize;
+                    word &= word - 1;
+                    (w * 64 + bit) as u8
+                })
+            })
+        })
+    }
+
+    /// The `i`-th level, ascending (`i < len`).
+    pub fn nth(self, mut i: usize) -> u8 {
+        for (w, &word) in self.0.iter().enumerate() {
+            let n = word.count_ones() as usize;
+            if i < n {
+                let mut word = word;
+                for _ in 0..i {
+                    word &= word - 1;
+                }
+                return (w * 64 + word.trailing_zeros() as usize) as u8;
             }
+            i -= n;
         }
+        unreachable!("level index out of range")
+    }
+
+    /// The levels in at least 4, 3, 2 and 1 of `sets` (four sets): a count per level by
+    /// bit logic, instead of counting level by level.
+    pub fn at_least(sets: [Levels; 4]) -> [Levels; 4] {
+        let [a, b, c, d] = sets;
+        let (ab, cd) = (a.and(b), c.and(d));
+        let (a_or_b, c_or_d) = (a.or(b), c.or(d));
+        let four = ab.and(cd);
+        let three = ab.and(c_or_d).or(cd.and(a_or_b));
+        let two = ab.or(cd).or(a_or_b.and(c_or_d));
+        let one = a_or_b.or(c_or_d);
+        [four, three, two, one]
     }
 }
 
@@ -157,11 +221,23 @@ mod tests {
         // A 3x3 with apex at the centre, vertices left and up.
         let img = Grey { width: 3, height: 3, data: vec![5, 6, 7, 8, 9, 10, 11, 12, 13] };
         let t = Triples::build(&img, (-1, 0), (0, -1));
-        let mut seen = Vec::new();
-        t.for_each_apex(8, 6, |k| seen.push(k));
-        assert_eq!(seen, vec![9]);
-        seen.clear();
-        t.for_each_apex(6, 8, |k| seen.push(k));
-        assert!(seen.is_empty());
+        assert_eq!(t.apexes(8, 6).iter().collect::<Vec<_>>(), vec![9]);
+        assert!(t.apexes(6, 8).is_empty());
+    }
+
+    #[test]
+    fn levels_count_membership_by_bit_logic() {
+        let set = |ks: &[u8]| {
+            let mut l = Levels::default();
+            ks.iter().for_each(|&k| l.0[k as usize / 64] |= 1 << (k % 64));
+            l
+        };
+        let sets = [set(&[1, 70, 200]), set(&[1, 70]), set(&[1, 130]), set(&[1, 200, 255])];
+        let [four, three, two, one] = Levels::at_least(sets);
+        assert_eq!(four.iter().collect::<Vec<_>>(), vec![1]);
+        assert_eq!(three.iter().collect::<Vec<_>>(), vec![1]);
+        assert_eq!(two.iter().collect::<Vec<_>>(), vec![1, 70, 200]);
+        assert_eq!(one.iter().collect::<Vec<_>>(), vec![1, 70, 130, 200, 255]);
+        assert_eq!((one.len(), one.nth(0), one.nth(3), one.nth(4)), (5, 1, 200, 255));
     }
 }

@@ -13,7 +13,7 @@
 //!
 //! Ties are broken by the seeded generator, so a seed reproduces a tile.
 
-use super::cooccurrence::{Grey, Pairs, Triples};
+use super::cooccurrence::{Grey, Levels, Pairs, Triples};
 use super::order::{order, Kind, Step};
 use crate::error::Result;
 use crate::progress::Throttle;
@@ -51,10 +51,6 @@ pub fn generate(ex: &Grey, rule: Rule, seed: u64, progress: &mut Throttle) -> Re
     // The four sides' triples for the current kind and scale.
     let mut sides: Option<((Kind, usize), Vec<Triples>)> = None;
     let mut candidates: Vec<u8> = Vec::with_capacity(256);
-    // J3 per apex value, and the values it is non-zero for (reset after each point, so a
-    // point costs what its sides hold, not 256).
-    let mut j3 = [0u8; 256];
-    let mut touched: Vec<u8> = Vec::with_capacity(256);
     for (done, st) in steps.iter().enumerate() {
         if done % 4096 == 0 {
             progress.tick(done as f64 / steps.len() as f64)?;
@@ -72,7 +68,9 @@ pub fn generate(ex: &Grey, rule: Rule, seed: u64, progress: &mut Throttle) -> Re
             out[y * n + x]
         });
         let mean = values.iter().map(|&v| v as f64).sum::<f64>() / 4.0;
-        // J3 per apex value (none at the first diamond step: the pairwise rule).
+        // The apex values with J3 >= 4, 3, 2 and 1 (none at the first diamond step: the
+        // pairwise rule), and the largest J3 any value has.
+        let mut at_least = [Levels::default(); 4];
         if st.kind != Kind::FirstDiamond {
             match &mut sides {
                 Some((key, t)) if *key != (st.kind, st.h) => {
@@ -88,28 +86,23 @@ pub fn generate(ex: &Grey, rule: Rule, seed: u64, progress: &mut Throttle) -> Re
                 }
             }
             let t = &sides.as_ref().unwrap().1;
-            for i in 0..4 {
-                t[i].for_each_apex(values[i], values[(i + 1) % 4], |k| {
-                    if j3[k as usize] == 0 {
-                        touched.push(k);
-                    }
-                    j3[k as usize] += 1;
-                });
-            }
+            at_least = Levels::at_least([0, 1, 2, 3].map(|i| t[i].apexes(values[i], values[(i + 1) % 4])));
         }
-        let max = touched.iter().map(|&k| j3[k as usize]).max().unwrap_or(0);
+        let max = (0..4).find(|&i| !at_least[i].is_empty()).map_or(0, |i| 4 - i);
         let value = if max >= 2 || (max == 1 && rule == Rule::Etfmcm) {
-            decisions.by_j3[max as usize] += 1;
-            candidates.clear();
-            // Ascending, as the seeded choice among ties expects.
-            touched.sort_unstable();
-            candidates.extend(touched.iter().copied().filter(|&k| j3[k as usize] == max));
+            decisions.by_j3[max] += 1;
+            // Exactly `max`: those with more would have made the largest larger.
+            let ties = at_least[4 - max];
             if max == 1 {
-                // E-TFMCM: the one nearest the vertices' mean.
-                let best = candidates.iter().map(|&k| (k as f64 - mean).abs()).fold(f64::INFINITY, f64::min);
-                candidates.retain(|&k| (k as f64 - mean).abs() <= best + 1e-9);
+                // E-TFMCM: among them, the one nearest the vertices' mean.
+                candidates.clear();
+                let best = ties.iter().map(|k| (k as f64 - mean).abs()).fold(f64::INFINITY, f64::min);
+                candidates.extend(ties.iter().filter(|&k| (k as f64 - mean).abs() <= best + 1e-9));
+                candidates[rng.below(candidates.len())]
+            } else {
+                // Ascending, as the seeded choice among ties expects.
+                ties.nth(rng.below(ties.len()))
             }
-            candidates[rng.below(candidates.len())]
         } else if let Some(k) = pairwise(&mut pairs, st, &values, &mut rng, &mut candidates) {
             decisions.pairwise += 1;
             k
@@ -118,10 +111,6 @@ pub fn generate(ex: &Grey, rule: Rule, seed: u64, progress: &mut Throttle) -> Re
             mean.round() as u8
         };
         out[st.y * n + st.x] = value;
-        for &k in &touched {
-            j3[k as usize] = 0;
-        }
-        touched.clear();
     }
     progress.tick(1.0)?;
     Ok((Grey { width: n, height: n, data: out }, decisions))

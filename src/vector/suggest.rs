@@ -178,10 +178,12 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
             e.reference_point().distance(p) < tol && (e.bounds().size().to_vec2().hypot() - size).abs() <= 0.25 * size
         })
     };
+    let mut uncertain = 0;
     for (m, cell, steps) in wanted {
         // Not so far ahead of the hand-drawn copies that the site is likely off by more
         // than the tolerance (fill is asked for explicitly and goes everywhere).
         if !opts.fill && UNCERTAIN * fit.error_at(cell) > tol {
+            uncertain += 1;
             continue;
         }
         let motif = &fit.motif[m];
@@ -207,7 +209,11 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
         out.cells.push([cell.0, cell.1]);
     }
     if out.strokes.is_empty() {
-        out.reason = Some("Every copy of the repetition in the region is drawn.".into());
+        out.reason = Some(if uncertain > 0 {
+            "The copies drawn so far leave the next ones too uncertain: draw one more.".into()
+        } else {
+            "Every copy of the repetition in the region is drawn.".into()
+        });
     }
     Ok(out)
 }
