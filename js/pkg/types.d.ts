@@ -106,7 +106,8 @@ export interface SeamlessResult {
   image: RgbaImage;
   /** The paper's restoration rate: 1 is the exemplar's colour histogram exactly. */
   restorationRate: number;
-  /** Wrap-around difference over neighbouring-pixel difference: about 1 is seamless. */
+  /** Difference across the wrap-around over the difference across the 4 parallel lines on
+   *  each side of it: about 1 is seamless; a photograph repeated as it is scores 2-8. */
   seamScore: number;
   /** What was done to make the input square and a power of two. */
   warnings: string[];
