@@ -29,7 +29,8 @@ pub struct Params {
     pub width: usize,
     pub height: usize,
     pub seed: u64,
-    /// Pyramid levels; `None` picks them so the coarsest exemplar is about 16 pixels.
+    /// Pyramid levels; `None` picks them so the coarsest exemplar is about 32 pixels
+    /// (16 for a tile; see `default_levels`).
     pub levels: Option<usize>,
     /// Neighbourhood side (odd, at least 3): 5 means a 5x5 causal L-shape.
     pub neighbourhood: usize,
@@ -187,13 +188,24 @@ const COARSE_EXHAUSTIVE_BUDGET: usize = 25 << 21;
 /// reference mode may compare.
 const EXHAUSTIVE_BUDGET: f64 = 4e9;
 
-/// Default number of levels: the coarsest exemplar about 16 pixels on its short side
-/// (at least the neighbourhood), the coarsest output at least 8; at most 5.
-fn default_levels(exemplars: &[&Image], width: usize, height: usize, side: usize) -> usize {
+/// Default number of levels: the coarsest exemplar about 32 pixels on its short side
+/// (16 for a tile), at least the neighbourhood; the coarsest output at least 8; at most 5.
+///
+/// At 16 pixels the coarsest level has a few hundred positions for several times as many
+/// output pixels, and its exhaustive search lays the same best few out again and again:
+/// the large structure repeats. Over 3 seeds on the ten photographs (128 -> 256), 32
+/// raised fur's repetition score from 0.784 to 0.854 (its exemplar's own: 0.875) and
+/// the worst distance below an exemplar's own from 0.091 to 0.034, and lowered the mean
+/// patch energy from 5.99 to 5.82; 8 (five levels) repeated more (fur 0.710).
+/// A tile keeps 16: the exhaustive coarsest level is what joins long structures across
+/// the wrap, and at 32 (searched coherently) brick's tiles broke their mortar lines
+/// there (seam score 1.51 over 8 seeds, against 0.93).
+fn default_levels(exemplars: &[&Image], width: usize, height: usize, side: usize, tileable: bool) -> usize {
     let ex = exemplars.iter().map(|e| e.width.min(e.height)).min().unwrap_or(1);
     let out = width.min(height);
+    let coarsest = if tileable { 16 } else { 32 };
     let mut levels = 1;
-    while levels < 5 && (ex >> levels) >= 16.max(side) && (out >> levels) >= 8 {
+    while levels < 5 && (ex >> levels) >= coarsest.max(side) && (out >> levels) >= 8 {
         levels += 1;
     }
     levels
@@ -255,7 +267,7 @@ impl Job {
         let levels = match params.levels {
             Some(l) if l == 0 || l > 8 => return invalid("Levels must be from 1 to 8."),
             Some(l) => l,
-            None => default_levels(&exemplars, width, height, side),
+            None => default_levels(&exemplars, width, height, side, params.tileable),
         };
         if params.exhaustive {
             let positions: f64 = exemplars.iter().map(|e| (e.width * e.height) as f64).sum();
