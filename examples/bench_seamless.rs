@@ -17,8 +17,7 @@ fn main() {
     std::fs::create_dir_all("out/seamless").unwrap();
     for name in textures::ALL {
         let img = textures::rgba(name);
-        let px: Vec<[u8; 3]> = img.data.chunks(4).map(|p| [p[0], p[1], p[2]]).collect();
-        let naive = seam_score(&px, img.width, img.height);
+        let naive = seam_score(&img.rgb(), img.width, img.height);
         for method in [Method::Etfmcm, Method::Tfmcm, Method::Synthesis] {
             let opts = SeamlessOptions { method, size, seed: 1, ..Default::default() };
             let mut times = Vec::new();

@@ -52,7 +52,6 @@ fn main() {
 }
 
 /// Time of the side sets' rebuilds alone (as `generate` does them at every kind and scale).
-#[allow(dead_code)]
 fn rebuilds(grey: &Grey) -> f64 {
     use patternsynth::seamless::cooccurrence::Triples;
     let n = grey.width as isize;

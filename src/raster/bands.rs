@@ -45,8 +45,9 @@ enum Kind {
     /// Every pixel with its full neighbourhood, in reverse order or not.
     Correction { reverse: bool },
     /// A tileable output's last pass: only the pixels along the wrap, with full
-    /// neighbourhoods (as in `synthesis::synthesize`). Without it the wrap's mean
-    /// difference was 1.23 times the mean across all boundaries at 512 x 512.
+    /// neighbourhoods (as in `synthesis::synthesize`). At 512 x 512 the wrap's mean
+    /// difference was 1.23 times the mean across all boundaries; this pass alone took it
+    /// to 1.20, with the coarsest level as one band (`bands`) it is 1.10.
     Wrap,
 }
 
@@ -76,9 +77,10 @@ pub fn bands(job: &Job, step: Step) -> Vec<Band> {
     // The coarsest level is one band: it starts from noise, so a band's first rows
     // would be made against noise above them, and the break between bands carried down
     // to every finer level (at 512 x 512, rows within 16 of the middle and of the wrap
-    // differed 1.1-1.2 times the mean). With four levels it holds a 64th of the finest
-    // level's pixels; where it is searched exhaustively (512 x 512 from a 128 exemplar)
-    // that cost the 2-worker speed-up 1.46 -> 1.32, at 1024 x 1024 and more 0.06-0.15.
+    // differed 1.1-1.2 times the mean). It holds a 16th of the finest level's pixels
+    // with three levels, a 64th with four (tiles); as one band it is serial work: with
+    // four levels the 2-worker speed-up fell 1.93 -> 1.87 at 1024 x 1024, and with the
+    // three that a 128-pixel exemplar now gets, it is 1.73 (see `default_levels`).
     let coarsest = step.level + 1 == job.levels;
     let n = if lh >= 2 * BAND_ROWS && !coarsest { lh / BAND_ROWS } else { 1 };
     if n == 1 {

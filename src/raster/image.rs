@@ -19,6 +19,14 @@ pub struct Rgba {
     pub data: Vec<u8>,
 }
 
+impl Rgba {
+    /// The colours without alpha, one per pixel (what the seamless engine and its
+    /// measures read).
+    pub fn rgb(&self) -> Vec<[u8; 3]> {
+        self.data.chunks_exact(4).map(|p| [p[0], p[1], p[2]]).collect()
+    }
+}
+
 /// Largest side of an image the engines accept (memory stays bounded: see `MAX_PIXELS`).
 pub const MAX_SIDE: usize = 4096;
 /// Largest pixel count of an output (2048 x 2048): synthesis needs at most 14 bytes

@@ -80,8 +80,7 @@ pub fn seamless_tile(input: &Rgba, opts: &SeamlessOptions, progress: &mut dyn Pr
                 Image { width: ex_side, height: ex_side, data: rgb.iter().map(|p| p.map(|v| v as f32)).collect() };
             let o = TextureOptions { width: side, height: side, seed: opts.seed, tileable: true, ..Default::default() };
             let out = synthesize_texture(&img, &o, &mut |f| progress.tick(f).is_ok())?;
-            let rgb: Vec<[u8; 3]> = out.data.chunks_exact(4).map(|p| [p[0], p[1], p[2]]).collect();
-            (rgb, None, None, None)
+            (out.rgb(), None, None, None)
         }
         Method::Etfmcm | Method::Tfmcm => {
             // The channel whose histogram is least crowded.
