@@ -1,8 +1,9 @@
 // Scaling of banded texture synthesis over workers, in headless Chromium against the
 // playground's package: output size x workers (1, 2, 4), median ms and speed-up over
 // one worker, and the scanline schedule in one worker beside them. The grass
-// photograph (128 x 128) is the exemplar. `node bench/workers.mjs [sizes] [runs]`,
-// e.g. `node bench/workers.mjs 512,1024,2048 3`.
+// photograph (128 x 128) is the exemplar. The runs of each worker count alternate, so
+// that the shared machine's changing load falls on all alike.
+// `node bench/workers.mjs [sizes] [runs]`, e.g. `node bench/workers.mjs 512,1024,2048 3`.
 import { chromium } from 'playwright-core';
 import { CHROMIUM } from '../tests/browser/chromium.mjs';
 import { serve } from '../scripts/static-server.mjs';
@@ -21,37 +22,39 @@ try {
     const ctx = new OffscreenCanvas(bmp.width, bmp.height).getContext('2d');
     ctx.drawImage(bmp, 0, 0);
     const grass = ctx.getImageData(0, 0, bmp.width, bmp.height);
-    const median = (t) => t.sort((a, b) => a - b)[t.length >> 1];
+    const median = (t) => [...t].sort((a, b) => a - b)[t.length >> 1];
     const time = async (client, opts) => {
-      await client.version(); // workers started and loaded before timing
-      await client.synthesizeTexture(grass, { width: 64, height: 64 });
-      const t = [];
-      for (let i = 0; i < (opts.width > 1024 ? 1 : runs); i++) {
-        const s = performance.now();
-        await client.synthesizeTexture(grass, opts);
-        t.push(performance.now() - s);
-      }
-      return median(t);
+      const s = performance.now();
+      await client.synthesizeTexture(grass, opts);
+      return performance.now() - s;
     };
+    // All clients started and warmed first (the helpers start on the first banded
+    // call), then the runs interleaved: run r of each in turn, so that a change in the
+    // shared machine's load falls on every worker count alike.
+    const setups = [['scanline', 1], [1, 1], [2, 2], [4, 4]];
+    const clients = [];
+    for (const [, workers] of setups) {
+      const client = new PatternSynthClient(undefined, { workers });
+      await client.synthesizeTexture(grass, { width: 128, height: 128, schedule: 'bands' });
+      clients.push(client);
+    }
     const rows = [];
     for (const side of sizes) {
       const opts = { width: side, height: side, seed: 1 };
-      const row = { side, cores: navigator.hardwareConcurrency };
-      const one = new PatternSynthClient(undefined, { workers: 1 });
-      row.scanline = await time(one, { ...opts, schedule: 'scanline' });
-      one.terminate();
-      for (const workers of [1, 2, 4]) {
-        const client = new PatternSynthClient(undefined, { workers });
-        // The helpers start on the first banded call: warm them with one.
-        await client.synthesizeTexture(grass, { width: 128, height: 128, schedule: 'bands' });
-        row[workers] = await time(client, opts);
-        client.terminate();
+      const t = setups.map(() => []);
+      for (let r = 0; r < runs; r++) {
+        for (const [i, [name]] of setups.entries()) {
+          t[i].push(await time(clients[i], name === 'scanline' ? { ...opts, schedule: 'scanline' } : opts));
+        }
       }
+      const row = { side, cores: navigator.hardwareConcurrency };
+      setups.forEach(([name], i) => { row[name] = median(t[i]); });
       rows.push(row);
     }
+    clients.forEach((c) => c.terminate());
     return rows;
   }, { sizes, runs });
-  console.log(`Chromium, ${rows[0].cores} cores; exemplar grass 128 x 128; median of ${runs} (1 run at 2048)`);
+  console.log(`Chromium, ${rows[0].cores} cores; exemplar grass 128 x 128; median of ${runs} runs, interleaved`);
   console.log('| output | scanline, 1 worker ms | bands, 1 worker ms | 2 workers ms | speed-up | 4 workers ms | speed-up |');
   console.log('|---|---|---|---|---|---|---|');
   for (const r of rows) {

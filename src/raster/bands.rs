@@ -47,7 +47,7 @@ enum Kind {
     /// A tileable output's last pass: only the pixels along the wrap, with full
     /// neighbourhoods (as in `synthesis::synthesize`). At 512 x 512 the wrap's mean
     /// difference was 1.23 times the mean across all boundaries; this pass alone took it
-    /// to 1.20, with the coarsest level as one band (`bands`) it is 1.10.
+    /// to 1.20; with the coarsest level's causal pass as one band (`bands`) it is 1.11.
     Wrap,
 }
 
@@ -74,15 +74,16 @@ pub fn steps(job: &Job) -> Vec<Step> {
 /// workers run them.
 pub fn bands(job: &Job, step: Step) -> Vec<Band> {
     let lh = job.sizes[step.level].1;
-    // The coarsest level is one band: it starts from noise, so a band's first rows
-    // would be made against noise above them, and the break between bands carried down
-    // to every finer level (at 512 x 512, rows within 16 of the middle and of the wrap
-    // differed 1.1-1.2 times the mean). It holds a 16th of the finest level's pixels
-    // with three levels, a 64th with four (tiles); as one band it is serial work: with
-    // four levels the 2-worker speed-up fell 1.93 -> 1.87 at 1024 x 1024, and with the
-    // three that a 128-pixel exemplar now gets, it is 1.73 (see `default_levels`).
-    let coarsest = step.level + 1 == job.levels;
-    let n = if lh >= 2 * BAND_ROWS && !coarsest { lh / BAND_ROWS } else { 1 };
+    // The coarsest level's causal pass is one band: it starts from noise, so a band's
+    // first rows would be made against noise above them, and the break between bands
+    // carried down to every finer level (at 512 x 512, rows within 16 of the middle and
+    // of the wrap differed 1.1-1.2 times the mean). Its later passes start from that
+    // coherent state, like any finer level's, and are banded. With all of the coarsest
+    // level serial (a 16th of the pixels with three levels) the 2-worker speed-up at
+    // 1024 x 1024 was 1.69; with its causal pass only, 1.78 (`bench/workers.mjs`, one
+    // session), the wrap at 512 x 512 1.11 times the mean boundary against 1.10.
+    let serial = step.level + 1 == job.levels && step.pass == 0;
+    let n = if lh >= 2 * BAND_ROWS && !serial { lh / BAND_ROWS } else { 1 };
     if n == 1 {
         return vec![Band { first: 0, rows: lh }];
     }
