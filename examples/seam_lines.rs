@@ -1,0 +1,46 @@
+//! Whether a tile's wrap is a seam or just one of its lines: the seam score
+//! (`measure::seam_score`) of every boundary of the torus, found by rolling the tile so
+//! that the boundary becomes the wrap, averaged over seeds 1-8 and grouped by the
+//! boundary's position modulo 8 (the finest pixels of one coarsest-level pixel of a
+//! 256 synthesis tile). A wrap that scores like the lines of its own group is no seam;
+//! the group's excess is the block structure of the synthesis.
+//! `cargo run --release --example seam_lines <exemplar|all> <etfmcm|tfmcm|synthesis> [size]`
+#[path = "support/textures.rs"]
+mod textures;
+use patternsynth::seamless::measure::seam_score;
+use patternsynth::seamless::{seamless_tile, Method, SeamlessOptions};
+use patternsynth::Silent;
+
+fn main() {
+    let a: Vec<String> = std::env::args().collect();
+    let names: Vec<&str> = if a[1] == "all" { textures::ALL.to_vec() } else { vec![a[1].as_str()] };
+    let method = match a[2].as_str() {
+        "etfmcm" => Method::Etfmcm,
+        "tfmcm" => Method::Tfmcm,
+        _ => Method::Synthesis,
+    };
+    let size = a.get(3).and_then(|s| s.parse().ok());
+    const SEEDS: u64 = 8;
+    for name in names {
+        let img = textures::rgba(name);
+        let (mut wrap, mut groups) = (0.0, [(0.0, 0usize); 8]);
+        for seed in 1..=SEEDS {
+            let opts = SeamlessOptions { method, size, seed, ..Default::default() };
+            let tile = seamless_tile(&img, &opts, &mut Silent).unwrap().image;
+            let (n, rgb) = (tile.width, tile.rgb());
+            for s in 0..n {
+                // Rolled by s both ways: boundary s - 1 | s (columns and rows) is the wrap.
+                let rolled: Vec<[u8; 3]> = (0..n * n).map(|i| rgb[((i / n + s) % n) * n + (i % n + s) % n]).collect();
+                let score = seam_score(&rolled, n, n);
+                if s == 0 {
+                    wrap += score;
+                } else {
+                    let g = &mut groups[(s - 1) % 8];
+                    *g = (g.0 + score, g.1 + 1);
+                }
+            }
+        }
+        let g: Vec<String> = groups.iter().enumerate().map(|(r, (s, k))| format!("{r}:{:.3}", s / *k as f64)).collect();
+        println!("{name}: wrap {:.3}; inner boundaries by position mod 8: {}", wrap / SEEDS as f64, g.join(" "));
+    }
+}
