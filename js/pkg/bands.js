@@ -33,9 +33,10 @@ export async function runBands(pool, method, args, onProgress) {
       }
       // Bands go one at a time to whichever worker is free, so a slow worker (or a
       // costly band) holds up the step by one band at most. A worker gets the step's
-      // starting state and the parent level with its first
-      // band of the step, and keeps them.
-      const next = new Uint32Array(maps * width * height);
+      // starting state and the parent level with its first band of the step, and keeps
+      // them. The last step's bands come back as colours: its rows are final.
+      const last = index === plan.steps.length - 1;
+      const next = last ? new Uint8ClampedArray(4 * width * height) : new Uint32Array(maps * width * height);
       const running = new Map();
       let done = 0;
       let queue = 0;
@@ -52,7 +53,8 @@ export async function runBands(pool, method, args, onProgress) {
             bands: 'run', handle: plans[k].handle, step: index, from: b, to: b + 1,
             state: first ? state : undefined, parent: first ? parent : undefined,
           }, (f) => { running.set(b, f); report(); });
-          place(rows, bands[b], maps, width, height, next);
+          if (last) place(rows, bands[b], 1, 4 * width, height, next);
+          else place(rows, bands[b], maps, width, height, next);
           running.delete(b);
           done += bands[b][1];
           report();
@@ -61,14 +63,15 @@ export async function runBands(pool, method, args, onProgress) {
       finished += height;
       state = next;
     }
-    return await pool[0].request({ bands: 'finish', handle: plans[0].handle, state });
+    const { width, height } = plan.steps[plan.steps.length - 1];
+    return { width, height, data: state };
   } finally {
     pool.forEach((w, k) => w.request({ bands: 'close', handle: plans[k].handle }).catch(() => {}));
   }
 }
 
 /** Copies a band's rows (each map's rows in turn; a band may wrap past the last
- *  row) into the level's maps `into`. */
+ *  row) into the level's maps `into`, `width` values a row (RGBA bytes: 4 a pixel). */
 function place(rows, [first, count], maps, width, height, into) {
   if (rows.length !== maps * count * width) throw new Error(`patternsynth: a worker returned ${rows.length} values for a band of ${count} rows.`);
   let at = 0;

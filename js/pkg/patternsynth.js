@@ -27,6 +27,5 @@ export const seamlessTile = full.method('seamlessTile');
 export const bands = Object.freeze({
   open: full.method('bandsOpen'),
   run: full.method('bandsRun'),
-  finish: full.method('bandsFinish'),
   close: full.method('bandsClose'),
 });

@@ -19,6 +19,5 @@ export const seamlessTile = texture.method('seamlessTile');
 export const bands = Object.freeze({
   open: texture.method('bandsOpen'),
   run: texture.method('bandsRun'),
-  finish: texture.method('bandsFinish'),
   close: texture.method('bandsClose'),
 });

@@ -19,7 +19,7 @@ const transferables = (r) => {
   return image?.data?.buffer instanceof ArrayBuffer ? [image.data.buffer] : [];
 };
 
-// Banded texture synthesis (bands.js): { id, bands: 'open' | 'run' | 'finish' | 'close', ... }.
+// Banded texture synthesis (bands.js): { id, bands: 'open' | 'run' | 'close', ... }.
 async function bandsMessage({ id, bands, handle, method, args, step, state, parent, from, to }) {
   await ready;
   // A band is a small part of the call: a report every 100 ms is plenty, and spares
@@ -34,7 +34,6 @@ async function bandsMessage({ id, bands, handle, method, args, step, state, pare
   switch (bands) {
     case 'open': return api.bands.open(method, args);
     case 'run': return api.bands.run(handle, step, state, parent, from, to, progress);
-    case 'finish': return api.bands.finish(handle, state);
     case 'close': return api.bands.close(handle);
     default: throw new Error(`Unknown band message '${bands}'.`);
   }

@@ -371,15 +371,24 @@ impl Job {
     /// The output image from the finest level's sources.
     pub fn colours(&self, src: &[Vec<u32>]) -> Rgba {
         let (width, height) = (self.params.width, self.params.height);
-        let mut data = Vec::with_capacity(width * height * 4);
-        for y in 0..height {
+        Rgba { width, height, data: self.colour_rows(src, 0, height) }
+    }
+
+    /// RGBA bytes of the output's rows `first .. first + rows` (mod its height) from
+    /// their sources at the finest level (`src`: those rows of each map, top first), so
+    /// that the workers of the banded schedule colour the rows of their last bands.
+    pub fn colour_rows(&self, src: &[Vec<u32>], first: usize, rows: usize) -> Vec<u8> {
+        let (width, height) = (self.params.width, self.params.height);
+        let mut data = Vec::with_capacity(width * rows * 4);
+        for r in 0..rows {
+            let y = (first + r) % height;
             for x in 0..width {
-                let c = self.mix.colour(0, src, y * width + x, x, y);
+                let c = self.mix.colour(0, src, r * width + x, x, y);
                 data.extend(c.iter().map(|&v| v.round().clamp(0.0, 255.0) as u8));
                 data.push(255);
             }
         }
-        Rgba { width, height, data }
+        data
     }
 }
 

@@ -1,9 +1,8 @@
 //! The worker protocol of banded texture synthesis (`js/pkg/bands.js` drives it): each
 //! worker opens the same job, runs the bands it is given of each step from the step's
-//! starting state, and one of them turns the last state into the image. Jobs live in
-//! this instance between calls, under a handle.
+//! starting state, and returns the rows of its bands of the last step as colours. Jobs
+//! live in this instance between calls, under a handle.
 
-use super::rgba::rgba_to_js;
 use super::texture::{blend_args, texture_args};
 use super::{error, js_error, JsProgress};
 use crate::progress::Throttle;
@@ -108,8 +107,9 @@ fn maps(all: &js_sys::Uint32Array, exemplars: usize, pixels: usize, what: &str) 
 /// maps at the start of the step, with the step's first bands in this worker (kept for
 /// its next ones); at a level's first pass there is none (the level starts from the
 /// parent upsampled). `parent`: the parent level's maps, with the level's first bands
-/// in this worker. Returns the bands' rows, band after band, each exemplar's rows in
-/// turn.
+/// in this worker. Returns the bands' rows, band after band: each exemplar's rows in
+/// turn (a `Uint32Array` of sources), or at the last step, whose rows are final, their
+/// colours (a `Uint8Array` of RGBA), so that colouring is shared out too.
 #[wasm_bindgen(js_name = bandsRun)]
 pub fn bands_run(
     handle: u32,
@@ -119,7 +119,7 @@ pub fn bands_run(
     from: usize,
     to: usize,
     on_progress: JsValue,
-) -> Result<js_sys::Uint32Array, JsValue> {
+) -> Result<JsValue, JsValue> {
     let mut progress = JsProgress::from_js(on_progress)?;
     with(handle, |open| {
         let job = &open.job;
@@ -153,41 +153,35 @@ pub fn bands_run(
             Some(m) => bands::Start::Maps(m),
             None => bands::Start::Initial,
         };
+        let last = step + 1 == steps.len();
         let total: usize = list[from..to].iter().map(|b| b.rows).sum();
         let mut done = 0usize;
         let mut throttle = Throttle::new(&mut progress);
-        let mut out = Vec::with_capacity(n * total * job.sizes[s.level].0);
+        let (mut sources, mut colours) = (Vec::new(), Vec::new());
         let mut result = Ok(());
-        for b in from..to {
+        for (b, band) in list.iter().enumerate().take(to).skip(from) {
             let rows = bands::run(job, s, start, uses, &open.parent, b, &mut || {
                 done += 1;
                 throttle.tick(done as f64 / total.max(1) as f64)
             });
             match rows {
-                Ok(rows) => rows.iter().for_each(|r| out.extend_from_slice(r)),
+                Ok(rows) if last => colours.extend(job.colour_rows(&rows, band.first, band.rows)),
+                Ok(rows) => rows.iter().for_each(|r| sources.extend_from_slice(r)),
                 Err(e) => {
                     result = Err(e);
                     break;
                 }
             }
         }
-        Ok((result, out))
+        Ok((result, last, sources, colours))
     })
-    .and_then(|(result, out)| {
+    .and_then(|(result, last, sources, colours)| {
         progress.finish(result)?;
-        Ok(js_sys::Uint32Array::from(&out[..]))
-    })
-}
-
-/// The image from the last step's maps (as `bandsRun` takes a state).
-#[wasm_bindgen(js_name = bandsFinish)]
-pub fn bands_finish(handle: u32, state: js_sys::Uint32Array) -> Result<JsValue, JsValue> {
-    with(handle, |open| {
-        let job = &open.job;
-        let src = maps(&state, job.exemplars(), job.level_pixels(0), "state")?;
-        open.start = None;
-        let out = job.colours(&src);
-        Ok(rgba_to_js(out.width, out.height, &out.data))
+        Ok(if last {
+            js_sys::Uint8Array::from(&colours[..]).into()
+        } else {
+            js_sys::Uint32Array::from(&sources[..]).into()
+        })
     })
 }
 

@@ -114,7 +114,7 @@ test('the entry points are declared once: every entry, its wasm glue and api.js 
   const exported = (m, extra = []) => Object.keys(m).filter((k) => ![...own, ...extra].includes(k)).sort();
   const glueNames = (m) => Object.keys(m).filter((k) => !['default', 'initSync', 'start', '__wbg_reset'].includes(k)).sort();
   assert.deepEqual(exported(ps, ['initCodecs', 'initCodecsSync']), Object.keys(METHODS).sort());
-  assert.deepEqual(Object.keys(ps.bands).sort(), ['close', 'finish', 'open', 'run']);
+  assert.deepEqual(Object.keys(ps.bands).sort(), ['close', 'open', 'run']);
   assert.deepEqual(glueNames(await import('../../pkg/wasm/full.js')), glue(['vector', 'texture']));
   for (const entry of ['vector', 'texture', 'codec']) {
     assert.deepEqual(exported(await import(`../../pkg/node/${entry}.js`)), names([entry]), entry);
