@@ -8,20 +8,15 @@
 #[path = "support/textures.rs"]
 mod textures;
 use patternsynth::seamless::measure::seam_score;
-use patternsynth::seamless::{seamless_tile, Method, SeamlessOptions};
+use patternsynth::seamless::{seamless_tile, SeamlessOptions};
 use patternsynth::Silent;
 
 fn main() {
     let a: Vec<String> = std::env::args().collect();
-    let names: Vec<&str> = if a[1] == "all" { textures::ALL.to_vec() } else { vec![a[1].as_str()] };
-    let method = match a[2].as_str() {
-        "etfmcm" => Method::Etfmcm,
-        "tfmcm" => Method::Tfmcm,
-        _ => Method::Synthesis,
-    };
+    let (names, method) = (textures::named(&a[1]), textures::method(&a[2]));
     let size = a.get(3).and_then(|s| s.parse().ok());
     const SEEDS: u64 = 8;
-    for name in names {
+    for name in &names {
         let img = textures::rgba(name);
         let (mut wrap, mut groups) = (0.0, [(0.0, 0usize); 8]);
         for seed in 1..=SEEDS {

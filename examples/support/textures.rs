@@ -4,6 +4,7 @@
 
 use patternsynth::raster::codec::decode_image;
 use patternsynth::raster::{Image, Rgba};
+use patternsynth::seamless::Method;
 
 /// The four the engine was tuned on.
 pub const TUNED: [&str; 4] = ["wood", "brick", "grass", "gravel"];
@@ -20,4 +21,22 @@ pub fn rgba(name: &str) -> Rgba {
 pub fn load(name: &str) -> Image {
     let d = rgba(name);
     Image::from_rgba8(d.width, d.height, &d.data).unwrap()
+}
+
+/// The fixtures a probe's argument names: one, or `all`.
+pub fn named(arg: &str) -> Vec<String> {
+    if arg == "all" {
+        ALL.iter().map(|s| s.to_string()).collect()
+    } else {
+        vec![arg.to_string()]
+    }
+}
+
+/// The tile method a probe's argument names: `etfmcm`, `tfmcm`, otherwise synthesis.
+pub fn method(arg: &str) -> Method {
+    match arg {
+        "etfmcm" => Method::Etfmcm,
+        "tfmcm" => Method::Tfmcm,
+        _ => Method::Synthesis,
+    }
 }
