@@ -81,7 +81,8 @@ pub fn bands(job: &Job, step: Step) -> Vec<Band> {
     // coherent state, like any finer level's, and are banded. With all of the coarsest
     // level serial (a 16th of the pixels with three levels) the 2-worker speed-up at
     // 1024 x 1024 was 1.69; with its causal pass only, 1.78 (`bench/workers.mjs`, one
-    // session), the wrap at 512 x 512 1.11 times the mean boundary against 1.10.
+    // session); the wrap at 512 x 512 is 1.11 times the mean boundary, against the 1.10
+    // measured with the whole level as one band.
     let serial = step.level + 1 == job.levels && step.pass == 0;
     let n = if lh >= 2 * BAND_ROWS && !serial { lh / BAND_ROWS } else { 1 };
     if n == 1 {

@@ -157,7 +157,12 @@ pub fn bands_run(
         let total: usize = list[from..to].iter().map(|b| b.rows).sum();
         let mut done = 0usize;
         let mut throttle = Throttle::new(&mut progress);
-        let (mut sources, mut colours) = (Vec::new(), Vec::new());
+        let width = job.sizes[s.level].0;
+        let (mut sources, mut colours) = if last {
+            (Vec::new(), Vec::with_capacity(4 * total * width))
+        } else {
+            (Vec::with_capacity(n * total * width), Vec::new())
+        };
         let mut result = Ok(());
         for (b, band) in list.iter().enumerate().take(to).skip(from) {
             let rows = bands::run(job, s, start, uses, &open.parent, b, &mut || {
