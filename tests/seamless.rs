@@ -74,11 +74,31 @@ fn the_wrap_of_a_synthesized_tile_is_no_seam_on_structured_photographs() {
         // ...and none in ours.
         assert!((0.8..1.25).contains(&tiles), "{name}: seam {tiles}");
         // Print's banded tiles vary too much from seed to seed for 4 to tell (1.30 here;
-        // other lines of the same tiles reach 2): its figure is in the benchmark.
+        // other lines of the same tiles reach 2): its figure is in the benchmark. Below
+        // 1 the wrap is smoother than the lines inside: brick's banded wraps often run
+        // along a course of bricks rather than across mortar (0.72 over 8 seeds), which
+        // is no seam; a blurred or flat wrap would score far lower.
         if name != "print" {
-            assert!((0.8..1.25).contains(&banded), "{name}: banded seam {banded}");
+            assert!((0.6..1.25).contains(&banded), "{name}: banded seam {banded}");
         }
     }
+}
+
+#[test]
+fn a_256_print_tile_has_no_seam_where_coarse_pixels_meet() {
+    // The wrap of a 256 tile lies on a boundary of the coarsest level's pixels. When
+    // copies were locked to offsets of multiples of 8 there, print's wrap (a page of text)
+    // scored 1.33 over these 8 seeds.
+    let img = fixture("print");
+    let seams: Vec<f64> = (1..=8)
+        .map(|seed| {
+            let o = SeamlessOptions { method: Method::Synthesis, size: Some(256), seed, ..Default::default() };
+            seamless_tile(&img, &o, &mut Silent).unwrap().seam_score
+        })
+        .collect();
+    let mean = seams.iter().sum::<f64>() / seams.len() as f64;
+    println!("print 256 synthesis tiles: {seams:.2?}, mean {mean:.3}");
+    assert!((0.8..1.2).contains(&mean), "mean seam {mean}");
 }
 
 #[test]

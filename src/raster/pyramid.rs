@@ -54,6 +54,26 @@ pub fn downsample(img: &Image, edge: Edge) -> Image {
     out
 }
 
+/// `coarse` (a level of a pyramid) read at the pixels of the `width x height` level
+/// below it: pixel (x, y) there lies at (x / 2, y / 2) of `coarse`, since `downsample`
+/// centres each coarse pixel on its even child; odd pixels take the mean of the two or
+/// four coarse pixels around them, clamped at the border.
+pub fn upsample(coarse: &Image, width: usize, height: usize) -> Image {
+    let mut out = Image::new(width, height);
+    for y in 0..height {
+        for x in 0..width {
+            let (x0, x1, y0, y1) = (x / 2, x.div_ceil(2), y / 2, y.div_ceil(2));
+            let mut acc = [0.0f32; 3];
+            for (cx, cy) in [(x0, y0), (x1, y0), (x0, y1), (x1, y1)] {
+                let p = coarse.clamped(cx as isize, cy as isize);
+                (0..3).for_each(|c| acc[c] += p[c] / 4.0);
+            }
+            out.data[y * width + x] = acc;
+        }
+    }
+    out
+}
+
 /// `levels` images, finest first.
 pub fn build(img: &Image, levels: usize, edge: Edge) -> Vec<Image> {
     let mut out = vec![img.clone()];
@@ -79,6 +99,21 @@ mod tests {
                 assert!((px[0] - 10.0).abs() < 1e-4 && (px[2] - 30.0).abs() < 1e-4);
             }
         }
+    }
+
+    #[test]
+    fn upsample_reads_a_level_where_the_finer_pixels_lie() {
+        let mut coarse = Image::new(3, 2);
+        for (i, p) in coarse.data.iter_mut().enumerate() {
+            *p = [i as f32 * 10.0; 3];
+        }
+        let up = upsample(&coarse, 6, 4);
+        let at = |x: usize, y: usize| up.data[y * 6 + x][0];
+        // Even pixels are the coarse pixels; odd ones lie between two or four.
+        assert_eq!((at(0, 0), at(2, 0), at(4, 2)), (0.0, 10.0, 50.0));
+        assert_eq!((at(1, 0), at(0, 1), at(1, 1)), (5.0, 15.0, 20.0));
+        // Past the last coarse pixel the border repeats.
+        assert_eq!((at(5, 0), at(5, 3)), (20.0, 50.0));
     }
 
     #[test]
