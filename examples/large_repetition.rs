@@ -1,0 +1,57 @@
+//! Repetition at large outputs: `cargo run --release --example large_repetition [names|all]
+//! [size]`. For each exemplar, `SEEDS` seeds (default 2) at `size` (default 1024): the
+//! output's repetition at shifts of 48 pixels or more (`energy::repetition`, 1 = none,
+//! 0 = a verbatim translated copy) beside the exemplar's own, its patch energy, and the
+//! time; seed 1 is written to out/large/<name>-<size>.png. A small exemplar must recur
+//! many times in a large output, but as scattered patches: a lattice of copies shows as
+//! a low score.
+#[path = "support/textures.rs"]
+mod textures;
+use patternsynth::raster::codec::encode_png;
+use patternsynth::raster::energy::{patch_energy, repetition};
+use patternsynth::raster::synthesis::Schedule;
+use patternsynth::raster::{synthesize_texture, Image, TextureOptions};
+use patternsynth::Silent;
+use std::time::Instant;
+
+fn main() {
+    let args: Vec<String> = std::env::args().collect();
+    let names = textures::named(args.get(1).map_or("all", |s| s.as_str()));
+    let size: usize = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(1024);
+    let seeds: u64 = std::env::var("SEEDS").ok().and_then(|s| s.parse().ok()).unwrap_or(2);
+    let levels = std::env::var("LEVELS").ok().and_then(|s| s.parse().ok());
+    let schedule = match std::env::var("SCHEDULE").as_deref() {
+        Ok("bands") => Schedule::Bands,
+        Ok("scanline") => Schedule::Scanline,
+        _ => Schedule::Auto,
+    };
+    std::fs::create_dir_all("out/large").unwrap();
+    let (mut worst, mut energy_sum) = (f64::INFINITY, 0.0);
+    for name in &names {
+        let ex = textures::load(name);
+        let (mut rep, mut energy, mut ms) = (0.0, 0.0, Vec::new());
+        for seed in 1..=seeds {
+            let o = TextureOptions { width: size, height: size, seed, levels, schedule, ..Default::default() };
+            let t = Instant::now();
+            let out = synthesize_texture(&ex, &o, &mut Silent).unwrap();
+            ms.push(t.elapsed().as_secs_f64() * 1e3);
+            if seed == 1 {
+                std::fs::write(format!("out/large/{name}-{size}.png"), encode_png(size, size, &out.data).unwrap())
+                    .unwrap();
+            }
+            let out = Image::from_rgba8(out.width, out.height, &out.data).unwrap();
+            rep += repetition(&out, 48, seed);
+            energy += patch_energy(&out, &ex, 200, (0, size), seed);
+        }
+        let (rep, energy) = (rep / seeds as f64, energy / seeds as f64);
+        ms.sort_by(f64::total_cmp);
+        let own = repetition(&ex, 48, 1);
+        println!("{name:7} repetition {rep:.3} (exemplar {own:.3})  energy {energy:.2}  {:.0} ms", ms[ms.len() / 2]);
+        worst = worst.min(rep - own);
+        energy_sum += energy;
+    }
+    println!(
+        "worst repetition below the exemplar's own {worst:+.3}, mean energy {:.2}",
+        energy_sum / names.len() as f64
+    );
+}
