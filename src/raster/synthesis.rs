@@ -3,8 +3,9 @@
 //!
 //! Coarse to fine; at each level the output is filled in scanline order on a torus. A
 //! pixel's feature is its causal neighbourhood at this level and a 3x3 block of the
-//! (finished) parent level, read where the pixel lies on it (`Pass::parent_feature`). For each exemplar with weight > 0 the best-matching
-//! exemplar position is found and the colours are mixed.
+//! (finished) parent level, read where the pixel lies on it (`Pass::parent_feature`).
+//! For each exemplar with weight > 0 the best-matching exemplar position is found and
+//! the colours are mixed.
 //!
 //! Search: `exhaustive` compares with every exemplar position (the reference mode). The
 //! default compares with coherent candidates only (Ashikhmin 2001): for each already
@@ -586,7 +587,8 @@ pub(crate) struct Pass<'a> {
     with_parent: bool,
     exhaustive: bool,
     random: usize,
-    /// Whether the parent's candidate also comes shifted by up to a pixel (`JITTER`).
+    /// Whether the parent's candidate also comes shifted by up to a pixel (tiles; see
+    /// `coherent_candidates`).
     jitter: bool,
     parent_src: &'a [Vec<u32>],
     /// Index deltas per exemplar, for the causal shape and the full one.
