@@ -88,7 +88,19 @@ test('painting on the coefficient switches to a mask, and single-exemplar mode r
   await page.fill('#blend-height', '64');
   await page.click('#blend-run');
   await page.waitForFunction(() => document.querySelector('#blend-messages').textContent === 'Done.', null, { timeout: 60000 });
-  assert.match(await page.textContent('#blend-info'), /96×64, single exemplar/);
+  assert.match(await page.textContent('#blend-info'), /96×64, single exemplar, \d+ ms$/);
+  // Sixteen times the exemplar's area: the page says its features recur that often.
+  await page.fill('#blend-width', '512');
+  await page.fill('#blend-height', '512');
+  await page.click('#blend-run');
+  await page.waitForFunction(() => document.querySelector('#blend-info').textContent.startsWith('512×512'), null, { timeout: 60000 });
+  const area = await page.evaluate(() => {
+    const c = document.querySelector('#slot-a canvas');
+    return c.width * c.height;
+  });
+  const times = Math.round((512 * 512) / area);
+  assert.ok(times >= 16, `exemplar of ${area} pixels`);
+  assert.match(await page.textContent('#blend-info'), new RegExp(`512×512, single exemplar, \\d+ ms\\. The output is ${times} times the exemplar's area`));
   await page.check('input[name="blend-mode"][value="blend"]');
 });
 

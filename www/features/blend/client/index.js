@@ -29,6 +29,17 @@ function coefficientAt(shape, angle, w, h) {
   return (x, y) => f(Math.min(1, Math.max(0, 1 - (proj(x, y) - lo) / span)));
 }
 
+/**
+ * A note for outputs many times an exemplar's area: each of its features must then recur
+ * about that many times (a 128 px grass at 1024 px shows each clump some 64 times, as it
+ * does in texture-synthesis's output), which only a larger exemplar avoids.
+ */
+function recurrence(out, exemplars) {
+  const times = (out.width * out.height) / Math.min(...exemplars.map((e) => e.width * e.height));
+  if (times < 16) return '';
+  return `. The output is ${Math.round(times)} times the exemplar's area, so each of its features recurs about as often; a larger exemplar repeats less.`;
+}
+
 export function mountBlend(root, client) {
   const $ = (id) => root.querySelector(`#${id}`);
   const settings = { ...defaultOptions, ...load(storageKey, {}) };
@@ -245,7 +256,7 @@ export function mountBlend(root, client) {
       if (resultUrl) URL.revokeObjectURL(resultUrl);
       resultUrl = URL.createObjectURL(blob);
       offerDownload($('blend-download'), resultUrl);
-      $('blend-info').textContent = `${out.width}×${out.height}, ${single ? 'single exemplar' : settings.transition}, ${ms.toFixed(0)} ms`;
+      $('blend-info').textContent = `${out.width}×${out.height}, ${single ? 'single exemplar' : settings.transition}, ${ms.toFixed(0)} ms${recurrence(out, single ? [slots.a.image] : [slots.a.image, slots.b.image])}`;
       say('Done.');
     });
   });
