@@ -76,7 +76,7 @@ fn the_wrap_of_a_synthesized_tile_is_no_seam_on_structured_photographs() {
         // Print's banded tiles vary too much from seed to seed for 4 to tell (1.30 here;
         // other lines of the same tiles reach 2): its figure is in the benchmark. Below
         // 1 the wrap is smoother than the lines inside: brick's banded wraps often run
-        // along a course of bricks rather than across mortar (0.72 over 8 seeds), which
+        // along a course of bricks rather than across mortar (0.71 over these 4 seeds), which
         // is no seam; a blurred or flat wrap would score far lower.
         if name != "print" {
             assert!((0.6..1.25).contains(&banded), "{name}: banded seam {banded}");

@@ -31,8 +31,9 @@ function coefficientAt(shape, angle, w, h) {
 
 /**
  * A note for outputs many times an exemplar's area: each of its features must then recur
- * about that many times (a 128 px grass at 1024 px shows each clump some 64 times, as it
- * does in texture-synthesis's output), which only a larger exemplar avoids.
+ * about that many times (a 128 px grass at 1024 px must show each clump about 64 times;
+ * texture-synthesis's output of it repeats its clumps alike), which only a larger
+ * exemplar avoids.
  */
 function recurrence(out, exemplars) {
   const times = (out.width * out.height) / Math.min(...exemplars.map((e) => e.width * e.height));
