@@ -2,13 +2,14 @@
 //! [size]`. For each exemplar, `SEEDS` seeds (default 2) at `size` (default 1024): the
 //! output's repetition at shifts of 48 pixels or more (`energy::repetition`, 1 = none,
 //! 0 = a verbatim translated copy) beside the exemplar's own, its patch energy, and the
-//! time; seed 1 is written to out/large/<name>-<size>.png. A small exemplar must recur
+//! time, and the colour histogram's distance to the exemplar's
+//! (`energy::colour_distance`); seed 1 is written to out/large/<name>-<size>.png. A small exemplar must recur
 //! many times in a large output, but as scattered patches: a lattice of copies shows as
 //! a low score.
 #[path = "support/textures.rs"]
 mod textures;
 use patternsynth::raster::codec::encode_png;
-use patternsynth::raster::energy::{patch_energy, repetition};
+use patternsynth::raster::energy::{colour_distance, patch_energy, repetition};
 use patternsynth::raster::synthesis::Schedule;
 use patternsynth::raster::{synthesize_texture, Image, TextureOptions};
 use patternsynth::Silent;
@@ -29,7 +30,7 @@ fn main() {
     let (mut worst, mut energy_sum) = (f64::INFINITY, 0.0);
     for name in &names {
         let ex = textures::load(name);
-        let (mut rep, mut energy, mut ms) = (0.0, 0.0, Vec::new());
+        let (mut rep, mut energy, mut colour, mut ms) = (0.0, 0.0, 0.0, Vec::new());
         for seed in 1..=seeds {
             let o = TextureOptions { width: size, height: size, seed, levels, schedule, ..Default::default() };
             let t = Instant::now();
@@ -42,11 +43,15 @@ fn main() {
             let out = Image::from_rgba8(out.width, out.height, &out.data).unwrap();
             rep += repetition(&out, 48, seed);
             energy += patch_energy(&out, &ex, 200, (0, size), seed);
+            colour += colour_distance(&out, &ex);
         }
-        let (rep, energy) = (rep / seeds as f64, energy / seeds as f64);
+        let (rep, energy, colour) = (rep / seeds as f64, energy / seeds as f64, colour / seeds as f64);
         ms.sort_by(f64::total_cmp);
         let own = repetition(&ex, 48, 1);
-        println!("{name:7} repetition {rep:.3} (exemplar {own:.3})  energy {energy:.2}  {:.0} ms", ms[ms.len() / 2]);
+        println!(
+            "{name:7} repetition {rep:.3} (exemplar {own:.3})  energy {energy:.2}  colour {colour:.3}  {:.0} ms",
+            ms[ms.len() / 2]
+        );
         worst = worst.min(rep - own);
         energy_sum += energy;
     }

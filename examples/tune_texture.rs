@@ -1,12 +1,13 @@
 //! Quality probe for tuning the texture search: mean patch energy over seeds, 128 -> 256,
 //! for the four photographs, and the median time. `cargo run --release --example tune_texture`
 //! (`BLEND=1`: the blends' band energies and repetition in the middle band instead).
-//! Each photograph's figure is `energy / repetition (exemplar's own repetition)`:
-//! repetition at shifts of 48 pixels or more (`energy::repetition`).
+//! Each photograph's figure is `energy / repetition (exemplar's own repetition) colour
+//! distance`: repetition at shifts of 48 pixels or more (`energy::repetition`), and the
+//! colour histogram's distance to the exemplar's (`energy::colour_distance`).
 #[path = "support/textures.rs"]
 mod textures;
 use patternsynth::raster::codec::{decode_image, encode_png};
-use patternsynth::raster::energy::{patch_energy, repetition};
+use patternsynth::raster::energy::{colour_distance, patch_energy, repetition};
 use patternsynth::raster::synthesis::Schedule;
 use patternsynth::raster::{blend_textures, synthesize_texture, BlendOptions, Image, TextureOptions};
 use patternsynth::Silent;
@@ -61,6 +62,7 @@ fn main() {
         let ex = textures::load(name);
         let mut sum = 0.0;
         let mut rep = 0.0;
+        let mut colour = 0.0;
         for seed in 1..=seeds {
             let nb = std::env::var("NB").ok().and_then(|s| s.parse().ok()).unwrap_or(5);
             let schedule = match std::env::var("SCHEDULE").as_deref() {
@@ -90,9 +92,11 @@ fn main() {
             }
             sum += patch_energy(&out, &ex, 300, (0, side), seed);
             rep += repetition(&out, 48, seed);
+            colour += colour_distance(&out, &ex);
         }
         let own = repetition(&ex, 48, 1);
-        print!("{name} {:.2} / {:.3} ({own:.3})  ", sum / seeds as f64, rep / seeds as f64);
+        let n = seeds as f64;
+        print!("{name} {:.2} / {:.3} ({own:.3}) {:.3}  ", sum / n, rep / n, colour / n);
         all += sum / seeds as f64;
     }
     times.sort_by(|a, b| a.total_cmp(b));
