@@ -1,9 +1,9 @@
 //! Repetition at large outputs: `cargo run --release --example large_repetition [names|all]
 //! [size]`. For each exemplar, `SEEDS` seeds (default 2) at `size` (default 1024): the
 //! output's repetition at shifts of 48 pixels or more (`energy::repetition`, 1 = none,
-//! 0 = a verbatim translated copy) beside the exemplar's own, its patch energy, and the
-//! time, and the colour histogram's distance to the exemplar's
-//! (`energy::colour_distance`); seed 1 is written to out/large/<name>-<size>.png. A small exemplar must recur
+//! 0 = a verbatim translated copy) beside the exemplar's own, its patch energy, its
+//! colour histogram's distance to the exemplar's (`energy::colour_distance`) and the
+//! time; seed 1 is written to out/large/<name>-<size>.png. A small exemplar must recur
 //! many times in a large output, but as scattered patches: a lattice of copies shows as
 //! a low score.
 #[path = "support/textures.rs"]

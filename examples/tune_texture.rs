@@ -97,7 +97,7 @@ fn main() {
         let own = repetition(&ex, 48, 1);
         let n = seeds as f64;
         print!("{name} {:.2} / {:.3} ({own:.3}) {:.3}  ", sum / n, rep / n, colour / n);
-        all += sum / seeds as f64;
+        all += sum / n;
     }
     times.sort_by(|a, b| a.total_cmp(b));
     println!("| mean {:.2} | median {:.0} ms", all / names.len() as f64, times[times.len() / 2]);
