@@ -51,8 +51,9 @@ enum Kind {
     Wrap,
 }
 
-fn kind(job: &Job, pass: usize) -> Kind {
+fn kind(job: &Job, level: usize, pass: usize) -> Kind {
     match pass {
+        0 if job.quilted(level) => Kind::Correction { reverse: false },
         0 => Kind::Causal,
         p if job.params.tileable && p == passes(job) - 1 => Kind::Wrap,
         p => Kind::Correction { reverse: p % 2 == 1 },
@@ -83,7 +84,7 @@ pub fn bands(job: &Job, step: Step) -> Vec<Band> {
     // 1024 x 1024 was 1.69; with its causal pass only, 1.78 (`bench/workers.mjs`, one
     // session); the wrap at 512 x 512 is 1.11 times the mean boundary, against the 1.10
     // measured with the whole level as one band.
-    let serial = step.level + 1 == job.levels && step.pass == 0;
+    let serial = kind(job, step.level, step.pass) == Kind::Causal && step.level + 1 == job.levels;
     let n = if lh >= 2 * BAND_ROWS && !serial { lh / BAND_ROWS } else { 1 };
     if n == 1 {
         return vec![Band { first: 0, rows: lh }];
@@ -107,12 +108,16 @@ fn stream(seed: u64, level: usize, pass: usize, band: usize) -> Rng {
 /// The `pass` number of the coarsest level's noise streams.
 const NOISE: usize = 255;
 
-/// The state a level starts from: noise at the coarsest level, otherwise the parent's
-/// sources upsampled (the child position under each pixel, clamped to the exemplar).
+/// The state a level starts from: a quilt (`Job::quilted`) or noise at the coarsest
+/// level, otherwise the parent's sources upsampled (the child position under each pixel,
+/// clamped to the exemplar).
 pub fn initial(job: &Job, level: usize, parent: &[Vec<u32>]) -> Vec<Vec<u32>> {
     let (lw, lh) = job.sizes[level];
     (0..job.exemplars())
         .map(|e| {
+            if job.quilted(level) {
+                return job.quilt(e);
+            }
             let mut out = Vec::with_capacity(lw * lh);
             (0..lh).for_each(|y| initial_row(job, level, parent, e, y, &mut out));
             out
@@ -121,7 +126,8 @@ pub fn initial(job: &Job, level: usize, parent: &[Vec<u32>]) -> Vec<Vec<u32>> {
 }
 
 /// Appends row `y` of exemplar `e`'s map in `initial` to `out` (each row on its own, so
-/// that a band's window is made without the rest of the level).
+/// that a band's window is made without the rest of the level); not for a quilted
+/// level, which is laid whole.
 fn initial_row(job: &Job, level: usize, parent: &[Vec<u32>], e: usize, y: usize, out: &mut Vec<u32>) {
     let lw = job.sizes[level].0;
     if level + 1 == job.levels {
@@ -165,6 +171,14 @@ pub fn run(
     let Step { level, pass } = step;
     let (lw, lh) = job.sizes[level];
     let band = bands(job, step)[b];
+    let quilt;
+    let start = match start {
+        Start::Initial if job.quilted(level) => {
+            quilt = initial(job, level, parent);
+            Start::Maps(&quilt)
+        }
+        s => s,
+    };
     // The band and the rows its neighbourhoods reach, as they were at the start.
     let halo = if band.rows == lh { 0 } else { job.full.half as usize };
     let first = (band.first + lh - halo) % lh;
@@ -184,7 +198,7 @@ pub fn run(
         .collect();
     let mut map = Map::rows(window, uses.clone(), first, rows, lw, lh);
     let sweep = job.pass(level, parent);
-    let kind = kind(job, pass);
+    let kind = kind(job, level, pass);
     let (shape, use_full, reverse) = match kind {
         Kind::Causal => (&job.causal, false, false),
         Kind::Correction { reverse } => (&job.full, true, reverse),
@@ -209,6 +223,14 @@ pub fn run(
 /// The use counts of a step's starting state (the same in every worker).
 pub fn uses(job: &Job, step: Step, start: Start, parent: &[Vec<u32>]) -> Option<Uses> {
     let (level, lw) = (step.level, job.sizes[step.level].0);
+    let quilt;
+    let start = match start {
+        Start::Initial if job.quilted(level) => {
+            quilt = initial(job, level, parent);
+            Start::Maps(&quilt)
+        }
+        s => s,
+    };
     match start {
         Start::Maps(maps) => Uses::count(job, level, |e, y, out| out.extend_from_slice(&maps[e][y * lw..(y + 1) * lw])),
         Start::Initial => Uses::count(job, level, |e, y, out| initial_row(job, level, parent, e, y, out)),

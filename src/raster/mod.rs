@@ -15,6 +15,8 @@ pub mod neighbourhood;
 #[cfg(feature = "texture")]
 pub mod pyramid;
 #[cfg(feature = "texture")]
+pub mod quilt;
+#[cfg(feature = "texture")]
 pub mod synthesis;
 #[cfg(feature = "texture")]
 pub mod texture;

@@ -21,6 +21,7 @@
 use super::image::{check_output, check_size, Image, Rgba};
 use super::neighbourhood::Shape;
 use super::pyramid::{self, Edge};
+use super::quilt::Quilt;
 use crate::error::{invalid, Error, Result};
 use crate::progress::Throttle;
 use crate::rng::Rng;
@@ -317,6 +318,22 @@ impl Job {
         y < band || x < band || y + band / 2 >= lh || x + band / 2 >= lw
     }
 
+    /// Whether `level` starts from a quilt of exemplar windows (`quilt`) and so needs no
+    /// causal pass: the coarsest level of an output that is not a tile. (A tile's
+    /// coarsest level is grown causally and searched exhaustively, which joins long
+    /// structures across the wrap; a quilt is clipped there.)
+    pub(crate) fn quilted(&self, level: usize) -> bool {
+        level + 1 == self.levels && !self.params.tileable
+    }
+
+    /// Exemplar `e`'s quilt at the coarsest level: the same in both schedules.
+    pub(crate) fn quilt(&self, e: usize) -> Vec<u32> {
+        let level = self.levels - 1;
+        let (lw, lh) = self.sizes[level];
+        let mut rng = Rng::new(self.params.seed ^ (0x51 << 56) ^ e as u64);
+        quilt_params().lay(&self.mix.exs[e].levels[level], lw, lh, &mut rng)
+    }
+
     /// The parameters it was made with.
     pub fn params(&self) -> &Params {
         &self.params
@@ -420,9 +437,14 @@ pub fn synthesize(job: &Job, progress: &mut Throttle) -> Result<Rgba> {
 
     for level in (0..job.levels).rev() {
         let (lw, lh) = job.sizes[level];
-        // Noise: every pixel copies a random position of each exemplar.
+        // A quilt at the coarsest level, else noise: every pixel copies a random position
+        // of each exemplar.
+        let quilted = job.quilted(level);
         let src: Vec<Vec<u32>> = (0..job.exemplars())
             .map(|e| {
+                if quilted {
+                    return job.quilt(e);
+                }
                 let n = job.positions(e, level);
                 (0..lw * lh).map(|_| rng.below(n) as u32).collect()
             })
@@ -434,8 +456,8 @@ pub fn synthesize(job: &Job, progress: &mut Throttle) -> Result<Rgba> {
         // One causal pass, then the correction passes with full neighbourhoods, the first
         // in reverse scanline order: structure then also spreads up and left, from the
         // pixels the causal pass made last (6 seeds: mean energy 8.29 -> 8.12).
-        let passes = std::iter::once((&job.causal, false, false))
-            .chain((0..params.corrections).map(|i| (&job.full, true, i % 2 == 0)));
+        let first = if quilted { (&job.full, true, false) } else { (&job.causal, false, false) };
+        let passes = std::iter::once(first).chain((0..params.corrections).map(|i| (&job.full, true, i % 2 == 0)));
         for (shape, use_full, reverse) in passes {
             for row in 0..lh {
                 let y = if reverse { lh - 1 - row } else { row };
@@ -593,6 +615,19 @@ pub(crate) struct Pass<'a> {
     parent_src: &'a [Vec<u32>],
     /// Index deltas per exemplar, for the causal shape and the full one.
     offsets: Vec<(Offsets, Offsets)>,
+}
+
+/// The quilt's window side and candidates; probes may set them through
+/// `PATTERNSYNTH_QUILT=side,candidates`.
+fn quilt_params() -> Quilt {
+    #[cfg(feature = "test-support")]
+    if let Ok(v) = std::env::var("PATTERNSYNTH_QUILT") {
+        let n: Vec<usize> = v.split(',').filter_map(|s| s.parse().ok()).collect();
+        if n.len() == 2 {
+            return Quilt { side: n[0], candidates: n[1] };
+        }
+    }
+    Quilt::default()
 }
 
 /// Weight of the re-use penalty (see `Uses`). Over 2 seeds on the ten fixture
