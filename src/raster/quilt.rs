@@ -14,7 +14,8 @@
 //! cut through each overlap (a path found by dynamic programming), so windows meet along
 //! their most alike pixels rather than along straight lines.
 //!
-//! The quilt is not tileable: windows are clipped at the output's edges.
+//! Windows are clipped at the output's edges: a tile's coarsest level is not quilted
+//! (see `Job::quilted`).
 
 use super::image::Image;
 use crate::rng::Rng;
@@ -35,49 +36,49 @@ impl Default for Quilt {
 }
 
 impl Quilt {
-    /// Exemplar positions (row major in `ex`) for an output `lw` x `lh`.
-    pub fn lay(&self, ex: &Image, lw: usize, lh: usize, rng: &mut Rng) -> Vec<u32> {
+    /// The window side for an exemplar `ew` x `eh`: at most half of it, so that windows
+    /// come from places enough to differ; `None` when that is too small to quilt (under
+    /// 4 pixels).
+    pub fn window(&self, ew: usize, eh: usize) -> Option<usize> {
+        let b = self.side.min(ew / 2).min(eh / 2);
+        (b >= 4).then_some(b)
+    }
+
+    /// Exemplar positions (row major in `ex`) for an output `lw` x `lh`, or `None` when
+    /// `window` is.
+    pub fn lay(&self, ex: &Image, lw: usize, lh: usize, rng: &mut Rng) -> Option<Vec<u32>> {
         let (ew, eh) = (ex.width, ex.height);
-        let b = self.side.min(ew).min(eh);
-        if b < 4 {
-            // Too small an exemplar to quilt: noise.
-            return (0..lw * lh).map(|_| rng.below(ew * eh) as u32).collect();
-        }
+        let b = self.window(ew, eh)?;
         let o = b / 4;
         let step = b - o;
         const FREE: u32 = u32::MAX;
         let mut out = vec![FREE; lw * lh];
         let mut err = vec![0f32; b * b];
-        let mut y0 = 0usize;
-        loop {
-            let shift = rng.below(step) as isize;
-            let mut x0 = -shift;
-            let mut first = true;
-            while x0 < lw as isize {
-                let has_left = !first;
-                let has_top = y0 > 0;
-                // The window's pixels inside the output, as (dx, dy) -> output index.
+        let diff = |a: u32, p: u32| {
+            let (c, d) = (ex.data[a as usize], ex.data[p as usize]);
+            (0..3).map(|k| (c[k] - d[k]) * (c[k] - d[k])).sum::<f32>()
+        };
+        let pos = |(ox, oy): (usize, usize), dx: usize, dy: usize| ((oy + dy) * ew + ox + dx) as u32;
+        let rows = starts(lh, b, step, 0);
+        for (r, &y0) in rows.iter().enumerate() {
+            let cols = starts(lw, b, step, rng.below(step));
+            for (k, &x0) in cols.iter().enumerate() {
+                // The window's pixel (dx, dy) in the output, if inside.
                 let at = |dx: usize, dy: usize| -> Option<usize> {
-                    let (x, y) = (x0 + dx as isize, y0 + dy);
-                    (x >= 0 && (x as usize) < lw && y < lh).then(|| y * lw + x as usize)
+                    let (x, y) = (x0 + dx as isize, y0 + dy as isize);
+                    (x >= 0 && (x as usize) < lw && (y as usize) < lh).then(|| y as usize * lw + x as usize)
                 };
-                let overlap = |dx: usize, dy: usize| (has_left && dx < o) || (has_top && dy < o);
-                let diff = |a: u32, p: u32| {
-                    let (c, d) = (ex.data[a as usize], ex.data[p as usize]);
-                    (0..3).map(|k| (c[k] - d[k]) * (c[k] - d[k])).sum::<f32>()
-                };
-                let pos = |(ox, oy): (usize, usize), dx: usize, dy: usize| ((oy + dy) * ew + ox + dx) as u32;
-                // The best of a few random origins by the overlap's squared difference.
+                // The best of a few random origins by the squared difference over the
+                // pixels laid already.
                 let mut best = (f32::INFINITY, (0, 0));
                 for _ in 0..self.candidates.max(1) {
                     let origin = (rng.below(ew - b + 1), rng.below(eh - b + 1));
                     let mut e = 0.0;
                     for dy in 0..b {
                         for dx in 0..b {
-                            if let (true, Some(i)) = (overlap(dx, dy), at(dx, dy)) {
-                                if out[i] != FREE {
-                                    e += diff(pos(origin, dx, dy), out[i]);
-                                }
+                            match at(dx, dy) {
+                                Some(i) if out[i] != FREE => e += diff(pos(origin, dx, dy), out[i]),
+                                _ => {}
                             }
                         }
                     }
@@ -94,49 +95,49 @@ impl Quilt {
                         };
                     }
                 }
-                // The cuts: per row, the first column that is new; per column, the first row.
-                let left = if has_left { cut(&err, b, o, false) } else { vec![0; b] };
-                let top = if has_top { cut(&err, b, o, true) } else { vec![0; b] };
+                // A cut through each side that meets laid pixels: the left one (every
+                // window but a row's first) and the top one (every row but the first).
+                // Each gives, per row or column, how far in the old side reaches.
+                let left = if k > 0 { cut(b, o, |t, j| err[t * b + j]) } else { vec![0; b] };
+                let top = if r > 0 { cut(b, o, |t, j| err[j * b + t]) } else { vec![0; b] };
                 for (dy, &l) in left.iter().enumerate() {
                     for (dx, &t) in top.iter().enumerate() {
-                        if let Some(i) = at(dx, dy) {
-                            if out[i] == FREE || (dx >= l && dy >= t) {
-                                out[i] = pos(origin, dx, dy);
-                            }
+                        match at(dx, dy) {
+                            Some(i) if out[i] == FREE || (dx >= l && dy >= t) => out[i] = pos(origin, dx, dy),
+                            _ => {}
                         }
                     }
                 }
-                first = false;
-                x0 += step as isize;
             }
-            // The next row's top overlap starts where this row's windows end minus `o`.
-            if y0 + b >= lh {
-                break;
-            }
-            y0 += step;
         }
         debug_assert!(out.iter().all(|&p| p != FREE));
-        out
+        Some(out)
     }
 }
 
-/// The least-difference cut through the overlap strip of a `b` x `b` window's squared
-/// differences `err` (row major): the first `o` columns (`horizontal` false), giving for
-/// each row the first column on the new side; or the first `o` rows, giving for each
-/// column the first row on the new side.
-fn cut(err: &[f32], b: usize, o: usize, horizontal: bool) -> Vec<usize> {
-    // e(t, k): the error at step t along the strip, offset k across it.
-    let e = |t: usize, k: usize| if horizontal { err[k * b + t] } else { err[t * b + k] };
+/// Where the windows of side `b` start along a side of length `len`: `step` apart from
+/// `-shift` on, until the side is covered.
+fn starts(len: usize, b: usize, step: usize, shift: usize) -> Vec<isize> {
+    let mut v = vec![-(shift as isize)];
+    while let Some(&x) = v.last().filter(|&&x| x + (b as isize) < len as isize) {
+        v.push(x + step as isize);
+    }
+    v
+}
+
+/// The least-difference cut through an overlap strip `o` wide along a window side `b`
+/// long, whose squared differences are `e(t, k)` at step `t` along the side and depth
+/// `k` into the window (dynamic programming, moving at most one pixel sideways per
+/// step): for each step, the depth from which the new window's pixels are kept.
+fn cut(b: usize, o: usize, e: impl Fn(usize, usize) -> f32) -> Vec<usize> {
     let mut cost = vec![0f32; b * o];
+    let cheapest = |cost: &[f32], t: usize, k: usize| {
+        let (lo, hi) = (k.saturating_sub(1), (k + 1).min(o - 1));
+        (lo..=hi).min_by(|&i, &j| cost[t * o + i].total_cmp(&cost[t * o + j])).unwrap_or(k)
+    };
     for t in 0..b {
         for k in 0..o {
-            let prev = if t == 0 {
-                0.0
-            } else {
-                let lo = k.saturating_sub(1);
-                let hi = (k + 1).min(o - 1);
-                (lo..=hi).map(|j| cost[(t - 1) * o + j]).fold(f32::INFINITY, f32::min)
-            };
+            let prev = if t == 0 { 0.0 } else { cost[(t - 1) * o + cheapest(&cost, t - 1, k)] };
             cost[t * o + k] = e(t, k) + prev;
         }
     }
@@ -146,9 +147,7 @@ fn cut(err: &[f32], b: usize, o: usize, horizontal: bool) -> Vec<usize> {
     for t in (0..b).rev() {
         path[t] = k;
         if t > 0 {
-            let lo = k.saturating_sub(1);
-            let hi = (k + 1).min(o - 1);
-            k = (lo..=hi).min_by(|&i, &j| cost[(t - 1) * o + i].total_cmp(&cost[(t - 1) * o + j])).unwrap_or(k);
+            k = cheapest(&cost, t - 1, k);
         }
     }
     path
@@ -172,7 +171,7 @@ mod tests {
     fn every_pixel_copies_a_position_and_neighbours_mostly_continue() {
         let ex = gradient(32, 32);
         let (lw, lh) = (70, 45);
-        let q = Quilt::default().lay(&ex, lw, lh, &mut Rng::new(3));
+        let q = Quilt::default().lay(&ex, lw, lh, &mut Rng::new(3)).unwrap();
         assert_eq!(q.len(), lw * lh);
         assert!(q.iter().all(|&p| (p as usize) < 32 * 32));
         // Inside a window the right neighbour copies the next exemplar pixel; windows are
@@ -187,19 +186,20 @@ mod tests {
     #[test]
     fn the_cut_follows_the_cheapest_path() {
         // A 4 x 4 window with a 2-column strip: column 1 is free in rows 0-1, column 0 in 2-3.
-        let mut err = vec![9.0; 16];
+        let mut err = [9.0; 16];
         for (t, k) in [(0, 1), (1, 1), (2, 0), (3, 0)] {
             err[t * 4 + k] = 0.0;
         }
-        assert_eq!(cut(&err, 4, 2, false), vec![1, 1, 0, 0]);
-        // Transposed: the same path across the top rows.
-        let mut tr = vec![0.0; 16];
-        for y in 0..4 {
-            for x in 0..4 {
-                tr[x * 4 + y] = err[y * 4 + x];
-            }
-        }
-        assert_eq!(cut(&tr, 4, 2, true), vec![1, 1, 0, 0]);
+        assert_eq!(cut(4, 2, |t, k| err[t * 4 + k]), vec![1, 1, 0, 0]);
+        // Mirrored: the same path in from the right side.
+        assert_eq!(cut(4, 2, |t, k| err[t * 4 + 1 - k]), vec![0, 0, 1, 1]);
+    }
+
+    #[test]
+    fn windows_are_at_most_half_the_exemplar() {
+        assert_eq!(Quilt::default().window(32, 40), Some(16));
+        assert_eq!(Quilt::default().window(20, 64), Some(10));
+        assert_eq!(Quilt::default().window(6, 64), None);
     }
 
     #[test]
@@ -213,7 +213,7 @@ mod tests {
                 ex.data[y * 64 + x] = if x < 32 { [20.0; 3] } else { [rng.below(256) as f32; 3] };
             }
         }
-        let q = Quilt::default().lay(&ex, 128, 128, &mut Rng::new(1));
+        let q = Quilt::default().lay(&ex, 128, 128, &mut Rng::new(1)).unwrap();
         let left = q.iter().filter(|&&p| (p % 64) < 32).count() as f64 / q.len() as f64;
         assert!((0.3..0.7).contains(&left), "left share {left}");
     }
