@@ -2,11 +2,11 @@
 //! and that gives the same image however many there are.
 //!
 //! Each level starts from its parent's sources upsampled (Lefebvre and Hoppe 2005: the
-//! child (2x + i, 2y + j) of the exemplar position a parent pixel copies), or from noise
-//! at the coarsest level. Then come the same passes as in scanline order (one causal,
-//! then corrections with full neighbourhoods, the first reversed; a tileable output ends
-//! each level with the pixels along the wrap once more), but each pass cuts
-//! the level into bands of rows. A band is synthesized in scanline order reading its own
+//! child (2x + i, 2y + j) of the exemplar position a parent pixel copies), or at the
+//! coarsest level from the same quilt as in scanline order (noise for a tile). Then come
+//! the same passes as in scanline order (one causal, none on a quilt, then corrections
+//! with full neighbourhoods, the first reversed; a tileable output ends each level with
+//! the pixels along the wrap once more), but each pass cuts the level into bands of rows. A band is synthesized in scanline order reading its own
 //! rows as they change and the rows around it as they were when the pass began, with a
 //! random stream of its own; so the bands of a pass are independent, and a band's
 //! result depends only on the pass's starting state. Consecutive passes shift the bands
@@ -75,7 +75,8 @@ pub fn steps(job: &Job) -> Vec<Step> {
 /// workers run them.
 pub fn bands(job: &Job, step: Step) -> Vec<Band> {
     let lh = job.sizes[step.level].1;
-    // The coarsest level's causal pass is one band: it starts from noise, so a band's
+    // The coarsest level's causal pass (a tile's; a quilt, coherent from the start, has
+    // none, and all its passes are banded) is one band: it starts from noise, so a band's
     // first rows would be made against noise above them, and the break between bands
     // carried down to every finer level (at 512 x 512, rows within 16 of the middle and
     // of the wrap differed 1.1-1.2 times the mean). Its later passes start from that

@@ -1,8 +1,11 @@
 //! Multi-resolution Wei-Levoy synthesis against one exemplar, or two whose best matches
 //! each output pixel mixes by weights mu and 1 - mu (the paper's blending).
 //!
-//! Coarse to fine; at each level the output is filled in scanline order on a torus. A
-//! pixel's feature is its causal neighbourhood at this level and a 3x3 block of the
+//! Coarse to fine; at each level the output is filled in scanline order on a torus,
+//! from noise drawn from the exemplar (the paper's start). The coarsest level of an
+//! output that is not a tile starts instead from a quilt of exemplar windows (`quilt`),
+//! which its passes then join with full neighbourhoods: grown causally from noise, it
+//! drifted towards the exemplar's smoothest region. A pixel's feature is its causal neighbourhood at this level and a 3x3 block of the
 //! (finished) parent level, read where the pixel lies on it (`Pass::parent_feature`).
 //! For each exemplar with weight > 0 the best-matching exemplar position is found and
 //! the colours are mixed.
