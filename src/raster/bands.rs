@@ -157,6 +157,12 @@ pub enum Start<'a> {
     Initial,
 }
 
+/// A quilted level's initial state (`Start::Initial`), laid whole: a quilt is not made
+/// row by row.
+fn laid(job: &Job, level: usize, start: Start, parent: &[Vec<u32>]) -> Option<Vec<Vec<u32>>> {
+    matches!(start, Start::Initial if job.quilted(level)).then(|| initial(job, level, parent))
+}
+
 /// Runs band `b` of `step` from the step's starting state `start` (with its use counts,
 /// `uses(start)`, which the band then keeps up to date for itself) and the parent
 /// level's sources; returns the band's rows of each map, top row first. `on_row` is called after each row (for progress; an error stops the band).
@@ -172,14 +178,8 @@ pub fn run(
     let Step { level, pass } = step;
     let (lw, lh) = job.sizes[level];
     let band = bands(job, step)[b];
-    let quilt;
-    let start = match start {
-        Start::Initial if job.quilted(level) => {
-            quilt = initial(job, level, parent);
-            Start::Maps(&quilt)
-        }
-        s => s,
-    };
+    let quilt = laid(job, level, start, parent);
+    let start = quilt.as_deref().map_or(start, Start::Maps);
     // The band and the rows its neighbourhoods reach, as they were at the start.
     let halo = if band.rows == lh { 0 } else { job.full.half as usize };
     let first = (band.first + lh - halo) % lh;
@@ -224,14 +224,8 @@ pub fn run(
 /// The use counts of a step's starting state (the same in every worker).
 pub fn uses(job: &Job, step: Step, start: Start, parent: &[Vec<u32>]) -> Option<Uses> {
     let (level, lw) = (step.level, job.sizes[step.level].0);
-    let quilt;
-    let start = match start {
-        Start::Initial if job.quilted(level) => {
-            quilt = initial(job, level, parent);
-            Start::Maps(&quilt)
-        }
-        s => s,
-    };
+    let quilt = laid(job, level, start, parent);
+    let start = quilt.as_deref().map_or(start, Start::Maps);
     match start {
         Start::Maps(maps) => Uses::count(job, level, |e, y, out| out.extend_from_slice(&maps[e][y * lw..(y + 1) * lw])),
         Start::Initial => Uses::count(job, level, |e, y, out| initial_row(job, level, parent, e, y, out)),
