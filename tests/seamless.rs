@@ -73,7 +73,7 @@ fn the_wrap_of_a_synthesized_tile_is_no_seam_on_structured_photographs() {
         assert!(naive > 2.0, "{name}: naive {naive}");
         // ...and none in ours.
         assert!((0.8..1.25).contains(&tiles), "{name}: seam {tiles}");
-        // Print's banded tiles vary too much from seed to seed for 4 to tell (1.30 here;
+        // Print's banded tiles vary too much from seed to seed for 4 to tell (1.16 here;
         // other lines of the same tiles reach 2): its figure is in the benchmark. Below
         // 1 the wrap is smoother than the lines inside: brick's banded wraps often run
         // along a course of bricks rather than across mortar (0.71 over these 4 seeds), which

@@ -6,8 +6,8 @@
 //! coarsest level from the same quilt as in scanline order (noise for a tile). Then come
 //! the same passes as in scanline order (one causal, none on a quilt, then corrections
 //! with full neighbourhoods, the first reversed; a tileable output ends each level with
-//! the pixels along the wrap once more), but each pass cuts the level into bands of rows. A band is synthesized in scanline order reading its own
-//! rows as they change and the rows around it as they were when the pass began, with a
+//! the pixels along the wrap once more), but each pass cuts the level into bands of rows.
+//! A band is synthesized in scanline order reading its own rows as they change and the rows around it as they were when the pass began, with a
 //! random stream of its own; so the bands of a pass are independent, and a band's
 //! result depends only on the pass's starting state. Consecutive passes shift the bands
 //! by half a band, so that each band edge of one pass lies in the middle of a band of
@@ -116,9 +116,6 @@ pub fn initial(job: &Job, level: usize, parent: &[Vec<u32>]) -> Vec<Vec<u32>> {
     let (lw, lh) = job.sizes[level];
     (0..job.exemplars())
         .map(|e| {
-            if job.quilted(level) {
-                return job.quilt(e);
-            }
             let mut out = Vec::with_capacity(lw * lh);
             (0..lh).for_each(|y| initial_row(job, level, parent, e, y, &mut out));
             out
@@ -127,10 +124,14 @@ pub fn initial(job: &Job, level: usize, parent: &[Vec<u32>]) -> Vec<Vec<u32>> {
 }
 
 /// Appends row `y` of exemplar `e`'s map in `initial` to `out` (each row on its own, so
-/// that a band's window is made without the rest of the level); not for a quilted
-/// level, which is laid whole.
+/// that a band's window is made without the rest of the level; a quilt is laid whole,
+/// once per job).
 fn initial_row(job: &Job, level: usize, parent: &[Vec<u32>], e: usize, y: usize, out: &mut Vec<u32>) {
     let lw = job.sizes[level].0;
+    if job.quilted(level) {
+        out.extend_from_slice(&job.quilts()[e][y * lw..(y + 1) * lw]);
+        return;
+    }
     if level + 1 == job.levels {
         let mut rng = stream(job.params.seed, level, NOISE, y * job.exemplars() + e);
         let n = job.positions(e, level);
@@ -157,12 +158,6 @@ pub enum Start<'a> {
     Initial,
 }
 
-/// A quilted level's initial state (`Start::Initial`), laid whole: a quilt is not made
-/// row by row.
-fn laid(job: &Job, level: usize, start: Start, parent: &[Vec<u32>]) -> Option<Vec<Vec<u32>>> {
-    matches!(start, Start::Initial if job.quilted(level)).then(|| initial(job, level, parent))
-}
-
 /// Runs band `b` of `step` from the step's starting state `start` (with its use counts,
 /// `uses(start)`, which the band then keeps up to date for itself) and the parent
 /// level's sources; returns the band's rows of each map, top row first. `on_row` is called after each row (for progress; an error stops the band).
@@ -178,8 +173,6 @@ pub fn run(
     let Step { level, pass } = step;
     let (lw, lh) = job.sizes[level];
     let band = bands(job, step)[b];
-    let quilt = laid(job, level, start, parent);
-    let start = quilt.as_deref().map_or(start, Start::Maps);
     // The band and the rows its neighbourhoods reach, as they were at the start.
     let halo = if band.rows == lh { 0 } else { job.full.half as usize };
     let first = (band.first + lh - halo) % lh;
@@ -224,8 +217,6 @@ pub fn run(
 /// The use counts of a step's starting state (the same in every worker).
 pub fn uses(job: &Job, step: Step, start: Start, parent: &[Vec<u32>]) -> Option<Uses> {
     let (level, lw) = (step.level, job.sizes[step.level].0);
-    let quilt = laid(job, level, start, parent);
-    let start = quilt.as_deref().map_or(start, Start::Maps);
     match start {
         Start::Maps(maps) => Uses::count(job, level, |e, y, out| out.extend_from_slice(&maps[e][y * lw..(y + 1) * lw])),
         Start::Initial => Uses::count(job, level, |e, y, out| initial_row(job, level, parent, e, y, out)),

@@ -5,8 +5,9 @@
 //! from noise drawn from the exemplar (the paper's start). The coarsest level of an
 //! output that is not a tile starts instead from a quilt of exemplar windows (`quilt`),
 //! which its passes then join with full neighbourhoods: grown causally from noise, it
-//! drifted towards the exemplar's smoothest region. A pixel's feature is its causal neighbourhood at this level and a 3x3 block of the
-//! (finished) parent level, read where the pixel lies on it (`Pass::parent_feature`).
+//! drifted towards the exemplar's smoothest region. A pixel's feature is its causal
+//! neighbourhood at this level and a 3x3 block of the (finished) parent level, read
+//! where the pixel lies on it (`Pass::parent_feature`).
 //! For each exemplar with weight > 0 the best-matching exemplar position is found and
 //! the colours are mixed.
 //!
@@ -28,6 +29,7 @@ use super::quilt::Quilt;
 use crate::error::{invalid, Error, Result};
 use crate::progress::Throttle;
 use crate::rng::Rng;
+use std::sync::OnceLock;
 
 #[derive(Clone, Debug)]
 pub struct Params {
@@ -252,6 +254,10 @@ pub struct Job {
     pub sizes: Vec<(usize, usize)>,
     pub(crate) causal: Shape,
     pub(crate) full: Shape,
+    /// How the coarsest level is quilted, or `None` when it is not (see `quilted`).
+    quilt: Option<Quilt>,
+    /// The coarsest level's quilts, laid once (`quilts`).
+    quilts: OnceLock<Vec<Vec<u32>>>,
 }
 
 impl Job {
@@ -301,13 +307,21 @@ impl Job {
             }
         }
         let half = (side / 2) as isize;
+        let exs: Vec<Exemplar> = exemplars.iter().map(|e| Exemplar::new(e, levels)).collect();
+        let quilt = quilt_params();
+        let quiltable = exs.iter().all(|ex| {
+            let coarsest = &ex.levels[levels - 1];
+            quilt.window(coarsest.width, coarsest.height).is_some()
+        });
         Ok(Job {
-            mix: Mixer { exs: exemplars.iter().map(|e| Exemplar::new(e, levels)).collect(), mu, width, height },
+            mix: Mixer { exs, mu, width, height },
             params: params.clone(),
             levels,
             sizes: (0..levels).map(|l| (width.div_ceil(1 << l), height.div_ceil(1 << l))).collect(),
             causal: Shape::causal(half),
             full: Shape::full(half),
+            quilt: (quiltable && !params.tileable).then_some(quilt),
+            quilts: OnceLock::new(),
         })
     }
 
@@ -329,22 +343,22 @@ impl Job {
     /// wrap became a seam (`seam_lines`: 1.07 -> 1.22-1.47 over seeds 1-8, against the
     /// issue's 1.2).
     pub(crate) fn quilted(&self, level: usize) -> bool {
-        level + 1 == self.levels
-            && !self.params.tileable
-            && self.mix.exs.iter().all(|ex| {
-                let img = &ex.levels[level];
-                quilt_params().window(img.width, img.height).is_some()
-            })
+        level + 1 == self.levels && self.quilt.is_some()
     }
 
-    /// Exemplar `e`'s quilt at the coarsest level (which must be `quilted`): the same
-    /// in both schedules.
-    pub(crate) fn quilt(&self, e: usize) -> Vec<u32> {
-        let level = self.levels - 1;
-        let (lw, lh) = self.sizes[level];
-        let mut rng = Rng::new(self.params.seed ^ (0x51 << 56) ^ e as u64);
-        let ex = &self.mix.exs[e].levels[level];
-        quilt_params().lay(ex, lw, lh, &mut rng).expect("a quilted level")
+    /// The coarsest level's quilts, one per exemplar (empty when it is not `quilted`):
+    /// the same in both schedules, and laid once per job, however many bands read them.
+    pub(crate) fn quilts(&self) -> &[Vec<u32>] {
+        self.quilts.get_or_init(|| {
+            let Some(quilt) = self.quilt else { return Vec::new() };
+            let level = self.levels - 1;
+            let (lw, lh) = self.sizes[level];
+            let lay = |(e, ex): (usize, &Exemplar)| {
+                let mut rng = Rng::new(self.params.seed ^ (0x51 << 56) ^ e as u64);
+                quilt.lay(&ex.levels[level], lw, lh, &mut rng).expect("Job::new checked the window")
+            };
+            self.mix.exs.iter().enumerate().map(lay).collect()
+        })
     }
 
     /// The parameters it was made with.
@@ -439,7 +453,9 @@ impl Job {
 /// pixel, the exemplar position it copies (4 bytes), and a pixel's colour is read through
 /// it (mixed by mu when blending). With the parent level's map and mu in 16 bits, that
 /// is at most 5 bytes per output pixel for one exemplar and 12 for two, plus the RGBA
-/// result (4) at the end, when the parent's map is gone.
+/// result (4) at the end, when the parent's map is gone. The job also keeps the coarsest
+/// level's quilts (`Job::quilts`: 4 bytes per pixel of that level and exemplar, a
+/// quarter of a byte per output pixel with three levels, 4 with one).
 pub fn synthesize(job: &Job, progress: &mut Throttle) -> Result<Rgba> {
     let params = &job.params;
     let mut rng = Rng::new(params.seed);
@@ -453,15 +469,16 @@ pub fn synthesize(job: &Job, progress: &mut Throttle) -> Result<Rgba> {
         // A quilt at the coarsest level, else noise: every pixel copies a random position
         // of each exemplar.
         let quilted = job.quilted(level);
-        let src: Vec<Vec<u32>> = (0..job.exemplars())
-            .map(|e| {
-                if quilted {
-                    return job.quilt(e);
-                }
-                let n = job.positions(e, level);
-                (0..lw * lh).map(|_| rng.below(n) as u32).collect()
-            })
-            .collect();
+        let src: Vec<Vec<u32>> = if quilted {
+            job.quilts().to_vec()
+        } else {
+            (0..job.exemplars())
+                .map(|e| {
+                    let n = job.positions(e, level);
+                    (0..lw * lh).map(|_| rng.below(n) as u32).collect()
+                })
+                .collect()
+        };
         let uses = Uses::count(job, level, |e, y, out| out.extend_from_slice(&src[e][y * lw..(y + 1) * lw]));
         let mut map = Map::whole(src, uses, lw, lh);
         let pass = job.pass(level, &parent_src);
