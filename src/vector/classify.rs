@@ -194,7 +194,7 @@ pub fn propose_tolerances(strokes: &[Stroke]) -> Tolerances {
 /// The threshold between "same" and "different" in a set of distances measured on
 /// the scale `unit`: the geometric middle of the largest ratio gap, when that gap is at
 /// least 2.5x and its upper side is at least a tenth of `unit`.
-fn split_at_gap(mut d: Vec<f64>, unit: f64) -> f64 {
+pub(crate) fn split_at_gap(mut d: Vec<f64>, unit: f64) -> f64 {
     d.retain(|v| v.is_finite());
     crate::order::floats(&mut d);
     let floor = 0.02 * unit;

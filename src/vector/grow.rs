@@ -496,8 +496,19 @@ pub fn find_periods(elems: &[Element]) -> Result<Option<period::Periods>> {
     Ok(period::find(elems, &spread.grid, spread.spacing))
 }
 
+/// What growth made: the placed elements, how it went, and the orbit of each reference
+/// element: the example elements that are copies of one place of the pattern (one motif
+/// position under the periods or the fitted lattice; the class where there is neither).
+/// Variation dresses a placed element with a copy from its source's orbit, never with
+/// another place's element of the same class.
+pub struct Grown {
+    pub placed: Vec<Placed>,
+    pub stats: GrowStats,
+    pub orbit: Vec<u32>,
+}
+
 /// Grows the reference `elems` over a `width x height` area.
-pub fn grow(elems: &[Element], opts: &GrowOptions, progress: &mut Throttle) -> Result<(Vec<Placed>, GrowStats)> {
+pub fn grow(elems: &[Element], opts: &GrowOptions, progress: &mut Throttle) -> Result<Grown> {
     let raw_elems = elems;
     if !(opts.width.is_finite() && opts.height.is_finite() && opts.width > 0.0 && opts.height > 0.0) {
         return invalid("Output width and height must be positive numbers.");
@@ -513,7 +524,7 @@ pub fn grow(elems: &[Element], opts: &GrowOptions, progress: &mut Throttle) -> R
             let area = Rect::new(0.0, 0.0, opts.width, opts.height);
             let placed = period::extend(elems, &opts.extents, &periods, area, opts.max_elements, progress)?;
             progress.tick(1.0)?;
-            return Ok((placed, GrowStats::default()));
+            return Ok(Grown { placed, stats: GrowStats::default(), orbit: periods.motif });
         }
     }
     let drawn = Reference::on(elems, spread)?;
@@ -527,7 +538,7 @@ pub fn grow(elems: &[Element], opts: &GrowOptions, progress: &mut Throttle) -> R
         let area = Rect::new(0.0, 0.0, opts.width, opts.height);
         let placed = mosaic::mosaic(&drawn, &opts.extents, area, opts.seed, opts.max_elements, progress)?;
         progress.tick(1.0)?;
-        return Ok((placed, GrowStats::default()));
+        return Ok(Grown { placed, stats: GrowStats::default(), orbit: elems.iter().map(|e| e.class).collect() });
     }
     let snapped: Vec<Element> = match &fit {
         Some(f) => elems.iter().zip(&f.snapped).map(|(e, &pos)| Element { pos, class: e.class }).collect(),
@@ -600,5 +611,9 @@ pub fn grow(elems: &[Element], opts: &GrowOptions, progress: &mut Throttle) -> R
             e.pos += raw_elems[s].pos - snapped[s].pos;
         }
     }
-    Ok((placed, stats))
+    let orbit = match fit {
+        Some(f) => f.component,
+        None => raw_elems.iter().map(|e| e.class).collect(),
+    };
+    Ok(Grown { placed, stats, orbit })
 }

@@ -24,6 +24,8 @@ pub struct LatticeFit {
     pub a: Vec2,
     pub b: Option<Vec2>,
     pub snapped: Vec<Point>,
+    /// Motif position of each element (its component under the periods).
+    pub component: Vec<u32>,
 }
 
 /// A period must map at least this fraction of the elements onto same-class elements.
@@ -160,5 +162,6 @@ pub fn fit(elems: &[Element], grid: &Grid, pair_radius: &[f64], spacing: f64, re
     if residuals[residuals.len() / 2] > 0.15 * spacing {
         return None;
     }
-    Some(LatticeFit { a, b, snapped })
+    let component = coord.iter().map(|c| c.map_or(0, |c| c.0 as u32)).collect();
+    Some(LatticeFit { a, b, snapped, component })
 }

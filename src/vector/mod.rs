@@ -7,8 +7,11 @@ pub mod element;
 pub mod exemplar;
 pub mod frechet;
 pub mod grow;
+#[cfg(feature = "test-support")]
+pub mod handdrawn;
 pub mod lattice;
 mod mosaic;
+pub mod motif;
 pub mod period;
 mod reference;
 #[cfg(feature = "test-support")]

@@ -177,9 +177,28 @@ pub fn find(elems: &[Element], grid: &Grid, spacing: f64) -> Option<Periods> {
     let sample: Vec<usize> = (0..n).step_by(step).collect();
     let all: Vec<usize> = (0..n).collect();
     let is_period = |v: Vec2| index.supports(v, &sample, true) && index.supports(v, &all, true);
-    let a = *candidates.iter().find(|&&v| is_period(v))?;
-    let b = *candidates.iter().find(|&&v| a.cross(v).abs() > 0.1 * a.hypot() * v.hypot() && is_period(v))?;
-    let (a, b) = reduce(a, b);
+    // Each period as the mean of its instances rather than one displacement: with a
+    // hand's jitter, one pair is off by up to twice the jitter, and sums of periods
+    // (checked below) add the errors.
+    let mean = |v: Vec2| {
+        let (sum, count) = all.iter().fold((Vec2::ZERO, 0usize), |(s, c), &i| match index.partner(i, v) {
+            Some(j) => (s + (elems[j].pos - elems[i].pos), c + 1),
+            None => (s, c),
+        });
+        if count > 0 {
+            sum / count as f64
+        } else {
+            v
+        }
+    };
+    let a = mean(*candidates.iter().find(|&&v| is_period(v))?);
+    // The reduced basis must not be shorter than a candidate may be: two periods nearly
+    // parallel within the tolerance reduce to a sliver that maps every element onto itself.
+    let long = |(a, b): (Vec2, Vec2)| a.hypot().min(b.hypot()) > 2.0 * index.tolerance;
+    let b = *candidates
+        .iter()
+        .find(|&&v| a.cross(v).abs() > 0.1 * a.hypot() * v.hypot() && long(reduce(a, v)) && is_period(v))?;
+    let (a, b) = reduce(a, mean(b));
     // The reduced basis and its sums hold wherever the example overlaps its image.
     if ![a, b, a + b, a - b].iter().all(|&v| index.supports(v, &all, false)) {
         return None;
@@ -292,7 +311,13 @@ fn motifs(index: &Index, a: Vec2, b: Vec2) -> Option<Periods> {
         }
     }
     let cell: Vec<(i32, i32)> = cell.into_iter().collect::<Option<_>>()?;
-    let (a, b) = least_squares(elems, &motif, &cell, roots.len()).unwrap_or((a, b));
+    // The fit refines the found periods by a fraction of the tolerance; a fit far from
+    // them means a chain of partners skipped a cell (jitter near the tolerance), and
+    // the periods found stand.
+    let (a, b) = match least_squares(elems, &motif, &cell, roots.len()) {
+        Some((fa, fb)) if (fa - a).hypot() <= index.tolerance && (fb - b).hypot() <= index.tolerance => (fa, fb),
+        _ => (a, b),
+    };
     let origin_of = |i: usize| elems[i].pos - a * cell[i].0 as f64 - b * cell[i].1 as f64;
     let mut sums = vec![(Vec2::ZERO, 0usize); roots.len()];
     for i in 0..n {
@@ -390,7 +415,10 @@ pub fn extend(
             let (s, t) = to_lattice(c - o);
             (s0, s1, t0, t1) = (s0.min(s), s1.max(s), t0.min(t), t1.max(t));
         }
-        for l in t0.floor() as i32..=t1.ceil() as i32 {
+        let (l0, l1) = (t0.floor() as i32, t1.ceil() as i32);
+        for l in l0..=l1 {
+            // Per row of the lattice too: one motif position may be the whole output.
+            progress.tick((m as f64 + (l - l0) as f64 / (l1 - l0 + 1) as f64) / p.motifs.len() as f64)?;
             for k in s0.floor() as i32..=s1.ceil() as i32 {
                 let ideal = o + p.a * k as f64 + p.b * l as f64;
                 if !wide.contains(ideal) {

@@ -37,20 +37,26 @@ pub struct Regularity {
 /// (where synthesis placed the example), over `area`. Elements count as on a site
 /// within 0.3 spacings.
 pub fn measure(lattice: &Lattice, shift: Vec2, output: &[(Point, u32)], area: Rect) -> Regularity {
+    measure_at(lattice, lattice.spacing(), shift, output, area)
+}
+
+/// `measure` on the scale `spacing` instead of the lattice's smallest distance between
+/// sites: for motifs whose parts lie close together (the walls and door of a house), the
+/// period is the scale a person sees, and parts are told apart by class.
+pub fn measure_at(lattice: &Lattice, spacing: f64, shift: Vec2, output: &[(Point, u32)], area: Rect) -> Regularity {
     let mut lat = lattice.clone();
     lat.origin += shift;
-    let spacing = lattice.spacing();
     let centre = area.center();
     // Fit centre outward, so that a slightly different period is followed, not lost.
     for reach in [6.0, 12.0, 24.0, 48.0, 96.0, f64::INFINITY] {
         let near: Vec<(Point, u32)> =
             output.iter().copied().filter(|(p, _)| p.distance(centre) <= reach * spacing).collect();
-        let (_, matches) = assign(&lat, &near, area);
+        let (_, matches) = assign(&lat, spacing, &near, area);
         if let Some(fit) = fit(&lat, &matches) {
             lat = fit;
         }
     }
-    let (r, _) = assign(&lat, output, area);
+    let (r, _) = assign(&lat, spacing, output, area);
     let rel = |v: Vec2, w: Vec2| (v - w).hypot() / w.hypot();
     let period_error = rel(lat.a, lattice.a).max(match (lat.b, lattice.b) {
         (Some(v), Some(w)) => rel(v, w),
@@ -120,8 +126,12 @@ fn solve(m: &[[f64; 3]; 3], r: &[f64; 3], n: usize) -> Option<[f64; 3]> {
 }
 
 /// Matches each output element to the nearest same-class site of `lat` and counts.
-fn assign(lat: &Lattice, output: &[(Point, u32)], area: Rect) -> (Regularity, Vec<(Point, i64, i64, Vec2)>) {
-    let spacing = lat.spacing();
+fn assign(
+    lat: &Lattice,
+    spacing: f64,
+    output: &[(Point, u32)],
+    area: Rect,
+) -> (Regularity, Vec<(Point, i64, i64, Vec2)>) {
     let tol = 0.3 * spacing;
     let all = lat.sites_in(area.x0 - spacing, area.y0 - spacing, area.x1 + spacing, area.y1 + spacing);
     // Nearest same-class site of each output element, by brute force over a coarse grid.

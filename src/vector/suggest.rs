@@ -145,26 +145,35 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
     }
     let (earlier, strokes) = strokes.split_at(skip);
     let classification = classify_strokes(strokes, opts.path_tolerance, opts.width_tolerance, opts.color_tolerance)?;
-    let elems = classification.elements(strokes);
+    // The repetition is one of motifs: a copy of a motif of several strokes is one
+    // element, proposed whole (an accepted copy is one whose strokes all were).
+    let motifs = &classification.motifs;
+    let elems = classification.elements();
+    let parts: Vec<usize> = motifs.instances.iter().map(Vec::len).collect();
+    let weight: Vec<f64> = motifs
+        .instances
+        .iter()
+        .map(|g| if g.iter().all(|&s| weight[s as usize] < 1.0) { SUGGESTED_WEIGHT } else { 1.0 })
+        .collect();
     let Ok(mut spread) = Spread::new(&elems) else {
         return Ok(nothing("The strokes have no spacing to repeat."));
     };
     spread.spacing = spread.apart(&elems);
-    let Some(fit) = Fit::find(&elems, &weight, &spread) else {
+    let Some(fit) = Fit::find(&elems, &weight, &parts, &spread) else {
         return Ok(nothing("The drawing shows no repetition yet."));
     };
-    let latest = elems.len() - 1;
+    let latest = motifs.instance_of()[strokes.len() - 1] as usize;
     if fit.motif[fit.cell[latest].0].members.len() < 2 {
         return Ok(nothing("The latest stroke does not repeat the pattern."));
     }
     let points = strokes.iter().map(|s| s.points.len().max(1)).sum::<usize>();
     let per_copy = points.div_ceil(elems.len()) * fit.motif.len();
+    let extents = motifs.extents(strokes);
     let wanted = fit.wanted(&elems, region, opts, (MAX_FILL_POINTS / per_copy.max(1)).clamp(1, MAX_FILL_CELLS));
     let mut out = Suggestions {
         periods: std::iter::once(fit.a).chain(fit.b).map(|v| [v.x, v.y]).collect(),
         ..Suggestions::default()
     };
-    let members = classification.members();
     // A copy drawn where the lattice (fitted to hand-drawn copies) no longer puts it is
     // still drawn: nothing is proposed on a stroke of its class.
     let tol = TOLERANCE * spread.spacing;
@@ -194,19 +203,22 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
                 ^ (cell.0 as u64).wrapping_mul(0xC2B2_AE3D)
                 ^ (cell.1 as u64).wrapping_mul(0x1656_67B1),
         );
+        // Variation among the drawn copies of this motif position only.
         let source = motif.members[rng.below(motif.members.len())];
-        let class = &members[elems[source].class as usize];
-        let pick = if opts.variation { class[rng.below(class.len())] } else { source };
+        let pick = if opts.variation { motif.members[rng.below(motif.members.len())] } else { source };
         let target = fit.site(m, cell) + (elems[source].pos - fit.site(m, fit.at(source)));
-        let s = &strokes[pick];
-        if drawn_at(elems[source].class, target, s.bounds().size().to_vec2().hypot()) {
+        if drawn_at(elems[source].class, target, extents[pick].hypot() * 2.0) {
             continue;
         }
-        let r = s.reference_point();
-        out.strokes.push(s.translated(target.x - r.x, target.y - r.y));
-        out.confidence.push(fit.quality * FALLOFF.powi(steps as i32));
-        out.sources.push((source + skip) as u32);
-        out.cells.push([cell.0, cell.1]);
+        let shift = target - motifs.centre[pick];
+        for &s in &motifs.instances[pick] {
+            let part = motifs.part[s as usize];
+            let named = motifs.instances[source].iter().copied().find(|&t| motifs.part[t as usize] == part);
+            out.strokes.push(strokes[s as usize].translated(shift.x, shift.y));
+            out.confidence.push(fit.quality * FALLOFF.powi(steps as i32));
+            out.sources.push(named.unwrap_or(s) + skip as u32);
+            out.cells.push([cell.0, cell.1]);
+        }
     }
     if out.strokes.is_empty() {
         out.reason = Some(if uncertain > 0 {
@@ -252,11 +264,14 @@ struct Certainty {
 
 impl Fit {
     /// The best lattice of `elems`, or `None` when no candidate explains them.
-    fn find(elems: &[Element], weight: &[f64], spread: &Spread) -> Option<Fit> {
+    fn find(elems: &[Element], weight: &[f64], parts: &[usize], spread: &Spread) -> Option<Fit> {
         let tol = TOLERANCE * spread.spacing;
-        let candidates = candidates(elems, spread, tol);
+        let candidates = candidates(elems, parts, spread, tol);
         let rows = |check| {
-            candidates.iter().take(MAX_TRIED).find_map(|&a| Fit::build(elems, weight, spread, tol, a, None, check))
+            candidates
+                .iter()
+                .take(MAX_TRIED)
+                .find_map(|&a| Fit::build(elems, weight, parts, spread, tol, a, None, check))
         };
         let row = rows(true);
         // A lattice filled in out of order leaves cells out of its rows, which no row
@@ -266,7 +281,7 @@ impl Fit {
             None => rows(false)?.a,
         };
         for &b in candidates.iter().filter(|v| a.cross(**v).abs() > 0.3 * a.hypot() * v.hypot()).take(MAX_TRIED) {
-            if let Some(f) = Fit::build(elems, weight, spread, tol, a, Some(b), true) {
+            if let Some(f) = Fit::build(elems, weight, parts, spread, tol, a, Some(b), true) {
                 return Some(f);
             }
         }
@@ -275,9 +290,11 @@ impl Fit {
 
     /// The lattice of periods `a` (and `b`) over `elems`, if it explains them (without
     /// `strict`, a row may leave a third of its cells out).
+    #[allow(clippy::too_many_arguments)]
     fn build(
         elems: &[Element],
         weight: &[f64],
+        parts: &[usize],
         spread: &Spread,
         tol: f64,
         a: Vec2,
@@ -368,8 +385,12 @@ impl Fit {
         for (i, &(m, _)) in cell.iter().enumerate() {
             motif[m].members.push(i);
         }
-        let explained: usize = motif.iter().filter(|m| m.members.len() >= 2).map(|m| m.members.len()).sum();
-        if explained < 3 || (explained as f64) < EXPLAINED * n as f64 {
+        // Counted in strokes: two copies of a motif of two strokes repeat as clearly as
+        // three copies of one stroke.
+        let explained: usize =
+            motif.iter().filter(|m| m.members.len() >= 2).flat_map(|m| m.members.iter().map(|&i| parts[i])).sum();
+        let total: usize = parts.iter().sum();
+        if explained < 3 || (explained as f64) < EXPLAINED * total as f64 {
             return None;
         }
         // Periods by least squares over every stroke (one pair's offset carries its two
@@ -392,7 +413,7 @@ impl Fit {
         if residual > MAX_RESIDUAL * spread.spacing || fit.contradicted(elems, tol, strict) {
             return None;
         }
-        let quality = (explained as f64 / n as f64) * (1.0 - residual / spread.spacing);
+        let quality = (explained as f64 / total as f64) * (1.0 - residual / spread.spacing);
         let certainty = fit.certainty(elems, weight);
         Some(Fit { quality, certainty, ..fit })
     }
@@ -720,11 +741,12 @@ impl Lattice {
     }
 }
 
-/// Offsets between same-class strokes that recur (at least twice from the latest
-/// strokes), in one half-plane, shortest first.
-fn candidates(elems: &[Element], spread: &Spread, tol: f64) -> Vec<Vec2> {
+/// Offsets between same-class elements that recur (at least twice from the latest
+/// elements, an offset between two copies of a motif of `k` strokes counting `k` times:
+/// each of its parts shows it), in one half-plane, shortest first.
+fn candidates(elems: &[Element], parts: &[usize], spread: &Spread, tol: f64) -> Vec<Vec2> {
     let n = elems.len();
-    let mut offsets: Vec<Vec2> = Vec::new();
+    let mut offsets: Vec<(Vec2, usize)> = Vec::new();
     let first = n.saturating_sub(RECENT);
     for i in first..n {
         for (j, o) in elems.iter().enumerate() {
@@ -739,13 +761,13 @@ fn candidates(elems: &[Element], spread: &Spread, tol: f64) -> Vec<Vec2> {
             if v.x < 0.0 || (v.x == 0.0 && v.y < 0.0) {
                 v = -v;
             }
-            offsets.push(v);
+            offsets.push((v, parts[i].min(parts[j])));
         }
     }
-    let offsets = crate::order::sorted(&offsets, |v| v.hypot2());
+    let offsets = crate::order::sorted(&offsets, |v| v.0.hypot2());
     // Cluster: each kept offset with the number of offsets within `tol` of it.
     let mut kept: Vec<(Vec2, usize)> = Vec::new();
-    for v in offsets {
+    for (v, votes) in offsets {
         let len = v.hypot();
         // Offsets near the half-plane's edge may have flipped: compare both signs.
         let near = kept
@@ -754,8 +776,8 @@ fn candidates(elems: &[Element], spread: &Spread, tol: f64) -> Vec<Vec2> {
             .take_while(|(k, _)| len - k.hypot() < tol)
             .find(|(k, _)| (*k - v).hypot() < tol || (*k + v).hypot() < tol);
         match near {
-            Some(k) => k.1 += 1,
-            None => kept.push((v, 1)),
+            Some(k) => k.1 += votes,
+            None => kept.push((v, votes)),
         }
     }
     kept.into_iter().filter(|&(_, votes)| votes >= 2).map(|(v, _)| v).collect()

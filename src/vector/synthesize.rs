@@ -2,12 +2,12 @@
 //! write SVG. This is the entry point the wasm layer and the tests call.
 
 use super::classify::{classify, propose_tolerances, Tolerances};
-use super::grow::{grow, Element, GrowOptions, GrowStats};
+use super::grow::{find_periods, grow, Element, GrowOptions, Grown};
+use super::motif::{self, Motifs};
 use super::stroke::Stroke;
 use super::svg::to_svg;
 use crate::error::{invalid, Error, Result};
 use crate::progress::{Progress, Throttle};
-use crate::rng::Rng;
 use serde::{Deserialize, Serialize};
 
 /// Options of `synthesize_strokes`; every tolerance left out is proposed from the data.
@@ -59,16 +59,23 @@ pub struct Classification {
     /// Class of each input stroke, numbered by first appearance.
     pub classes: Vec<u32>,
     pub count: u32,
+    /// The motif instance (a drawn copy of a motif of one or more strokes) of each stroke.
+    pub instances: Vec<u32>,
+    /// Kinds of motif (instances that are copies of one another).
+    pub kinds: u32,
     /// The tolerances used (the proposal where the caller gave none).
     pub tolerances: Tolerances,
     /// The automatic proposal, to show as a starting point.
     pub proposed: Tolerances,
+    /// The drawing as motif instances: what growth, tiles and suggestions place.
+    #[serde(skip)]
+    pub motifs: Motifs,
 }
 
 impl Classification {
-    /// Each stroke as a point element: its reference point and class.
-    pub fn elements(&self, strokes: &[Stroke]) -> Vec<Element> {
-        strokes.iter().zip(&self.classes).map(|(s, &class)| Element { pos: s.reference_point(), class }).collect()
+    /// Each motif instance as a point element: its centre and kind.
+    pub fn elements(&self) -> Vec<Element> {
+        self.motifs.elements()
     }
 
     /// The strokes of each class, in drawing order.
@@ -123,8 +130,18 @@ pub fn classify_strokes(
         color: color.unwrap_or(proposed.color),
     };
     let classes = classify(strokes, &tolerances);
+    // Motifs of several strokes, unless the strokes repeat one by one (an exact tile).
+    let periodic = |classes: &[u32]| {
+        let elems: Vec<Element> =
+            strokes.iter().zip(classes).map(|(s, &class)| Element { pos: s.reference_point(), class }).collect();
+        find_periods(&elems).ok().flatten().is_some()
+    };
+    let grouping = motif::group(strokes, &classes, tolerances, path.is_some(), periodic);
+    let classes = grouping.classes.unwrap_or(classes);
     let count = classes.iter().max().map_or(0, |m| m + 1);
-    Ok(Classification { classes, count, tolerances, proposed })
+    let motifs = grouping.motifs;
+    let kinds = motifs.kind.iter().max().map_or(0, |m| m + 1);
+    Ok(Classification { classes, count, instances: motifs.instance_of(), kinds, tolerances, proposed, motifs })
 }
 
 /// The most elements any output may hold, whatever `maxElements` says.
@@ -148,48 +165,27 @@ pub fn synthesize_strokes(
         )));
     }
     let classification = classify_strokes(strokes, opts.path_tolerance, opts.width_tolerance, opts.color_tolerance)?;
-    // The output's size is its points, not only its elements: busy strokes lower the cap.
-    let mean_points = strokes.iter().map(|s| s.points.len().max(1)).sum::<usize>() / strokes.len().max(1);
+    // The output's size is its points, not only its elements: busy motifs lower the cap.
+    let instances = classification.motifs.instances.len().max(1);
+    let mean_points = strokes.iter().map(|s| s.points.len().max(1)).sum::<usize>() / instances;
     let max_elements = opts.max_elements.min(MAX_OUTPUT_POINTS / mean_points.max(1));
     Throttle::new(progress).tick(0.02)?;
-    let elements = classification.elements(strokes);
+    let elements = classification.elements();
+    let motifs = &classification.motifs;
     let grow_opts = GrowOptions {
         width: opts.width,
         height: opts.height,
         support: opts.support,
         max_elements,
         regularize: opts.regularize,
-        extents: strokes
-            .iter()
-            .map(|s| {
-                let b = s.bounds();
-                let pad = if s.stroke.is_some() { s.width / 2.0 } else { 0.0 };
-                kurbo::Vec2::new(b.width() / 2.0 + pad, b.height() / 2.0 + pad)
-            })
-            .collect(),
+        extents: motifs.extents(strokes),
         seed: opts.seed,
         ..GrowOptions::default()
     };
-    let (placed, stats): (_, GrowStats) = grow(&elements, &grow_opts, &mut Throttle::with_range(progress, 0.02, 0.98))?;
-
-    let members = classification.members();
-    let mut rng = Rng::new(opts.seed);
-    let mut order: Vec<usize> = (0..placed.len()).collect();
-    // Layering follows the example: by the drawing order of the copied stroke.
-    order.sort_by_key(|&i| placed[i].source);
-    let mut out = Vec::with_capacity(placed.len());
-    let mut classes = Vec::with_capacity(placed.len());
-    let mut sources = Vec::with_capacity(placed.len());
-    for i in order {
-        let e = placed[i];
-        let class_members = &members[e.class as usize];
-        let pick = if opts.variation { class_members[rng.below(class_members.len())] } else { e.source as usize };
-        let s = &strokes[pick];
-        let r = s.reference_point();
-        out.push(s.translated(e.pos.x - r.x, e.pos.y - r.y));
-        classes.push(e.class);
-        sources.push(e.source);
-    }
+    let Grown { placed, stats, orbit } = grow(&elements, &grow_opts, &mut Throttle::with_range(progress, 0.02, 0.98))?;
+    let area = kurbo::Rect::new(0.0, 0.0, opts.width, opts.height);
+    let (out, classes, sources) =
+        motifs.dress(strokes, &classification.classes, &placed, &orbit, opts.variation.then_some(opts.seed), area);
     let svg = to_svg(&out, opts.width, opts.height);
     Throttle::new(progress).tick(1.0)?;
     Ok(StrokeResult {

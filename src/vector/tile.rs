@@ -63,7 +63,8 @@ pub struct TileResult {
     pub height: f64,
     /// The exact periods of the tile's lattice.
     pub periods: [[f64; 2]; 2],
-    /// Lattice sites in the tile (elements before edge copies).
+    /// Stroke sites in the tile (strokes before edge copies; a motif of several strokes
+    /// has one site per stroke).
     pub sites: usize,
     pub classification: Classification,
     pub svg: String,
@@ -101,7 +102,8 @@ pub fn stroke_tile(strokes: &[Stroke], opts: &TileOptions) -> Result<TileResult>
         return invalid("repeats must be from 1 to 8.");
     }
     let classification = classify_strokes(strokes, opts.path_tolerance, opts.width_tolerance, opts.color_tolerance)?;
-    let elems = classification.elements(strokes);
+    let elems = classification.elements();
+    let motifs = &classification.motifs;
     let Some(fit) = fit_lattice(&elems)? else {
         return invalid(
             "No regular repeat found in these strokes: a seamless tile needs a drawing that repeats \
@@ -165,14 +167,13 @@ pub fn stroke_tile(strokes: &[Stroke], opts: &TileOptions) -> Result<TileResult>
         }
     }
 
-    let members = classification.members();
     let mut rng = Rng::new(opts.seed);
     let tile = Rect::new(0.0, 0.0, width, height);
     let reach = (i.abs() + j.abs() + k.abs() + l.abs()) + 1;
-    // (drawing order, stroke, class)
-    let mut placed: Vec<(usize, Stroke, u32)> = Vec::new();
+    // (source instance's first stroke, part order, stroke, class)
+    let mut placed: Vec<(u32, usize, Stroke, u32)> = Vec::new();
     let mut sites = 0usize;
-    for ((fu, fv), class, example) in &motif {
+    for ((fu, fv), _, example) in &motif {
         let mut seen: Vec<Point> = Vec::new();
         for u in -reach..=reach {
             for v in -reach..=reach {
@@ -187,42 +188,47 @@ pub fn stroke_tile(strokes: &[Stroke], opts: &TileOptions) -> Result<TileResult>
                     continue;
                 }
                 seen.push(p);
-                sites += 1;
+                // Variation among the copies of this motif position only: another
+                // place's motif of the same kind never stands in.
                 let source = example[rng.below(example.len())];
-                let pick = if opts.variation {
-                    let m = &members[*class as usize];
-                    m[rng.below(m.len())]
-                } else {
-                    source
-                };
-                let deviation = elems[source].pos - fit.snapped[source];
-                let s = &strokes[pick];
-                let target = p + deviation;
-                let moved = s.translated(target.x - s.reference_point().x, target.y - s.reference_point().y);
-                // The copies of it that show in the tile: itself and one period over
-                // wherever it crosses an edge.
-                let half = 0.5 * moved.width.max(0.0);
-                let bb = moved.bounds().inflate(half, half);
-                let (nx0, nx1) = ((-bb.x1 / width).ceil(), ((width - bb.x0) / width).floor());
-                let (ny0, ny1) = ((-bb.y1 / height).ceil(), ((height - bb.y0) / height).floor());
-                // Counted before any is made: a stroke much wider than the repeat is
-                // copied at every period it covers, (width / period)^2 times.
-                let copies = (nx1 - nx0 + 1.0).max(1.0) * (ny1 - ny0 + 1.0).max(1.0);
-                if copies.is_nan() || placed.len() as f64 + copies > MAX_TILE_STROKES as f64 {
-                    return Err(Error::TooLarge(format!(
-                        "The tile would hold more than {MAX_TILE_STROKES} strokes: strokes much wider than the \
-                         repeat ({:.0} x {:.0}) are repeated at every period they cover. Draw thinner strokes.",
-                        width, height
-                    )));
-                }
-                let (nx0, nx1, ny0, ny1) = (nx0 as i64, nx1 as i64, ny0 as i64, ny1 as i64);
-                for nx in nx0..=nx1 {
-                    for ny in ny0..=ny1 {
-                        let (dx, dy) = (nx as f64 * width, ny as f64 * height);
-                        if bb.with_origin(bb.origin() + Vec2::new(dx, dy)).intersect(tile).area() > 0.0
-                            || (nx, ny) == (0, 0)
-                        {
-                            placed.push((source, moved.translated(dx, dy), *class));
+                let pick = if opts.variation { example[rng.below(example.len())] } else { source };
+                let target = p + (elems[source].pos - fit.snapped[source]);
+                let first = motifs.instances[source][0];
+                sites += motifs.instances[pick].len();
+                for (part, &si) in motifs.instances[pick].iter().enumerate() {
+                    let s = &strokes[si as usize];
+                    let at = target + (s.reference_point() - motifs.centre[pick]);
+                    let moved = s.translated(at.x - s.reference_point().x, at.y - s.reference_point().y);
+                    // The copies of it that show in the tile: itself and one period over
+                    // wherever it crosses an edge.
+                    let half = 0.5 * moved.width.max(0.0);
+                    let bb = moved.bounds().inflate(half, half);
+                    let (nx0, nx1) = ((-bb.x1 / width).ceil(), ((width - bb.x0) / width).floor());
+                    let (ny0, ny1) = ((-bb.y1 / height).ceil(), ((height - bb.y0) / height).floor());
+                    // Counted before any is made: a stroke much wider than the repeat is
+                    // copied at every period it covers, (width / period)^2 times.
+                    let copies = (nx1 - nx0 + 1.0).max(1.0) * (ny1 - ny0 + 1.0).max(1.0);
+                    if copies.is_nan() || placed.len() as f64 + copies > MAX_TILE_STROKES as f64 {
+                        return Err(Error::TooLarge(format!(
+                            "The tile would hold more than {MAX_TILE_STROKES} strokes: strokes much wider than the \
+                             repeat ({:.0} x {:.0}) are repeated at every period they cover. Draw thinner strokes.",
+                            width, height
+                        )));
+                    }
+                    let (nx0, nx1, ny0, ny1) = (nx0 as i64, nx1 as i64, ny0 as i64, ny1 as i64);
+                    for nx in nx0..=nx1 {
+                        for ny in ny0..=ny1 {
+                            let (dx, dy) = (nx as f64 * width, ny as f64 * height);
+                            if bb.with_origin(bb.origin() + Vec2::new(dx, dy)).intersect(tile).area() > 0.0
+                                || (nx, ny) == (0, 0)
+                            {
+                                placed.push((
+                                    first,
+                                    part,
+                                    moved.translated(dx, dy),
+                                    classification.classes[si as usize],
+                                ));
+                            }
                         }
                     }
                 }
@@ -230,8 +236,8 @@ pub fn stroke_tile(strokes: &[Stroke], opts: &TileOptions) -> Result<TileResult>
         }
     }
     // Layering follows the example's drawing order.
-    placed.sort_by_key(|(source, _, _)| *source);
-    let (strokes, classes): (Vec<Stroke>, Vec<u32>) = placed.into_iter().map(|(_, s, c)| (s, c)).unzip();
+    placed.sort_by_key(|(first, part, _, _)| (*first, *part));
+    let (strokes, classes): (Vec<Stroke>, Vec<u32>) = placed.into_iter().map(|(_, _, s, c)| (s, c)).unzip();
     let svg = to_svg(&strokes, width, height);
     Ok(TileResult {
         strokes,

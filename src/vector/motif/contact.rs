@@ -1,0 +1,295 @@
+//! Motif instances by contact: strokes drawn on or against one another (the bars of a
+//! cross, petals round a dot, the walls, roof and door of a house) are parts of one copy
+//! of a motif.
+//!
+//! The gap between two strokes is the least distance between their paths less half
+//! their widths (zero where they cross, or where one lies inside the other's closed
+//! outline). The strokes are joined in order of increasing gap (a minimum spanning
+//! forest, Kruskal) and the joins are cut at the largest ratio gap between consecutive
+//! join lengths, when it is clear: parts of a motif touch or nearly touch, copies stand
+//! apart. A drawing with no clear gap (a grid of single strokes, hatching, a mesh whose
+//! pieces all touch) has no multi-stroke instances, and its strokes stay their own.
+
+use super::super::classify::typical_size;
+use super::super::spatial::Grid;
+use super::super::stroke::Stroke;
+use kurbo::{Point, Rect, Vec2};
+
+/// Pairs further apart than this many median stroke sizes are never parts of one copy
+/// (a shaky hand leaves gaps of a good part of a small stroke between parts).
+const REACH: f64 = 2.0;
+/// The join lengths must jump by at least this ratio between parts and copies.
+const CLEAR: f64 = 3.0;
+/// Gaps are compared above this floor (a share of the median stroke size): a hand never
+/// makes two strokes meet exactly, so 0 against 0.01 is no gap.
+const FLOOR: f64 = 0.03;
+/// Samples per stroke for the gap (the gap is then exact to about a sixtieth of its length).
+const SAMPLES: usize = 32;
+
+/// Groups `strokes` into motif instances: each instance's strokes in drawing order,
+/// instances in the order of their first stroke. `None` when no clear grouping exists
+/// (every stroke is then its own instance).
+pub fn instances(strokes: &[Stroke]) -> Option<Vec<Vec<u32>>> {
+    let n = strokes.len();
+    if n < 4 {
+        return None;
+    }
+    let size = typical_size(strokes);
+    let reach = REACH * size;
+    let paths: Vec<Vec<Point>> = strokes.iter().map(sampled).collect();
+    let boxes: Vec<Rect> = strokes.iter().map(|s| s.bounds().inflate(s.width / 2.0, s.width / 2.0)).collect();
+    let all = boxes.iter().skip(1).fold(boxes[0], |r, b| r.union(*b));
+    let biggest = boxes.iter().map(|b| b.width().max(b.height())).fold(0.0, f64::max);
+    let mut grid = Grid::new(all, (size + reach).max(1e-9), 4 * n + 16);
+    for (i, b) in boxes.iter().enumerate() {
+        grid.insert(i as u32, b.center());
+    }
+    let mut edges: Vec<(f64, u32, u32)> = Vec::new();
+    for i in 0..n {
+        let bi = boxes[i].inflate(reach, reach);
+        grid.for_each_near(boxes[i].center(), 0.5 * (boxes[i].width().max(boxes[i].height()) + biggest) + reach, |j| {
+            let j = j as usize;
+            if j <= i || bi.intersect(boxes[j]).is_zero_area() && !touches(bi, boxes[j]) {
+                return;
+            }
+            let g = gap(&strokes[i], &paths[i], &strokes[j], &paths[j]);
+            if g < reach {
+                edges.push((g, i as u32, j as u32));
+            }
+        });
+    }
+    edges.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)).then(a.2.cmp(&b.2)));
+    // Kruskal: the joins of the minimum spanning forest, in order.
+    let mut sets = Sets::new(n);
+    let joins: Vec<(f64, u32, u32)> = edges.into_iter().filter(|&(_, i, j)| sets.union(i, j)).collect();
+    let cut = cut(&joins.iter().map(|j| j.0).collect::<Vec<_>>(), reach, FLOOR * size)?;
+    let mut sets = Sets::new(n);
+    for &(g, i, j) in &joins {
+        if g <= cut {
+            sets.union(i, j);
+        }
+    }
+    let mut index = vec![u32::MAX; n];
+    let mut out: Vec<Vec<u32>> = Vec::new();
+    for i in 0..n {
+        let root = sets.find(i as u32) as usize;
+        if index[root] == u32::MAX {
+            index[root] = out.len() as u32;
+            out.push(Vec::new());
+        }
+        out[index[root] as usize].push(i as u32);
+    }
+    // A grouping is only one when copies repeat: at least two instances of several
+    // strokes, holding most strokes, none holding half of the drawing (a mesh), and most
+    // smaller than the distance to the nearest other (rows of a dense grid touch along
+    // the row: they are lines of copies, not copies).
+    let multi: Vec<&Vec<u32>> = out.iter().filter(|g| g.len() >= 2).collect();
+    let grouped: usize = multi.iter().map(|g| g.len()).sum();
+    let largest = out.iter().map(Vec::len).max().unwrap_or(0);
+    if multi.len() < 2 || 2 * grouped < n || 2 * largest > n {
+        return None;
+    }
+    let bounds: Vec<Rect> =
+        out.iter().map(|g| g.iter().skip(1).fold(boxes[g[0] as usize], |r, &s| r.union(boxes[s as usize]))).collect();
+    let compact = bounds
+        .iter()
+        .enumerate()
+        .filter(|&(x, b)| {
+            let nearest = bounds
+                .iter()
+                .enumerate()
+                .filter(|&(y, _)| y != x)
+                .map(|(_, o)| o.center().distance(b.center()))
+                .fold(f64::INFINITY, f64::min);
+            b.size().to_vec2().hypot() <= COMPACT * nearest
+        })
+        .count();
+    (4 * compact >= 3 * out.len()).then_some(out)
+}
+
+/// An instance's diagonal must stay within this multiple of the distance to the nearest
+/// other instance (for three in four instances).
+const COMPACT: f64 = 1.0;
+
+/// The join length below which strokes are parts of one instance: the geometric middle
+/// of the largest clear ratio gap between consecutive join lengths (the reach counts as
+/// the length of every join beyond it). `None` when there is no clear gap, or when no
+/// join falls below it.
+fn cut(joins: &[f64], reach: f64, floor: f64) -> Option<f64> {
+    let mut levels: Vec<f64> = joins.to_vec();
+    levels.push(reach);
+    let mut best: Option<(f64, f64)> = None;
+    let mut best_ratio = CLEAR;
+    for w in levels.windows(2) {
+        let ratio = (w[1] + floor) / (w[0] + floor);
+        if ratio > best_ratio {
+            best_ratio = ratio;
+            best = Some((w[0], w[1]));
+        }
+    }
+    let (lo, hi) = best?;
+    Some(((lo + floor) * (hi + floor)).sqrt() - floor)
+}
+
+/// Whether two boxes touch along an edge (zero-area intersection of degenerate boxes:
+/// a horizontal line meeting a vertical one).
+fn touches(a: Rect, b: Rect) -> bool {
+    a.x0 <= b.x1 && b.x0 <= a.x1 && a.y0 <= b.y1 && b.y0 <= a.y1
+}
+
+/// A stroke's path resampled to at most `SAMPLES` points (each subpath kept apart is not
+/// needed here: a gap is a least distance, and joining subpaths only adds segments).
+fn sampled(s: &Stroke) -> Vec<Point> {
+    let pts: Vec<Point> = s.points.iter().map(|&[x, y]| Point::new(x, y)).collect();
+    if pts.len() <= SAMPLES {
+        return pts;
+    }
+    let step = pts.len().div_ceil(SAMPLES);
+    let mut out: Vec<Point> = pts.iter().step_by(step).copied().collect();
+    if let Some(&last) = pts.last() {
+        out.push(last);
+    }
+    out
+}
+
+/// The gap between two strokes: least distance between their paths less half their
+/// widths, zero when the paths cross or one lies inside the other's closed outline.
+fn gap(a: &Stroke, pa: &[Point], b: &Stroke, pb: &[Point]) -> f64 {
+    let pad = 0.5 * (a.width + b.width);
+    if inside(a, pa, pb) || inside(b, pb, pa) {
+        return 0.0;
+    }
+    let segs = |p: &[Point], closed: bool| -> Vec<(Point, Point)> {
+        let mut v: Vec<(Point, Point)> = p.windows(2).map(|w| (w[0], w[1])).collect();
+        if closed && p.len() > 2 {
+            v.push((p[p.len() - 1], p[0]));
+        }
+        if p.len() == 1 {
+            v.push((p[0], p[0]));
+        }
+        v
+    };
+    let (sa, sb) = (segs(pa, a.closed), segs(pb, b.closed));
+    let mut best = f64::INFINITY;
+    for &(p0, p1) in &sa {
+        for &(q0, q1) in &sb {
+            best = best.min(segment_distance(p0, p1, q0, q1));
+            if best <= pad {
+                return 0.0;
+            }
+        }
+    }
+    (best - pad).max(0.0)
+}
+
+/// Whether `other`'s first point lies inside the closed (or filled) outline `path` of `s`.
+fn inside(s: &Stroke, path: &[Point], other: &[Point]) -> bool {
+    if !(s.closed || s.fill.is_some()) || path.len() < 3 || other.is_empty() {
+        return false;
+    }
+    let p = other[0];
+    let mut wind = false;
+    for k in 0..path.len() {
+        let (a, b) = (path[k], path[(k + 1) % path.len()]);
+        if (a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x) {
+            wind = !wind;
+        }
+    }
+    wind
+}
+
+/// Distance between segments `p0 p1` and `q0 q1` (zero when they cross).
+fn segment_distance(p0: Point, p1: Point, q0: Point, q1: Point) -> f64 {
+    let (d1, d2) = (p1 - p0, q1 - q0);
+    let cross = |u: Vec2, v: Vec2| u.cross(v);
+    let (a, b, c, d) = (cross(d1, q0 - p0), cross(d1, q1 - p0), cross(d2, p0 - q0), cross(d2, p1 - q0));
+    if a * b < 0.0 && c * d < 0.0 {
+        return 0.0;
+    }
+    point_segment(p0, q0, q1)
+        .min(point_segment(p1, q0, q1))
+        .min(point_segment(q0, p0, p1))
+        .min(point_segment(q1, p0, p1))
+}
+
+fn point_segment(p: Point, a: Point, b: Point) -> f64 {
+    let d = b - a;
+    let len2 = d.hypot2();
+    let t = if len2 > 0.0 { ((p - a).dot(d) / len2).clamp(0.0, 1.0) } else { 0.0 };
+    p.distance(a + d * t)
+}
+
+/// Union-find over stroke indices.
+struct Sets(Vec<u32>);
+
+impl Sets {
+    fn new(n: usize) -> Sets {
+        Sets((0..n as u32).collect())
+    }
+
+    fn find(&mut self, mut i: u32) -> u32 {
+        while self.0[i as usize] != i {
+            let up = self.0[self.0[i as usize] as usize];
+            self.0[i as usize] = up;
+            i = up;
+        }
+        i
+    }
+
+    /// Joins the sets of `i` and `j`; false when they were one already.
+    fn union(&mut self, i: u32, j: u32) -> bool {
+        let (a, b) = (self.find(i), self.find(j));
+        if a == b {
+            return false;
+        }
+        self.0[a.max(b) as usize] = a.min(b);
+        true
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::vector::color::Rgb;
+
+    fn seg(x: f64, y: f64, dx: f64, dy: f64) -> Stroke {
+        Stroke::new(vec![[x - dx, y - dy], [x + dx, y + dy]], 2.0, Some(Rgb([0, 0, 0])))
+    }
+
+    #[test]
+    fn crosses_group_and_dashes_do_not() {
+        let mut crosses = Vec::new();
+        let mut dashes = Vec::new();
+        for j in 0..3 {
+            for i in 0..3 {
+                let (x, y) = (70.0 * i as f64 + 0.7 * j as f64, 70.0 * j as f64);
+                crosses.push(seg(x, y, 15.0, 0.3));
+                crosses.push(seg(x + 0.4, y - 0.2, 0.2, 15.0));
+                dashes.push(seg(x, y, 15.0, 0.0));
+            }
+        }
+        let got = instances(&crosses).expect("crosses group");
+        assert_eq!(got.len(), 9);
+        assert!(got.iter().all(|g| g.len() == 2 && g[1] == g[0] + 1), "{got:?}");
+        assert!(instances(&dashes).is_none());
+    }
+
+    #[test]
+    fn a_mesh_whose_pieces_all_touch_is_no_grouping() {
+        let mut mesh = Vec::new();
+        for j in 0..5 {
+            for i in 0..5 {
+                let (x, y) = (20.0 * i as f64, 20.0 * j as f64);
+                mesh.push(Stroke::new(vec![[x, y], [x + 20.0, y], [x, y + 20.0]], 1.0, Some(Rgb([0, 0, 0]))));
+            }
+        }
+        assert!(instances(&mesh).is_none());
+    }
+
+    #[test]
+    fn the_cut_needs_a_clear_gap() {
+        assert_eq!(cut(&[10.0, 11.0, 12.0], 13.0, 0.3), None);
+        let c = cut(&[0.0, 0.1, 0.2], 10.0, 0.3).unwrap();
+        assert!(c > 0.2 && c < 10.0, "{c}");
+    }
+}

@@ -1,0 +1,243 @@
+//! Kinds of motif instances, and the parts of each kind, from the drawing's own evidence.
+//!
+//! Two instances are copies of one motif when their strokes correspond one to one: each
+//! stroke of one has a stroke of the other at about the same offset from the instance's
+//! centre, with about the same shape (discrete Fréchet distance of the centred paths),
+//! width and paint. The cost of a correspondence is its worst pair, over the instances'
+//! size; instances join a kind below the largest clear gap of these costs (one kind when
+//! there is no clear gap: a hand's copies differ continuously, different motifs by a
+//! jump).
+//!
+//! A part is a stroke's place in its kind: the stroke of the kind's first instance it
+//! corresponds to. The strokes of one part are copies of one another by the drawing's own
+//! account, so hand variation can never merge two parts of a motif (the paper's global
+//! split of pairwise distances does, once the wobble is as large as the difference
+//! between parts). Parts of any kinds then share a class when they differ by no more than
+//! the spread their own copies show (two identical eyes of a face), or, with an explicit
+//! path tolerance, by less than it (the paper's `Match`).
+
+use super::super::classify::{split_at_gap, Tolerances};
+use super::super::color::paint_distance;
+use super::super::frechet::Shape;
+use super::super::stroke::Stroke;
+use kurbo::{Point, Vec2};
+
+/// Instances compared to propose the kinds' threshold (pairs grow quadratically).
+const SAMPLE: usize = 40;
+/// Members of a kind an instance is compared with before it starts a kind of its own.
+const REPRESENTATIVES: usize = 4;
+/// Candidate partners per stroke, nearest by offset, in a correspondence.
+const PARTNERS: usize = 4;
+/// Part classes beyond which parts are not merged into shared classes (pairs grow
+/// quadratically; each part then keeps its own class).
+const MERGE_LIMIT: usize = 512;
+/// Parts share a class within this multiple of the larger spread of their copies.
+const SPREAD_MARGIN: f64 = 1.5;
+/// The least spread, as a share of the median stroke size (exact copies spread by none).
+const SPREAD_FLOOR: f64 = 0.03;
+
+/// The instances' kinds, each stroke's part and class.
+pub struct Kinds {
+    /// Kind of each instance, numbered by first appearance.
+    pub kind: Vec<u32>,
+    /// Part of each stroke: its index in the first instance of its kind.
+    pub part: Vec<u32>,
+    /// Class of each stroke (parts that look alike share one), by first appearance.
+    pub classes: Vec<u32>,
+}
+
+/// One instance as compared: its strokes, their offsets from its centre and its size.
+struct Instance {
+    strokes: Vec<u32>,
+    offsets: Vec<Vec2>,
+    size: f64,
+}
+
+struct Context<'a> {
+    strokes: &'a [Stroke],
+    shapes: Vec<Shape>,
+    tol: Tolerances,
+}
+
+impl Context<'_> {
+    /// The correspondence of `b`'s strokes to `a`'s (for each stroke of `b`, its partner's
+    /// index in `a`), with its cost (worst pair over the size) and each pair's shape
+    /// distance; `None` when the counts differ or a stroke has no compatible partner.
+    fn correspond(&self, a: &Instance, b: &Instance) -> Option<(f64, Vec<u32>, Vec<f64>)> {
+        let k = a.strokes.len();
+        if k != b.strokes.len() {
+            return None;
+        }
+        let scale = a.size.max(b.size).max(1e-9);
+        let mut pairs: Vec<(f64, f64, u32, u32)> = Vec::new();
+        for (j, &sb) in b.strokes.iter().enumerate() {
+            let mut near: Vec<(f64, usize)> =
+                a.offsets.iter().enumerate().map(|(i, o)| ((*o - b.offsets[j]).hypot(), i)).collect();
+            near.sort_by(|x, y| x.0.total_cmp(&y.0));
+            for &(off, i) in near.iter().take(PARTNERS) {
+                let sa = a.strokes[i];
+                let (x, y) = (&self.strokes[sa as usize], &self.strokes[sb as usize]);
+                if (x.width - y.width).abs() >= self.tol.width
+                    || paint_distance(x.stroke, y.stroke) >= self.tol.color
+                    || paint_distance(x.fill, y.fill) >= self.tol.color
+                {
+                    continue;
+                }
+                let shape = self.shapes[sa as usize].distance(&self.shapes[sb as usize]);
+                pairs.push((off.max(shape) / scale, shape, i as u32, j as u32));
+            }
+        }
+        pairs.sort_by(|x, y| x.0.total_cmp(&y.0).then(x.2.cmp(&y.2)).then(x.3.cmp(&y.3)));
+        let (mut of_b, mut taken) = (vec![u32::MAX; k], vec![false; k]);
+        let mut shapes = vec![0.0; k];
+        let mut worst = 0.0f64;
+        for (cost, shape, i, j) in pairs {
+            if of_b[j as usize] == u32::MAX && !taken[i as usize] {
+                of_b[j as usize] = i;
+                taken[i as usize] = true;
+                shapes[j as usize] = shape;
+                worst = worst.max(cost);
+            }
+        }
+        of_b.iter().all(|&i| i != u32::MAX).then_some((worst, of_b, shapes))
+    }
+}
+
+/// Kinds, parts and classes of the `instances` of `strokes`. `tol`: the width and
+/// colour tolerances (and the path tolerance, when `explicit_path`, for shared classes).
+pub fn kinds(strokes: &[Stroke], groups: &[Vec<u32>], tol: Tolerances, explicit_path: bool) -> Kinds {
+    let size = super::super::classify::typical_size(strokes);
+    let shapes = strokes.iter().map(|s| Shape::new(&s.points, size / 32.0)).collect();
+    let cx = Context { strokes, shapes, tol };
+    let instances: Vec<Instance> = groups
+        .iter()
+        .map(|g| {
+            let bounds =
+                g.iter().skip(1).fold(strokes[g[0] as usize].bounds(), |r, &s| r.union(strokes[s as usize].bounds()));
+            let centre: Point = bounds.center();
+            let offsets = g.iter().map(|&s| strokes[s as usize].reference_point() - centre).collect();
+            Instance { strokes: g.clone(), offsets, size: bounds.size().to_vec2().hypot() }
+        })
+        .collect();
+
+    // The threshold: the largest clear gap of the costs between sampled instances.
+    let step = instances.len().div_ceil(SAMPLE).max(1);
+    let sample: Vec<&Instance> = instances.iter().step_by(step).collect();
+    let mut costs = Vec::new();
+    for (x, a) in sample.iter().enumerate() {
+        for b in &sample[x + 1..] {
+            if let Some((c, ..)) = cx.correspond(a, b) {
+                costs.push(c);
+            }
+        }
+    }
+    let threshold = split_at_gap(costs, 1.0);
+
+    // Greedy kinds: an instance joins the first kind one of whose first members it
+    // corresponds to within the threshold.
+    let mut kind = vec![u32::MAX; instances.len()];
+    let mut members: Vec<Vec<usize>> = Vec::new();
+    for (x, inst) in instances.iter().enumerate() {
+        let found = members.iter().position(|m| {
+            m.iter()
+                .take(REPRESENTATIVES)
+                .any(|&y| cx.correspond(&instances[y], inst).is_some_and(|c| c.0 <= threshold))
+        });
+        match found {
+            Some(k) => {
+                kind[x] = k as u32;
+                members[k].push(x);
+            }
+            None => {
+                kind[x] = members.len() as u32;
+                members.push(vec![x]);
+            }
+        }
+    }
+
+    // Parts: each stroke's partner in the first instance of its kind, and each part's
+    // spread (the largest shape distance of a copy from the first).
+    let mut part = vec![0u32; strokes.len()];
+    let mut part_base = Vec::with_capacity(members.len());
+    let mut spread: Vec<f64> = Vec::new();
+    for m in &members {
+        let first = &instances[m[0]];
+        part_base.push(spread.len());
+        spread.extend(std::iter::repeat_n(0.0, first.strokes.len()));
+        for &x in m {
+            let inst = &instances[x];
+            let (of, shapes) = match cx.correspond(first, inst) {
+                Some((_, of, shapes)) => (of, shapes),
+                // Joined through another member: parts by drawing order.
+                None => ((0..inst.strokes.len() as u32).collect(), vec![0.0; inst.strokes.len()]),
+            };
+            for (j, &s) in inst.strokes.iter().enumerate() {
+                part[s as usize] = of[j];
+                let p = part_base.last().copied().unwrap_or(0) + of[j] as usize;
+                spread[p] = spread[p].max(shapes[j]);
+            }
+        }
+    }
+
+    // Classes: parts that look alike share one.
+    let first_of_part: Vec<u32> =
+        members.iter().flat_map(|m| instances[m[0]].strokes.iter().copied()).collect::<Vec<u32>>();
+    let parts = first_of_part.len();
+    let kind_of_part: Vec<usize> =
+        members.iter().enumerate().flat_map(|(k, m)| std::iter::repeat_n(k, instances[m[0]].strokes.len())).collect();
+    let mut class_of_part: Vec<u32> = (0..parts as u32).collect();
+    if parts <= MERGE_LIMIT {
+        let floor = SPREAD_FLOOR * size;
+        for p in 0..parts {
+            for q in 0..p {
+                if class_of_part[q] != q as u32 {
+                    continue;
+                }
+                let (sp, sq) = (first_of_part[p] as usize, first_of_part[q] as usize);
+                let (x, y) = (&strokes[sp], &strokes[sq]);
+                if (x.width - y.width).abs() >= tol.width
+                    || paint_distance(x.stroke, y.stroke) >= tol.color
+                    || paint_distance(x.fill, y.fill) >= tol.color
+                {
+                    continue;
+                }
+                // Parts of one kind are different parts by the drawing's own account: they
+                // share a class only when alike beyond doubt (exact copies).
+                let one_kind = kind_of_part[p] == kind_of_part[q];
+                let within = if explicit_path {
+                    tol.path
+                } else if one_kind {
+                    floor
+                } else {
+                    SPREAD_MARGIN * spread[p].max(spread[q]).max(floor)
+                };
+                if cx.shapes[sp].within(&cx.shapes[sq], within) {
+                    class_of_part[p] = q as u32;
+                    break;
+                }
+            }
+        }
+    }
+    // Renumber classes by first appearance in drawing order.
+    let instance_of = {
+        let mut v = vec![0usize; strokes.len()];
+        for (x, inst) in instances.iter().enumerate() {
+            inst.strokes.iter().for_each(|&s| v[s as usize] = x);
+        }
+        v
+    };
+    let mut number = vec![u32::MAX; parts];
+    let mut next = 0;
+    let classes = (0..strokes.len())
+        .map(|s| {
+            let k = kind[instance_of[s]] as usize;
+            let p = class_of_part[part_base[k] + part[s] as usize] as usize;
+            if number[p] == u32::MAX {
+                number[p] = next;
+                next += 1;
+            }
+            number[p]
+        })
+        .collect();
+    Kinds { kind, part, classes }
+}

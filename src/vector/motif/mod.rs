@@ -1,0 +1,180 @@
+//! The motif: the unit of repetition that growth, periodic extension, the mosaic, tiles
+//! and suggestions all place.
+//!
+//! A person draws a motif of several strokes a few times (a cross of two bars, a flower
+//! of five petals and a dot), each copy a little different. Read stroke by stroke, the
+//! bars of a cross share a centre, so the nearest-neighbour spacing is a fraction of a
+//! unit and no period fits; and a hand's variation, as large as the difference between
+//! the parts, merges the parts into one class. Here the drawing is read as instances
+//! (the strokes of one drawn copy, `contact`) of kinds (instances that are copies of one
+//! another, `kinds`): each instance becomes one point element at its centre, of its
+//! kind's class, and whatever places elements places whole motifs. Each placed motif is
+//! then dressed with the strokes of a drawn copy of that very motif, so a part is never
+//! put where another belongs.
+//!
+//! An example whose strokes are periodic one by one (an SVG tile repeated exactly) keeps
+//! its strokes as elements: its periodic extension is exact as it is, and pieces cut at a
+//! tile's edge that abut in the repeat would otherwise join across copies.
+
+mod contact;
+mod kinds;
+
+use super::element::{Element, Placed};
+use super::stroke::Stroke;
+use crate::rng::Rng;
+use kurbo::{Point, Rect, Vec2};
+
+/// The drawing as motif instances.
+#[derive(Clone, Debug, Default)]
+pub struct Motifs {
+    /// Strokes of each instance, in drawing order; instances by their first stroke.
+    pub instances: Vec<Vec<u32>>,
+    /// Kind of each instance (the class of its element).
+    pub kind: Vec<u32>,
+    /// Each instance's centre: the centre of its strokes' bounding box.
+    pub centre: Vec<Point>,
+    /// Part of each stroke within its kind (0 for instances of one stroke).
+    pub part: Vec<u32>,
+}
+
+/// What `group` found: the motifs, and the stroke classes when they come from them.
+pub struct Grouping {
+    pub motifs: Motifs,
+    /// Stroke classes by the motifs' evidence (`None`: keep the paper's classes).
+    pub classes: Option<Vec<u32>>,
+}
+
+/// Reads `strokes` (with the paper's `classes` and tolerances) as motif instances. Strokes
+/// stay their own instances, with their classes by the motifs' evidence, when the
+/// example is periodic stroke by stroke under those classes (`periodic` says so), and
+/// with the paper's classes when it shows no motif of several strokes.
+pub fn group(
+    strokes: &[Stroke],
+    classes: &[u32],
+    tol: super::classify::Tolerances,
+    explicit_path: bool,
+    periodic: impl FnOnce(&[u32]) -> bool,
+) -> Grouping {
+    let Some(groups) = contact::instances(strokes) else {
+        return Grouping { motifs: Motifs::single(strokes, classes), classes: None };
+    };
+    let k = kinds::kinds(strokes, &groups, tol, explicit_path);
+    if periodic(&k.classes) {
+        return Grouping { motifs: Motifs::single(strokes, &k.classes), classes: Some(k.classes) };
+    }
+    let centre = groups.iter().map(|g| union_bounds(strokes, g).center()).collect();
+    Grouping { motifs: Motifs { instances: groups, kind: k.kind, centre, part: k.part }, classes: Some(k.classes) }
+}
+
+fn union_bounds(strokes: &[Stroke], g: &[u32]) -> Rect {
+    g.iter().skip(1).fold(strokes[g[0] as usize].bounds(), |r, &s| r.union(strokes[s as usize].bounds()))
+}
+
+impl Motifs {
+    /// Every stroke its own instance, of its class.
+    pub fn single(strokes: &[Stroke], classes: &[u32]) -> Motifs {
+        Motifs {
+            instances: (0..strokes.len() as u32).map(|i| vec![i]).collect(),
+            kind: classes.to_vec(),
+            centre: strokes.iter().map(Stroke::reference_point).collect(),
+            part: vec![0; strokes.len()],
+        }
+    }
+
+    /// Whether some instance holds several strokes.
+    pub fn grouped(&self) -> bool {
+        self.instances.len() < self.part.len()
+    }
+
+    /// One point element per instance, at its centre, of its kind.
+    pub fn elements(&self) -> Vec<Element> {
+        self.centre.iter().zip(&self.kind).map(|(&pos, &class)| Element { pos, class }).collect()
+    }
+
+    /// Half the size of each instance's drawing around its centre (strokes' widths in).
+    pub fn extents(&self, strokes: &[Stroke]) -> Vec<Vec2> {
+        self.instances
+            .iter()
+            .zip(&self.centre)
+            .map(|(g, &c)| {
+                let b = g.iter().fold(Rect::new(c.x, c.y, c.x, c.y), |r, &s| r.union(padded(&strokes[s as usize])));
+                Vec2::new((b.x1 - c.x).max(c.x - b.x0), (b.y1 - c.y).max(c.y - b.y0))
+            })
+            .collect()
+    }
+
+    /// The instance of each stroke.
+    pub fn instance_of(&self) -> Vec<u32> {
+        let mut of = vec![0; self.part.len()];
+        for (x, g) in self.instances.iter().enumerate() {
+            g.iter().for_each(|&s| of[s as usize] = x as u32);
+        }
+        of
+    }
+
+    /// Dresses the placed elements (one per instance site) with strokes: each takes a
+    /// drawn instance of its own orbit (`orbit` of each instance: the copies of one place
+    /// of the pattern, e.g. one motif position under the periods) at random with
+    /// `variation` (its seed), else its source, and that instance's strokes are drawn around the
+    /// site as they were drawn around its centre. Strokes whose drawing misses `area` are
+    /// left out. Returns the strokes, the class of each, and the input stroke each one's
+    /// place copies (the source instance's stroke of the same part); layering follows
+    /// the drawing order of the copied strokes.
+    pub fn dress(
+        &self,
+        strokes: &[Stroke],
+        classes: &[u32],
+        placed: &[Placed],
+        orbit: &[u32],
+        variation: Option<u64>,
+        area: Rect,
+    ) -> (Vec<Stroke>, Vec<u32>, Vec<u32>) {
+        let mut by_orbit: Vec<Vec<u32>> = vec![Vec::new(); orbit.iter().map(|&o| o as usize + 1).max().unwrap_or(0)];
+        for (x, &o) in orbit.iter().enumerate() {
+            by_orbit[o as usize].push(x as u32);
+        }
+        // Each instance's stroke per part, to name the source stroke of a copied part.
+        let of_part = |x: usize, part: u32| {
+            self.instances[x].iter().copied().find(|&s| self.part[s as usize] == part).unwrap_or(self.instances[x][0])
+        };
+        let mut rng = Rng::new(variation.unwrap_or(0));
+        let mut out: Vec<(u32, usize, Stroke, u32, u32)> =
+            Vec::with_capacity(placed.len() * self.part.len() / self.instances.len().max(1));
+        for e in placed {
+            let source = e.source as usize;
+            let copies = &by_orbit[orbit[source] as usize];
+            let chosen =
+                if variation.is_some() && copies.len() > 1 { copies[rng.below(copies.len())] as usize } else { source };
+            let shift = e.pos - self.centre[chosen];
+            let first = self.instances[source][0];
+            for (k, &s) in self.instances[chosen].iter().enumerate() {
+                let stroke = &strokes[s as usize];
+                let b = padded(stroke);
+                if b.x1 + shift.x < area.x0
+                    || b.x0 + shift.x > area.x1
+                    || b.y1 + shift.y < area.y0
+                    || b.y0 + shift.y > area.y1
+                {
+                    continue;
+                }
+                let src = if chosen == source { s } else { of_part(source, self.part[s as usize]) };
+                out.push((first, k, stroke.translated(shift.x, shift.y), classes[s as usize], src));
+            }
+        }
+        out.sort_by_key(|o| (o.0, o.1));
+        let mut dressed = Vec::with_capacity(out.len());
+        let (mut cls, mut sources) = (Vec::with_capacity(out.len()), Vec::with_capacity(out.len()));
+        for (_, _, s, c, src) in out {
+            dressed.push(s);
+            cls.push(c);
+            sources.push(src);
+        }
+        (dressed, cls, sources)
+    }
+}
+
+/// A stroke's box with half its width around a stroked path.
+fn padded(s: &Stroke) -> Rect {
+    let pad = if s.stroke.is_some() { s.width / 2.0 } else { 0.0 };
+    s.bounds().inflate(pad, pad)
+}
