@@ -116,6 +116,12 @@ fn components(strokes: &[Stroke], tol: &Tolerances) -> Vec<u32> {
     class
 }
 
+/// Each stroke's group of exact copies (translates with the same width, paint and
+/// subpaths), numbered by first appearance.
+pub(crate) fn copies(strokes: &[Stroke]) -> Vec<u32> {
+    translates(strokes).1.into_iter().map(|g| g as u32).collect()
+}
+
 /// Groups strokes that are exact translates of one another with the same width, paint
 /// and subpaths: the index of each group's first stroke, and each stroke's group.
 fn translates(strokes: &[Stroke]) -> (Vec<usize>, Vec<usize>) {

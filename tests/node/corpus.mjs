@@ -103,14 +103,14 @@ const centre = (s) => {
  * element on no site of its class), stacked duplicates, drift (95th percentile residual
  * over the shorter period), time.
  */
-export function measure(ps, c) {
+export function measure(ps, c, options = { variation: false }) {
   const strokes = ps.parseSvg(c.svg);
   const perCopy = strokes.length / 9;
   if (!Number.isInteger(perCopy)) throw new Error(`${c.name}: ${strokes.length} strokes in a 3x3 repeat`);
   const [a, b] = [c.a, c.b];
   const w = 10 * Math.abs(a[0]) + 10 * Math.abs(b[0]), h = 10 * Math.abs(a[1]) + 10 * Math.abs(b[1]);
   const t0 = performance.now();
-  const out = ps.synthesizeStrokes(strokes, { width: w, height: h, variation: false, seed: 1 });
+  const out = ps.synthesizeStrokes(strokes, { width: w, height: h, seed: 1, ...options });
   const ms = performance.now() - t0;
   const cls = out.classification.classes;
   const refs = strokes.map(centre);
@@ -160,8 +160,14 @@ export function measure(ps, c) {
       hash.get(key).push(site);
     }
   }
-  let stray = 0;
+  let stray = 0, wrong = 0;
   const residuals = [];
+  // The drawn size and paint of a stroke: a part put where another belongs differs.
+  const look = (st) => {
+    const xs = st.points.map((q) => q[0]), ys = st.points.map((q) => q[1]);
+    return [Math.max(...xs) - Math.min(...xs), Math.max(...ys) - Math.min(...ys), st.stroke ?? '', st.fill ?? ''];
+  };
+  const looks = strokes.map(look);
   out.strokes.forEach((s, idx) => {
     const [x, y] = centre(s);
     let best = null, bd = Infinity;
@@ -169,7 +175,12 @@ export function measure(ps, c) {
       const d = Math.hypot(site.p[0] - x, site.p[1] - y);
       if (d < bd) { bd = d; best = site; }
     });
-    if (best && bd < tol) { best.hits++; residuals.push(bd / period); } else stray++;
+    if (best && bd < tol) {
+      best.hits++;
+      residuals.push(bd / period);
+      const [a, b] = [look(s), looks[best.k]];
+      if (Math.abs(a[0] - b[0]) > 0.5 || Math.abs(a[1] - b[1]) > 0.5 || a[2] !== b[2] || a[3] !== b[3]) wrong++;
+    } else stray++;
   });
   residuals.sort((p, q) => p - q);
   // Every site whose drawing is in the area (clearly: by more than the tolerance).
@@ -178,6 +189,6 @@ export function measure(ps, c) {
   const stacked = sites.reduce((n, s) => n + Math.max(0, s.hits - 1), 0);
   return {
     corpus: c.corpus, name: c.name, example: strokes.length, out: out.strokes.length, sites: inner.length,
-    recall: covered / inner.length, stray, stacked, drift: residuals[Math.floor(0.95 * (residuals.length - 1))] ?? 0, ms,
+    recall: covered / inner.length, stray, stacked, wrong, drift: residuals[Math.floor(0.95 * (residuals.length - 1))] ?? 0, ms,
   };
 }

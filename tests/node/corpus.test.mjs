@@ -10,13 +10,18 @@ import * as ps from '../../pkg/node/index.js';
 import { corpus, measure } from './corpus.mjs';
 
 for (const c of corpus()) {
-  test(`${c.corpus} ${c.name}: the periodic extension`, () => {
-    const r = measure(ps, c);
-    assert.ok(r.recall >= 0.99, `recall ${r.recall}`);
-    assert.equal(r.stray, 0, 'strays');
-    assert.equal(r.stacked, 0, 'stacked');
-    assert.ok(r.drift < 0.01, `drift ${r.drift}`);
-  });
+  // With the default options users get (variation on) and with variation off: each
+  // placed part is its own place's part (issue 23: variation swapped parts).
+  for (const options of [{}, { variation: false }]) {
+    test(`${c.corpus} ${c.name} ${options.variation === false ? 'variation off' : 'defaults'}: the periodic extension`, () => {
+      const r = measure(ps, c, options);
+      assert.ok(r.recall >= 0.99, `recall ${r.recall}`);
+      assert.equal(r.stray, 0, 'strays');
+      assert.equal(r.stacked, 0, 'stacked');
+      assert.equal(r.wrong, 0, 'parts put where another belongs');
+      assert.ok(r.drift < 0.01, `drift ${r.drift}`);
+    });
+  }
 }
 
 test('compound shapes with holes come out whole: one stroke per icon, its holes as subpaths', () => {

@@ -23,6 +23,9 @@ const CLEAR: f64 = 3.0;
 /// Gaps are compared above this floor (a share of the median stroke size): a hand never
 /// makes two strokes meet exactly, so 0 against 0.01 is no gap.
 const FLOOR: f64 = 0.03;
+/// Pairs within reach per stroke beyond which the drawing is too dense to hold compact
+/// copies (a flower of six parts among its eight neighbours has about 27).
+const MAX_PAIRS_PER_STROKE: usize = 64;
 /// Samples per stroke for the gap (the gap is then exact to about a sixtieth of its length).
 const SAMPLES: usize = 32;
 
@@ -44,19 +47,29 @@ pub fn instances(strokes: &[Stroke]) -> Option<Vec<Vec<u32>>> {
     for (i, b) in boxes.iter().enumerate() {
         grid.insert(i as u32, b.center());
     }
-    let mut edges: Vec<(f64, u32, u32)> = Vec::new();
+    // Pairs whose boxes come within the reach, counted before any gap is measured: a
+    // drawing of long strokes lying across one another (waves, contour lines) has no
+    // compact copies to find, and measuring all its gaps would cost seconds.
+    let mut pairs: Vec<(u32, u32)> = Vec::new();
     for i in 0..n {
         let bi = boxes[i].inflate(reach, reach);
         grid.for_each_near(boxes[i].center(), 0.5 * (boxes[i].width().max(boxes[i].height()) + biggest) + reach, |j| {
             let j = j as usize;
-            if j <= i || bi.intersect(boxes[j]).is_zero_area() && !touches(bi, boxes[j]) {
-                return;
-            }
-            let g = gap(&strokes[i], &paths[i], &strokes[j], &paths[j]);
-            if g < reach {
-                edges.push((g, i as u32, j as u32));
+            if j > i && (!bi.intersect(boxes[j]).is_zero_area() || touches(bi, boxes[j])) {
+                pairs.push((i as u32, j as u32));
             }
         });
+        if pairs.len() > MAX_PAIRS_PER_STROKE * n {
+            return None;
+        }
+    }
+    let mut edges: Vec<(f64, u32, u32)> = Vec::new();
+    for (i, j) in pairs {
+        let (i, j) = (i as usize, j as usize);
+        let g = gap(&strokes[i], &paths[i], &strokes[j], &paths[j]);
+        if g < reach {
+            edges.push((g, i as u32, j as u32));
+        }
     }
     edges.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)).then(a.2.cmp(&b.2)));
     // Kruskal: the joins of the minimum spanning forest, in order.

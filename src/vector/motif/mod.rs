@@ -35,6 +35,10 @@ pub struct Motifs {
     pub centre: Vec<Point>,
     /// Part of each stroke within its kind (0 for instances of one stroke).
     pub part: Vec<u32>,
+    /// In an exact repeat (an SVG tile repeated), each instance's group of exact copies:
+    /// variation keeps to them, since the paper's class may join unlike shapes (lines of
+    /// several lengths) at places a period of that class maps onto one another.
+    pub copies: Option<Vec<u32>>,
 }
 
 /// What `group` found: the motifs, and the stroke classes when they come from them.
@@ -44,26 +48,37 @@ pub struct Grouping {
     pub classes: Option<Vec<u32>>,
 }
 
-/// Reads `strokes` (with the paper's `classes` and tolerances) as motif instances. Strokes
-/// stay their own instances, with their classes by the motifs' evidence, when the
-/// example is periodic stroke by stroke under those classes (`periodic` says so), and
-/// with the paper's classes when it shows no motif of several strokes.
+/// Reads `strokes` (with the paper's `classes` and tolerances) as motif instances.
+/// `periodic` says whether the strokes, one by one under some classes, are periodic.
+/// - An exact repeat (most strokes have exact copies, and it is periodic, as an SVG tile
+///   repeated is): strokes stay their own instances, of their paper classes, and their
+///   copies are kept for variation.
+/// - Strokes drawn on one another in compact, repeated copies: motif instances, classes
+///   by the motifs' evidence (even when the strokes are periodic one by one: a copy's
+///   parts then keep the relation the hand gave them, a cross's bars meet as drawn).
+/// - Otherwise every stroke is its own instance, of its paper class.
 pub fn group(
     strokes: &[Stroke],
     classes: &[u32],
     tol: super::classify::Tolerances,
     explicit_path: bool,
-    periodic: impl FnOnce(&[u32]) -> bool,
+    periodic: impl Fn(&[u32]) -> bool,
 ) -> Grouping {
+    let copies = super::classify::copies(strokes);
+    let mut count = vec![0usize; strokes.len()];
+    copies.iter().for_each(|&g| count[g as usize] += 1);
+    let copied = copies.iter().filter(|&&g| count[g as usize] >= 2).count();
+    if 2 * copied >= strokes.len() && periodic(classes) {
+        let motifs = Motifs { copies: Some(copies), ..Motifs::single(strokes, classes) };
+        return Grouping { motifs, classes: None };
+    }
     let Some(groups) = contact::instances(strokes) else {
         return Grouping { motifs: Motifs::single(strokes, classes), classes: None };
     };
     let k = kinds::kinds(strokes, &groups, tol, explicit_path);
-    if periodic(&k.classes) {
-        return Grouping { motifs: Motifs::single(strokes, &k.classes), classes: Some(k.classes) };
-    }
     let centre = groups.iter().map(|g| union_bounds(strokes, g).center()).collect();
-    Grouping { motifs: Motifs { instances: groups, kind: k.kind, centre, part: k.part }, classes: Some(k.classes) }
+    let motifs = Motifs { instances: groups, kind: k.kind, centre, part: k.part, copies: None };
+    Grouping { motifs, classes: Some(k.classes) }
 }
 
 fn union_bounds(strokes: &[Stroke], g: &[u32]) -> Rect {
@@ -78,6 +93,7 @@ impl Motifs {
             kind: classes.to_vec(),
             centre: strokes.iter().map(Stroke::reference_point).collect(),
             part: vec![0; strokes.len()],
+            copies: None,
         }
     }
 
@@ -129,9 +145,15 @@ impl Motifs {
         variation: Option<u64>,
         area: Rect,
     ) -> (Vec<Stroke>, Vec<u32>, Vec<u32>) {
-        let mut by_orbit: Vec<Vec<u32>> = vec![Vec::new(); orbit.iter().map(|&o| o as usize + 1).max().unwrap_or(0)];
-        for (x, &o) in orbit.iter().enumerate() {
-            by_orbit[o as usize].push(x as u32);
+        // The copies each instance may vary among: its orbit (and its exact copies).
+        let key = |x: usize| (orbit[x], self.copies.as_ref().map_or(0, |c| c[x]));
+        let mut keys: Vec<(u32, u32)> = (0..orbit.len()).map(key).collect();
+        keys.sort_unstable();
+        keys.dedup();
+        let group_of: Vec<usize> = (0..orbit.len()).map(|x| keys.binary_search(&key(x)).unwrap_or(0)).collect();
+        let mut by_orbit: Vec<Vec<u32>> = vec![Vec::new(); keys.len()];
+        for (x, &g) in group_of.iter().enumerate() {
+            by_orbit[g].push(x as u32);
         }
         // Each instance's stroke per part, to name the source stroke of a copied part.
         let of_part = |x: usize, part: u32| {
@@ -142,7 +164,7 @@ impl Motifs {
             Vec::with_capacity(placed.len() * self.part.len() / self.instances.len().max(1));
         for e in placed {
             let source = e.source as usize;
-            let copies = &by_orbit[orbit[source] as usize];
+            let copies = &by_orbit[group_of[source]];
             let chosen =
                 if variation.is_some() && copies.len() > 1 { copies[rng.below(copies.len())] as usize } else { source };
             let shift = e.pos - self.centre[chosen];
