@@ -32,6 +32,34 @@ fn main() {
             r.slowest_ms
         );
     }
+    // Motifs of several strokes drawn by hand (vector::handdrawn), 8 x 6 copies.
+    println!("\n| motif | lattice | strokes | by hand | accepted | accepted after 2 copies | shown | wrong | median ms | slowest ms (native) |");
+    println!("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|");
+    let spacing = 70.0;
+    let only_motif = std::env::var("MOTIF").ok();
+    for motif in patternsynth::vector::handdrawn::motifs()
+        .into_iter()
+        .filter(|m| only_motif.as_deref().is_none_or(|o| o == m.name))
+    {
+        for (lattice, a, b) in patternsynth::vector::handdrawn::lattices() {
+            let (ex, canvas) =
+                patternsynth::vector::handdrawn::draw_over(&motif, (a, b), (8.0, 6.0), spacing, jitter, 5);
+            let r = replay(&ex.strokes, &ex.classes, canvas, 0.3 * spacing);
+            println!(
+                "| {} | {lattice} | {} | {} | {} | {:.1}% | {} | {} ({:.1}%) | {:.2} | {:.2} |",
+                motif.name,
+                r.strokes,
+                r.by_hand,
+                r.accepted,
+                100.0 * r.accepted_after(2 * motif.parts.len()),
+                r.shown,
+                r.wrong,
+                100.0 * r.wrong_share(),
+                r.median_ms,
+                r.slowest_ms
+            );
+        }
+    }
     // Input with no repetition: every prefix of the drawing, nothing may be proposed.
     let quiet = |name: &str, strokes: &[patternsynth::vector::Stroke]| {
         let mut shown = 0;

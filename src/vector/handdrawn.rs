@@ -14,7 +14,7 @@ use super::color::Rgb;
 use super::exemplar::{Exemplar, Lattice};
 use super::stroke::Stroke;
 use crate::rng::Rng;
-use kurbo::{Point, Vec2};
+use kurbo::{Point, Rect, Vec2};
 use std::f64::consts::{PI, TAU};
 
 /// One part of a motif: its path in motif coordinates (spacing 1), closed or not, its
@@ -115,6 +115,61 @@ pub fn draw(
     wobble: f64,
     seed: u64,
 ) -> Exemplar {
+    drawn(motif, (a, b), (nx, ny), None, spacing, wobble, seed)
+}
+
+/// `motif` drawn at every lattice site whose copy's centre lies on a canvas of about
+/// `periods` spacings (the lattice's origin at `(spacing, spacing)`), row by row: a whole
+/// canvas as a person fills it, for the autocomplete replay. Each edge of the canvas is
+/// moved (by up to half a spacing) to where it is furthest from every site, so no copy
+/// sits on an edge, half in and half out. Returns the drawing and the canvas.
+pub fn draw_over(
+    motif: &Motif,
+    (a, b): (Vec2, Vec2),
+    periods: (f64, f64),
+    spacing: f64,
+    wobble: f64,
+    seed: u64,
+) -> (Exemplar, Rect) {
+    let nominal = Rect::new(0.5 * spacing, 0.5 * spacing, (periods.0 + 0.5) * spacing, (periods.1 + 0.5) * spacing);
+    let origin = Point::new(spacing, spacing);
+    let mut sites = Vec::new();
+    for j in -40..=40 {
+        for i in -40..=40 {
+            let p = origin + a * (i as f64 * spacing) + b * (j as f64 * spacing);
+            if nominal.inflate(spacing, spacing).contains(p) {
+                sites.push(p);
+            }
+        }
+    }
+    // The edge position within half a spacing of `at` furthest from the sites' coordinates.
+    let clear = |at: f64, coord: fn(&Point) -> f64| {
+        (0..=40)
+            .map(|k| at + spacing * (k as f64 / 40.0 - 0.5))
+            .max_by(|x, y| {
+                let gap = |e: f64| sites.iter().map(|p| (coord(p) - e).abs()).fold(f64::INFINITY, f64::min);
+                gap(*x).total_cmp(&gap(*y))
+            })
+            .unwrap_or(at)
+    };
+    let canvas = Rect::new(
+        clear(nominal.x0, |p| p.x),
+        clear(nominal.y0, |p| p.y),
+        clear(nominal.x1, |p| p.x),
+        clear(nominal.y1, |p| p.y),
+    );
+    (drawn(motif, (a, b), (0, 0), Some(canvas), spacing, wobble, seed), canvas)
+}
+
+fn drawn(
+    motif: &Motif,
+    (a, b): (Vec2, Vec2),
+    (nx, ny): (i32, i32),
+    canvas: Option<Rect>,
+    spacing: f64,
+    wobble: f64,
+    seed: u64,
+) -> Exemplar {
     let mut rng = Rng::new(seed);
     let origin = Point::new(spacing, spacing);
     let (a, b) = (a * spacing, b * spacing);
@@ -136,8 +191,24 @@ pub fn draw(
     let (shift_sd, end_sd, bend_sd, noise_sd) = (0.5 * w, 0.45 * w, 0.55 * w, 0.1 * w);
     let gauss = |rng: &mut Rng, sd: f64| Vec2::new(rng.normal(), rng.normal()) * sd;
     let (mut strokes, mut classes) = (Vec::new(), Vec::new());
-    for j in 0..ny {
-        for i in 0..nx {
+    let cells: Vec<(i32, i32)> = match canvas {
+        // Every copy whose centre is on the canvas, row by row (rows along `a`).
+        Some(c) => {
+            let mut cells = Vec::new();
+            let reach = ((c.width() + c.height()) / a.hypot().min(b.y.abs())).ceil() as i32 + 2;
+            for j in -reach..=reach {
+                for i in -reach..=reach {
+                    if c.contains(origin + a * i as f64 + b * j as f64) {
+                        cells.push((i, j));
+                    }
+                }
+            }
+            cells
+        }
+        None => (0..ny).flat_map(|j| (0..nx).map(move |i| (i, j))).collect(),
+    };
+    {
+        for &(i, j) in &cells {
             let centre = origin + a * i as f64 + b * j as f64;
             let shift = gauss(&mut rng, shift_sd);
             for (k, part) in motif.parts.iter().enumerate() {

@@ -78,9 +78,9 @@ pub fn replay(truth: &[Stroke], classes: &[u32], region: Rect, tol: f64) -> Repl
                     r.wrong += 1;
                     if debug {
                         let near = (0..truth.len())
-                            .map(|g| (truth[g].reference_point().distance(p), done[g]))
+                            .map(|g| (truth[g].reference_point().distance(p), done[g], classes[g]))
                             .min_by(|x, y| x.0.total_cmp(&y.0));
-                        eprintln!("  wrong {:?} at {p:?}: nearest truth {near:?}", s.cells[k]);
+                        eprintln!("  wrong {:?} class {class} at {p:?}: nearest truth {near:?}", s.cells[k]);
                     }
                 }
             }

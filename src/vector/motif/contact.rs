@@ -15,11 +15,11 @@ use super::super::spatial::Grid;
 use super::super::stroke::Stroke;
 use kurbo::{Point, Rect, Vec2};
 
-/// Pairs further apart than this many median stroke sizes are never parts of one copy
-/// (a shaky hand leaves gaps of a good part of a small stroke between parts).
+/// Pairs further apart than this many stroke sizes (the 90th percentile) are never parts
+/// of one copy (a shaky hand leaves gaps of a good part of a small stroke between parts).
 const REACH: f64 = 2.0;
 /// The join lengths must jump by at least this ratio between parts and copies.
-const CLEAR: f64 = 3.0;
+const CLEAR: f64 = 2.5;
 /// Gaps are compared above this floor (a share of the median stroke size): a hand never
 /// makes two strokes meet exactly, so 0 against 0.01 is no gap.
 const FLOOR: f64 = 0.03;
@@ -38,7 +38,11 @@ pub fn instances(strokes: &[Stroke]) -> Option<Vec<Vec<u32>>> {
         return None;
     }
     let size = typical_size(strokes);
-    let reach = REACH * size;
+    // The reach is set by the large parts: a motif of many small ones (eyes, a mouth)
+    // around a large outline has its gaps on the outline's scale.
+    let mut sizes: Vec<f64> = strokes.iter().map(|s| s.bounds().size().to_vec2().hypot()).collect();
+    crate::order::floats(&mut sizes);
+    let reach = REACH * sizes[(sizes.len() - 1) * 9 / 10].max(size);
     let paths: Vec<Vec<Point>> = strokes.iter().map(sampled).collect();
     let boxes: Vec<Rect> = strokes.iter().map(|s| s.bounds().inflate(s.width / 2.0, s.width / 2.0)).collect();
     let all = boxes.iter().skip(1).fold(boxes[0], |r, b| r.union(*b));
@@ -75,9 +79,34 @@ pub fn instances(strokes: &[Stroke]) -> Option<Vec<Vec<u32>>> {
     // Kruskal: the joins of the minimum spanning forest, in order.
     let mut sets = Sets::new(n);
     let joins: Vec<(f64, u32, u32)> = edges.into_iter().filter(|&(_, i, j)| sets.union(i, j)).collect();
-    let cut = cut(&joins.iter().map(|j| j.0).collect::<Vec<_>>(), reach, FLOOR * size)?;
+    let lengths: Vec<f64> = joins.iter().map(|j| j.0).collect();
+    // The clearest cut that gives repeated, compact copies (a word's letters stand
+    // closer than its lines: the cut between words makes lines, the one between
+    // letters makes letters).
+    // Of the cuts that group, the one that puts the most strokes into instances of
+    // several (a mask's eyes join its outline only at the cut between copies), then the
+    // clearest.
+    let mut best: Option<(usize, Vec<Vec<u32>>)> = None;
+    for cut in cuts(&lengths, reach, FLOOR * size) {
+        if let Some(g) = grouped(n, &joins, cut, &boxes) {
+            let held = g.iter().filter(|i| i.len() >= 2).map(Vec::len).sum::<usize>();
+            if best.as_ref().is_none_or(|b| held > b.0) {
+                best = Some((held, g));
+            }
+        }
+    }
+    best.map(|b| b.1)
+}
+
+/// The instances that joins up to `cut` make, if they are a grouping: at least two
+/// instances of several strokes, holding most strokes, none holding three quarters of
+/// the drawing (a mesh; a second copy being drawn may hold fewer strokes than the
+/// first), and most smaller than the distance to the nearest other or laid side by side
+/// both ways (rows of a dense grid touch along the row: they are lines of copies, not
+/// copies).
+fn grouped(n: usize, joins: &[(f64, u32, u32)], cut: f64, boxes: &[Rect]) -> Option<Vec<Vec<u32>>> {
     let mut sets = Sets::new(n);
-    for &(g, i, j) in &joins {
+    for &(g, i, j) in joins {
         if g <= cut {
             sets.union(i, j);
         }
@@ -92,14 +121,10 @@ pub fn instances(strokes: &[Stroke]) -> Option<Vec<Vec<u32>>> {
         }
         out[index[root] as usize].push(i as u32);
     }
-    // A grouping is only one when copies repeat: at least two instances of several
-    // strokes, holding most strokes, none holding half of the drawing (a mesh), and most
-    // smaller than the distance to the nearest other (rows of a dense grid touch along
-    // the row: they are lines of copies, not copies).
     let multi: Vec<&Vec<u32>> = out.iter().filter(|g| g.len() >= 2).collect();
     let grouped: usize = multi.iter().map(|g| g.len()).sum();
     let largest = out.iter().map(Vec::len).max().unwrap_or(0);
-    if multi.len() < 2 || 2 * grouped < n || 2 * largest > n {
+    if multi.len() < 2 || 2 * grouped < n || 4 * largest > 3 * n {
         return None;
     }
     let bounds: Vec<Rect> =
@@ -117,31 +142,38 @@ pub fn instances(strokes: &[Stroke]) -> Option<Vec<Vec<u32>>> {
             b.size().to_vec2().hypot() <= COMPACT * nearest
         })
         .count();
-    (4 * compact >= 3 * out.len()).then_some(out)
+    // Or copies side by side both ways, wide as they are (words in lines of text): two
+    // centres further apart across than an instance is wide, and two further apart down
+    // than it is tall. Rows of a grid lie one above the other only.
+    let (w, h) = bounds.iter().fold((0.0f64, 0.0f64), |m, b| (m.0.max(b.width()), m.1.max(b.height())));
+    let (x0, x1, y0, y1) = bounds.iter().fold((f64::MAX, f64::MIN, f64::MAX, f64::MIN), |m, b| {
+        let c = b.center();
+        (m.0.min(c.x), m.1.max(c.x), m.2.min(c.y), m.3.max(c.y))
+    });
+    let side_by_side = x1 - x0 > w && y1 - y0 > h;
+    (4 * compact >= 3 * out.len() || side_by_side).then_some(out)
 }
 
 /// An instance's diagonal must stay within this multiple of the distance to the nearest
-/// other instance (for three in four instances).
-const COMPACT: f64 = 1.0;
+/// other instance (for three in four instances): an emoji 36 across on a 48 grid has a
+/// diagonal of 51; a row of a grid, a diagonal of several rows' distance.
+const COMPACT: f64 = 1.5;
 
-/// The join length below which strokes are parts of one instance: the geometric middle
-/// of the largest clear ratio gap between consecutive join lengths (the reach counts as
-/// the length of every join beyond it). `None` when there is no clear gap, or when no
-/// join falls below it.
-fn cut(joins: &[f64], reach: f64, floor: f64) -> Option<f64> {
+/// The join lengths below which strokes may be parts of one instance, clearest first:
+/// the geometric middle of every clear ratio gap between consecutive join lengths (the
+/// reach counts as the length of every join beyond it).
+fn cuts(joins: &[f64], reach: f64, floor: f64) -> Vec<f64> {
     let mut levels: Vec<f64> = joins.to_vec();
     levels.push(reach);
-    let mut best: Option<(f64, f64)> = None;
-    let mut best_ratio = CLEAR;
-    for w in levels.windows(2) {
-        let ratio = (w[1] + floor) / (w[0] + floor);
-        if ratio > best_ratio {
-            best_ratio = ratio;
-            best = Some((w[0], w[1]));
-        }
-    }
-    let (lo, hi) = best?;
-    Some(((lo + floor) * (hi + floor)).sqrt() - floor)
+    let mut gaps: Vec<(f64, f64)> = levels
+        .windows(2)
+        .filter_map(|w| {
+            let ratio = (w[1] + floor) / (w[0] + floor);
+            (ratio > CLEAR).then(|| (ratio, ((w[0] + floor) * (w[1] + floor)).sqrt() - floor))
+        })
+        .collect();
+    gaps.sort_by(|a, b| b.0.total_cmp(&a.0));
+    gaps.into_iter().map(|g| g.1).collect()
 }
 
 /// Whether two boxes touch along an edge (zero-area intersection of degenerate boxes:
@@ -301,8 +333,11 @@ mod tests {
 
     #[test]
     fn the_cut_needs_a_clear_gap() {
-        assert_eq!(cut(&[10.0, 11.0, 12.0], 13.0, 0.3), None);
-        let c = cut(&[0.0, 0.1, 0.2], 10.0, 0.3).unwrap();
-        assert!(c > 0.2 && c < 10.0, "{c}");
+        assert!(cuts(&[10.0, 11.0, 12.0], 13.0, 0.3).is_empty());
+        let c = cuts(&[0.0, 0.1, 0.2], 10.0, 0.3);
+        assert!(c.len() == 1 && c[0] > 0.2 && c[0] < 10.0, "{c:?}");
+        // Strokes of letters, letters of words, words: both gaps, the clearer first.
+        let c = cuts(&[0.0, 0.0, 4.0, 4.0, 30.0], 60.0, 0.3);
+        assert!(c.len() == 2 && c[0] < 4.0 && c[1] > 4.0 && c[1] < 30.0, "{c:?}");
     }
 }

@@ -131,7 +131,11 @@ pub fn kinds(strokes: &[Stroke], groups: &[Vec<u32>], tol: Tolerances, explicit_
             }
         }
     }
-    let threshold = split_at_gap(costs, 1.0);
+    // On the scale of three sizes: a gap counts only when its upper side is 0.3 of the
+    // size or more. Copies of one motif differ by the hand's wobble (exact copies, such as
+    // accepted suggestions, by nothing; hand-drawn ones by up to a fifth of the size at a
+    // wobble of 5% of the spacing), different motifs by a part or a shape.
+    let threshold = split_at_gap(costs, 3.0);
 
     // Greedy kinds: an instance joins the first kind one of whose first members it
     // corresponds to within the threshold.

@@ -31,7 +31,7 @@ pub struct Motifs {
     pub instances: Vec<Vec<u32>>,
     /// Kind of each instance (the class of its element).
     pub kind: Vec<u32>,
-    /// Each instance's centre: the centre of its strokes' bounding box.
+    /// Each instance's centre: the mean of its strokes' reference points.
     pub centre: Vec<Point>,
     /// Part of each stroke within its kind (0 for instances of one stroke).
     pub part: Vec<u32>,
@@ -50,8 +50,8 @@ pub struct Grouping {
 
 /// Reads `strokes` (with the paper's `classes` and tolerances) as motif instances.
 /// `periodic` says whether the strokes, one by one under some classes, are periodic.
-/// - An exact repeat (most strokes have exact copies, and it is periodic, as an SVG tile
-///   repeated is): strokes stay their own instances, of their paper classes, and their
+/// - An exact repeat (most strokes have exact copies, and it is periodic with its copies
+///   as classes, as an SVG tile repeated is): strokes stay their own instances, of their paper classes, and their
 ///   copies are kept for variation.
 /// - Strokes drawn on one another in compact, repeated copies: motif instances, classes
 ///   by the motifs' evidence (even when the strokes are periodic one by one: a copy's
@@ -68,7 +68,10 @@ pub fn group(
     let mut count = vec![0usize; strokes.len()];
     copies.iter().for_each(|&g| count[g as usize] += 1);
     let copied = copies.iter().filter(|&&g| count[g as usize] >= 2).count();
-    if 2 * copied >= strokes.len() && periodic(classes) {
+    // Periodic with the copies as classes: a drawing and its accepted suggestions (exact
+    // copies of drawn strokes among the hand's own) is not, since the hand's strokes have
+    // no copies one period on.
+    if 2 * copied >= strokes.len() && periodic(&copies) && periodic(classes) {
         let motifs = Motifs { copies: Some(copies), ..Motifs::single(strokes, classes) };
         return Grouping { motifs, classes: None };
     }
@@ -76,13 +79,18 @@ pub fn group(
         return Grouping { motifs: Motifs::single(strokes, classes), classes: None };
     };
     let k = kinds::kinds(strokes, &groups, tol, explicit_path);
-    let centre = groups.iter().map(|g| union_bounds(strokes, g).center()).collect();
+    let centre = groups.iter().map(|g| centre_of(strokes, g)).collect();
     let motifs = Motifs { instances: groups, kind: k.kind, centre, part: k.part, copies: None };
     Grouping { motifs, classes: Some(k.classes) }
 }
 
-fn union_bounds(strokes: &[Stroke], g: &[u32]) -> Rect {
-    g.iter().skip(1).fold(strokes[g[0] as usize].bounds(), |r, &s| r.union(strokes[s as usize].bounds()))
+/// An instance's centre: the mean of its strokes' reference points. Each point is the
+/// middle of a stroke's box, so the hand's wobble of one extreme point moves it by half
+/// that, and the mean over the parts halves it again; the box of the whole copy would
+/// move with its single most wobbly extreme.
+fn centre_of(strokes: &[Stroke], g: &[u32]) -> Point {
+    let sum = g.iter().fold(Vec2::ZERO, |s, &i| s + strokes[i as usize].reference_point().to_vec2());
+    (sum / g.len() as f64).to_point()
 }
 
 impl Motifs {
