@@ -23,7 +23,7 @@ use super::super::stroke::Stroke;
 use kurbo::{Point, Vec2};
 
 /// Instances compared to propose the kinds' threshold (pairs grow quadratically).
-const SAMPLE: usize = 40;
+const SAMPLE: usize = 24;
 /// Members of a kind an instance is compared with before it starts a kind of its own.
 const REPRESENTATIVES: usize = 4;
 /// Candidate partners per stroke, nearest by offset, in a correspondence.
@@ -107,7 +107,9 @@ impl Context<'_> {
 /// colour tolerances (and the path tolerance, when `explicit_path`, for shared classes).
 pub fn kinds(strokes: &[Stroke], groups: &[Vec<u32>], tol: Tolerances, explicit_path: bool) -> Kinds {
     let size = super::super::classify::typical_size(strokes);
-    let shapes = strokes.iter().map(|s| Shape::new(&s.points, size / 32.0)).collect();
+    // Coarse samples (a twelfth of the typical size): costs are read against a hand's
+    // wobble of a tenth or more, and the kinds are computed at every pen-up.
+    let shapes = strokes.iter().map(|s| Shape::new(&s.points, size / 12.0)).collect();
     let cx = Context { strokes, shapes, tol };
     let instances: Vec<Instance> = groups
         .iter()
