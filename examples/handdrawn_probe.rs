@@ -4,35 +4,8 @@
 //! stacked duplicates and residuals against the generator's lattice, and the classes.
 //! `handdrawn_probe [seed] [--sheet DIR]`: with `--sheet`, each output's SVG is written
 //! for the contact sheets.
-use kurbo::{Rect, Vec2};
-use patternsynth::vector::exemplar::Exemplar;
-use patternsynth::vector::handdrawn::{draw, lattices, motifs};
-use patternsynth::vector::regularity::{measure_at, Regularity};
-use patternsynth::vector::{synthesize_strokes, StrokeOptions};
-use patternsynth::Silent;
-
-fn run(ex: &Exemplar, a: Vec2, b: Vec2, spacing: f64, opts: StrokeOptions) -> (Regularity, usize, u32, String) {
-    let (w, h) = (10.0 * a.hypot() * spacing, 8.0 * b.y.abs() * spacing);
-    let opts = StrokeOptions { width: w, height: h, ..opts };
-    let res = synthesize_strokes(&ex.strokes, &opts, &mut Silent).expect(ex.name);
-    // Where the engine centres the example: the box of its motifs' centres.
-    let bounds = res
-        .classification
-        .motifs
-        .centre
-        .iter()
-        .fold(None::<Rect>, |r, &p| Some(r.map_or(Rect::from_points(p, p), |r| r.union_pt(p))));
-    let area = Rect::new(0.0, 0.0, w, h);
-    let shift: Vec2 = area.center() - bounds.unwrap().center();
-    let out: Vec<_> =
-        res.strokes.iter().zip(&res.sources).map(|(s, &src)| (s.reference_point(), ex.classes[src as usize])).collect();
-    (
-        measure_at(&ex.lattice, spacing * a.hypot().min(b.hypot()), shift, &out, area),
-        res.strokes.len(),
-        res.classification.count,
-        res.svg,
-    )
-}
+use patternsynth::vector::handdrawn::{draw, grow_and_measure, lattices, motifs};
+use patternsynth::vector::StrokeOptions;
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -48,7 +21,8 @@ fn main() {
                 for (nx, ny) in [(3, 3), (4, 3)] {
                     let ex = draw(&motif, (a, b), (nx, ny), spacing, wobble, seed);
                     let opts = StrokeOptions { seed, variation: !off, ..Default::default() };
-                    let (r, n, classes, svg) = run(&ex, a, b, spacing, opts);
+                    let (r, res) = grow_and_measure(&ex, (a, b), spacing, opts);
+                    let (n, classes, svg) = (res.strokes.len(), res.classification.count, res.svg);
                     println!(
                         "{:<10} {:<10} {:>5.1}% {}x{} {:>6} {:>7.2} {:>5} {:>7} {:>7.3} {:>6.3}   {}/{}",
                         motif.name,

@@ -8,7 +8,7 @@
 
 use kurbo::{Point, Rect, Vec2};
 use patternsynth::vector::exemplar::Exemplar;
-use patternsynth::vector::handdrawn::{draw, lattices, motifs};
+use patternsynth::vector::handdrawn::{draw, grow_and_measure, lattices, motifs};
 use patternsynth::vector::regularity::{measure_at, Regularity};
 use patternsynth::vector::{synthesize_strokes, StrokeOptions};
 use patternsynth::Silent;
@@ -16,21 +16,8 @@ use patternsynth::Silent;
 const SPACING: f64 = 70.0;
 
 fn grown(ex: &Exemplar, a: Vec2, b: Vec2, seed: u64) -> (Regularity, u32) {
-    let (w, h) = (10.0 * a.hypot() * SPACING, 8.0 * b.y.abs() * SPACING);
-    let opts = StrokeOptions { width: w, height: h, seed, ..Default::default() };
-    let res = synthesize_strokes(&ex.strokes, &opts, &mut Silent).expect(ex.name);
-    let bounds = res
-        .classification
-        .motifs
-        .centre
-        .iter()
-        .fold(None::<Rect>, |r, &p| Some(r.map_or(Rect::from_points(p, p), |r| r.union_pt(p))))
-        .unwrap();
-    let area = Rect::new(0.0, 0.0, w, h);
-    let out: Vec<(Point, u32)> =
-        res.strokes.iter().zip(&res.sources).map(|(s, &src)| (s.reference_point(), ex.classes[src as usize])).collect();
-    let scale = SPACING * a.hypot().min(b.hypot());
-    (measure_at(&ex.lattice, scale, area.center() - bounds.center(), &out, area), res.classification.count)
+    let (r, res) = grow_and_measure(ex, (a, b), SPACING, StrokeOptions { seed, ..Default::default() });
+    (r, res.classification.count)
 }
 
 /// The drawing's own residuals against the lattice it was drawn on.

@@ -29,7 +29,15 @@ export interface ParseSvgOptions {
 }
 export interface SvgImport { strokes: Stroke[]; warnings: string[]; width: number; height: number }
 export interface Tolerances { path: number; width: number; color: number }
-export interface Classification { classes: number[]; count: number; tolerances: Tolerances; proposed: Tolerances }
+export interface Classification {
+  /** Class of each stroke: its part in its motif (copies of one part share a class). */
+  classes: number[]; count: number;
+  /** The motif instance (one drawn copy of a motif of one or more strokes) of each stroke. */
+  instances: number[];
+  /** Kinds of motif: instances that are copies of one another. */
+  kinds: number;
+  tolerances: Tolerances; proposed: Tolerances;
+}
 export interface ClassifyOptions { pathTolerance?: number; widthTolerance?: number; colorTolerance?: number }
 /** Options of `suggestStrokes`: `region` is the canvas `[x, y, width, height]` (required with `fill`). */
 export interface SuggestOptions extends ClassifyOptions {
@@ -52,6 +60,7 @@ export interface Suggestions {
   reason?: string | null;
 }
 export interface StrokeOptions extends ClassifyOptions {
+  /** variation (default true): each placed motif takes a random drawn copy of the same motif position. */
   width: number; height: number; variation?: boolean; seed?: number; support?: number;
   /** Refuse outputs estimated above this many elements (default 500,000; at most 2,000,000). */
   maxElements?: number;

@@ -275,6 +275,28 @@ fn resample(path: &[Point], closed: bool, count: usize) -> Vec<(Point, Vec2)> {
         .collect()
 }
 
+/// Grows `ex` (drawn on the lattice `a`, `b` at `spacing`) to 10 x 8 periods with
+/// `opts` (its size set here) and measures the output against the drawing's lattice on
+/// the scale of its shorter period, as the table reads it.
+pub fn grow_and_measure(
+    ex: &Exemplar,
+    (a, b): (Vec2, Vec2),
+    spacing: f64,
+    opts: super::StrokeOptions,
+) -> (super::regularity::Regularity, super::StrokeResult) {
+    let (w, h) = (10.0 * a.hypot() * spacing, 8.0 * b.y.abs() * spacing);
+    let opts = super::StrokeOptions { width: w, height: h, ..opts };
+    let res = super::synthesize_strokes(&ex.strokes, &opts, &mut crate::Silent).expect(ex.name);
+    // Where the engine centres the example: the box of its motifs' centres.
+    let c = &res.classification.motifs.centre;
+    let bounds = c.iter().fold(Rect::from_points(c[0], c[0]), |r, &p| r.union_pt(p));
+    let area = Rect::new(0.0, 0.0, w, h);
+    let out: Vec<(Point, u32)> =
+        res.strokes.iter().zip(&res.sources).map(|(s, &src)| (s.reference_point(), ex.classes[src as usize])).collect();
+    let scale = spacing * a.hypot().min(b.hypot());
+    (super::regularity::measure_at(&ex.lattice, scale, area.center() - bounds.center(), &out, area), res)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
