@@ -17,4 +17,14 @@ fn main() {
         t.elapsed()
     );
     println!("instances {:?}", &c.motifs.instances[..c.motifs.instances.len().min(12)]);
+    // Synthesized to a square of `size` (second argument), variation on and off.
+    if let Some(size) = std::env::args().nth(2).and_then(|a| a.parse::<f64>().ok()) {
+        for variation in [true, false] {
+            let opts =
+                patternsynth::vector::StrokeOptions { width: size, height: size, variation, ..Default::default() };
+            let r = patternsynth::vector::synthesize_strokes(&strokes, &opts, &mut patternsynth::Silent)
+                .expect("synthesis");
+            println!("variation {variation}: {} strokes", r.strokes.len());
+        }
+    }
 }

@@ -76,3 +76,56 @@ fn variation_never_puts_one_part_where_another_belongs() {
         assert!(fits, "an output stroke of part {part} has the box {:?} of no drawn copy of it", size(s));
     }
 }
+
+#[test]
+fn five_bars_through_one_centre_stay_five_parts() {
+    // Only their shapes tell the bars of an asterisk apart (all share its centre).
+    let mut strokes = Vec::new();
+    // A deterministic jitter of +-0.3 units per coordinate.
+    let noise = |k: usize| ((k * 7919 % 13) as f64 / 13.0 - 0.5) * 0.6;
+    for j in 0..3 {
+        for i in 0..3 {
+            let (cx, cy) = (70.0 + 70.0 * i as f64 + 35.0 * j as f64, 70.0 + 60.62 * j as f64);
+            for k in 0..5 {
+                let a = std::f64::consts::PI * k as f64 / 5.0;
+                let (dx, dy) = (17.0 * a.cos(), 17.0 * a.sin());
+                let n = strokes.len();
+                strokes.push(patternsynth::vector::Stroke::new(
+                    vec![
+                        [cx - dx + noise(4 * n), cy - dy + noise(4 * n + 1)],
+                        [cx + dx + noise(4 * n + 2), cy + dy + noise(4 * n + 3)],
+                    ],
+                    2.5,
+                    None,
+                ));
+            }
+        }
+    }
+    let res =
+        synthesize_strokes(&strokes, &StrokeOptions { width: 500.0, height: 500.0, ..Default::default() }, &mut Silent)
+            .unwrap();
+    assert_eq!((res.classification.kinds, res.classification.count), (1, 5));
+    assert_eq!(res.strokes.len() % 5, 0, "whole asterisks only: {}", res.strokes.len());
+    // Each placed asterisk has its five bars at five angles.
+    let angle = |s: &patternsynth::vector::Stroke| {
+        let (p, q) = (s.points[0], s.points[1]);
+        ((q[1] - p[1]).atan2(q[0] - p[0]).to_degrees().rem_euclid(180.0) / 36.0).round() as usize % 5
+    };
+    let mut per_angle = [0usize; 5];
+    res.strokes.iter().for_each(|s| per_angle[angle(s)] += 1);
+    assert!(per_angle.iter().all(|&c| c == per_angle[0]), "{per_angle:?}");
+}
+
+#[test]
+fn a_copy_left_incomplete_is_not_a_motif_of_its_own() {
+    // Crosses drawn 3x3, the centre one without its vertical bar (a copy being drawn):
+    // the output holds whole crosses, one per site, not a lone bar stacked on each.
+    let motif = motifs().into_iter().find(|m| m.name == "cross").unwrap();
+    let (_, a, b) = lattices()[0];
+    let mut ex = draw(&motif, (a, b), (3, 3), SPACING, 0.02, 4);
+    ex.strokes.remove(9);
+    ex.classes.remove(9);
+    let (r, res) = grow_and_measure(&ex, (a, b), SPACING, StrokeOptions::default());
+    assert_eq!(res.classification.kinds, 1);
+    assert!(r.coverage >= 0.99 && r.stray == 0 && r.stacked == 0, "{r:?}");
+}

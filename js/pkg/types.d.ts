@@ -98,6 +98,7 @@ export interface TileResult {
   strokes: Stroke[]; classes: number[]; width: number; height: number;
   /** The tile's exact lattice periods. */
   periods: [[number, number], [number, number]];
+  /** Stroke sites in the tile (strokes before edge copies; a motif of several strokes has one per stroke). */
   sites: number; classification: Classification;
   /** width x height, repeats without seams as a CSS background. */
   svg: string;

@@ -150,10 +150,18 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
     let motifs = &classification.motifs;
     let elems = classification.elements();
     let parts: Vec<usize> = motifs.instances.iter().map(Vec::len).collect();
+    // A copy with fewer strokes than its kind's most is still being drawn (or was left
+    // so): its centre is only estimated from the parts drawn, so it weighs little.
+    let mut most = vec![0usize; motifs.kind.iter().map(|&k| k as usize + 1).max().unwrap_or(0)];
+    for (&p, &k) in parts.iter().zip(&motifs.kind) {
+        most[k as usize] = most[k as usize].max(p);
+    }
+    let whole = |x: usize| parts[x] >= most[motifs.kind[x] as usize];
     let weight: Vec<f64> = motifs
         .instances
         .iter()
-        .map(|g| if g.iter().all(|&s| weight[s as usize] < 1.0) { SUGGESTED_WEIGHT } else { 1.0 })
+        .enumerate()
+        .map(|(x, g)| if !whole(x) || g.iter().all(|&s| weight[s as usize] < 1.0) { SUGGESTED_WEIGHT } else { 1.0 })
         .collect();
     let Ok(mut spread) = Spread::new(&elems) else {
         return Ok(nothing("The strokes have no spacing to repeat."));
@@ -163,6 +171,9 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
         return Ok(nothing("The drawing shows no repetition yet."));
     };
     let latest = motifs.instance_of()[strokes.len() - 1] as usize;
+    if !whole(latest) {
+        return Ok(nothing("The copy being drawn is not finished: the next copies are proposed once it is."));
+    }
     if fit.motif[fit.cell[latest].0].members.len() < 2 {
         return Ok(nothing("The latest stroke does not repeat the pattern."));
     }
@@ -205,7 +216,9 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
         );
         // Variation among the drawn copies of this motif position only.
         let source = motif.members[rng.below(motif.members.len())];
-        let pick = if opts.variation { motif.members[rng.below(motif.members.len())] } else { source };
+        // A whole drawn copy (not one still being drawn) when varying.
+        let copies: Vec<usize> = motif.members.iter().copied().filter(|&x| whole(x)).collect();
+        let pick = if opts.variation && !copies.is_empty() { copies[rng.below(copies.len())] } else { source };
         let target = fit.site(m, cell) + (elems[source].pos - fit.site(m, fit.at(source)));
         if drawn_at(elems[source].class, target, extents[pick].hypot() * 2.0) {
             continue;

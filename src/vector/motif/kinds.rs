@@ -26,8 +26,13 @@ use kurbo::{Point, Vec2};
 const SAMPLE: usize = 24;
 /// Members of a kind an instance is compared with before it starts a kind of its own.
 const REPRESENTATIVES: usize = 4;
-/// Candidate partners per stroke, nearest by offset, in a correspondence.
+/// Candidate partners per stroke, nearest by offset, in a correspondence of a motif of
+/// more than `ALL_PARTNERS` strokes (in a smaller one, every stroke is a candidate).
 const PARTNERS: usize = 4;
+const ALL_PARTNERS: usize = 8;
+/// An incomplete copy's strokes must lie within this share of the motif's size of the
+/// parts they stand for.
+const INCOMPLETE: f64 = 0.25;
 /// Part classes beyond which parts are not merged into shared classes (pairs grow
 /// quadratically; each part then keeps its own class).
 const MERGE_LIMIT: usize = 512;
@@ -44,6 +49,9 @@ pub struct Kinds {
     pub part: Vec<u32>,
     /// Class of each stroke (parts that look alike share one), by first appearance.
     pub classes: Vec<u32>,
+    /// Of each instance that is an incomplete copy: its kind's first instance and the
+    /// translation from that to it (where the whole motif's centre would be).
+    pub incomplete: Vec<Option<(usize, Vec2)>>,
 }
 
 /// One instance as compared: its strokes, their offsets from its centre and its size.
@@ -51,6 +59,7 @@ struct Instance {
     strokes: Vec<u32>,
     offsets: Vec<Vec2>,
     size: f64,
+    centre: Point,
 }
 
 struct Context<'a> {
@@ -74,7 +83,10 @@ impl Context<'_> {
             let mut near: Vec<(f64, usize)> =
                 a.offsets.iter().enumerate().map(|(i, o)| ((*o - b.offsets[j]).hypot(), i)).collect();
             near.sort_by(|x, y| x.0.total_cmp(&y.0));
-            for &(off, i) in near.iter().take(PARTNERS) {
+            // Every stroke is a candidate in a small motif: the parts of an asterisk all
+            // sit on its centre, and only their shapes tell them apart.
+            let partners = if k <= ALL_PARTNERS { k } else { PARTNERS };
+            for &(off, i) in near.iter().take(partners) {
                 let sa = a.strokes[i];
                 let (x, y) = (&self.strokes[sa as usize], &self.strokes[sb as usize]);
                 if (x.width - y.width).abs() >= self.tol.width
@@ -103,6 +115,41 @@ impl Context<'_> {
     }
 }
 
+impl Context<'_> {
+    /// Whether `part`'s strokes are some of `full`'s, under one translation (a copy left
+    /// incomplete, or being drawn): the translation from `full` to it and, per stroke of
+    /// `part`, its partner's index in `full`.
+    fn subset(&self, full: &Instance, part: &Instance) -> Option<(Vec2, Vec<u32>)> {
+        if part.strokes.len() >= full.strokes.len() {
+            return None;
+        }
+        let tol = INCOMPLETE * full.size.max(1e-9);
+        let at = |inst: &Instance, j: usize| inst.centre + inst.offsets[j];
+        let fits = |i: usize, j: usize| {
+            let (x, y) = (&self.strokes[full.strokes[i] as usize], &self.strokes[part.strokes[j] as usize]);
+            (x.width - y.width).abs() < self.tol.width
+                && paint_distance(x.stroke, y.stroke) < self.tol.color
+                && paint_distance(x.fill, y.fill) < self.tol.color
+                && self.shapes[full.strokes[i] as usize].within(&self.shapes[part.strokes[j] as usize], tol)
+        };
+        // Anchored on each partner of the first stroke in turn.
+        (0..full.strokes.len()).filter(|&i| fits(i, 0)).find_map(|i0| {
+            let t = at(part, 0) - at(full, i0);
+            let mut taken = vec![false; full.strokes.len()];
+            let mut of = Vec::with_capacity(part.strokes.len());
+            for j in 0..part.strokes.len() {
+                let want = at(part, j) - t;
+                let i = (0..full.strokes.len())
+                    .filter(|&i| !taken[i] && at(full, i).distance(want) < tol && fits(i, j))
+                    .min_by(|&a, &b| at(full, a).distance(want).total_cmp(&at(full, b).distance(want)))?;
+                taken[i] = true;
+                of.push(i as u32);
+            }
+            Some((t, of))
+        })
+    }
+}
+
 /// Kinds, parts and classes of the `instances` of `strokes`. `tol`: the width and
 /// colour tolerances (and the path tolerance, when `explicit_path`, for shared classes).
 pub fn kinds(strokes: &[Stroke], groups: &[Vec<u32>], tol: Tolerances, explicit_path: bool) -> Kinds {
@@ -118,7 +165,7 @@ pub fn kinds(strokes: &[Stroke], groups: &[Vec<u32>], tol: Tolerances, explicit_
                 g.iter().skip(1).fold(strokes[g[0] as usize].bounds(), |r, &s| r.union(strokes[s as usize].bounds()));
             let centre: Point = bounds.center();
             let offsets = g.iter().map(|&s| strokes[s as usize].reference_point() - centre).collect();
-            Instance { strokes: g.clone(), offsets, size: bounds.size().to_vec2().hypot() }
+            Instance { strokes: g.clone(), offsets, size: bounds.size().to_vec2().hypot(), centre }
         })
         .collect();
 
@@ -161,6 +208,33 @@ pub fn kinds(strokes: &[Stroke], groups: &[Vec<u32>], tol: Tolerances, explicit_
         }
     }
 
+    // Incomplete copies: a kind of one instance whose strokes are some of a repeated
+    // kind's joins that kind (otherwise it is a motif of its own, and placed at every
+    // site of the pattern, on top of the whole ones).
+    let mut incomplete: Vec<Option<(Vec2, Vec<u32>)>> = vec![None; instances.len()];
+    let mut k = 0;
+    while k < members.len() {
+        let x = members[k][0];
+        let joins = (members[k].len() == 1)
+            .then(|| {
+                (0..members.len())
+                    .filter(|&l| l != k && members[l].len() >= 2)
+                    .find_map(|l| cx.subset(&instances[members[l][0]], &instances[x]).map(|m| (l, m)))
+            })
+            .flatten();
+        match joins {
+            Some((l, m)) => {
+                members[l].push(x);
+                incomplete[x] = Some(m);
+                members.remove(k);
+            }
+            None => k += 1,
+        }
+    }
+    for (k, m) in members.iter().enumerate() {
+        m.iter().for_each(|&x| kind[x] = k as u32);
+    }
+
     // Parts: each stroke's partner in the first instance of its kind, and each part's
     // spread (the largest shape distance of a copy from the first).
     let mut part = vec![0u32; strokes.len()];
@@ -172,8 +246,9 @@ pub fn kinds(strokes: &[Stroke], groups: &[Vec<u32>], tol: Tolerances, explicit_
         spread.extend(std::iter::repeat_n(0.0, first.strokes.len()));
         for &x in m {
             let inst = &instances[x];
-            let (of, shapes) = match cx.correspond(first, inst) {
-                Some((_, of, shapes)) => (of, shapes),
+            let joined = incomplete[x].as_ref().map(|(_, of)| (of.clone(), vec![0.0; inst.strokes.len()]));
+            let (of, shapes) = match joined.or_else(|| cx.correspond(first, inst).map(|(_, of, shapes)| (of, shapes))) {
+                Some(found) => found,
                 // Joined through another member: parts by drawing order.
                 None => ((0..inst.strokes.len() as u32).collect(), vec![0.0; inst.strokes.len()]),
             };
@@ -245,5 +320,8 @@ pub fn kinds(strokes: &[Stroke], groups: &[Vec<u32>], tol: Tolerances, explicit_
             number[p]
         })
         .collect();
-    Kinds { kind, part, classes }
+    let first = members.iter().map(|m| m[0]).collect::<Vec<usize>>();
+    let incomplete =
+        incomplete.into_iter().enumerate().map(|(x, m)| m.map(|(t, _)| (first[kind[x] as usize], t))).collect();
+    Kinds { kind, part, classes, incomplete }
 }

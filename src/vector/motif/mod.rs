@@ -79,7 +79,13 @@ pub fn group(
         return Grouping { motifs: Motifs::single(strokes, classes), classes: None };
     };
     let k = kinds::kinds(strokes, &groups, tol, explicit_path);
-    let centre = groups.iter().map(|g| centre_of(strokes, g)).collect();
+    let mut centre: Vec<Point> = groups.iter().map(|g| centre_of(strokes, g)).collect();
+    // An incomplete copy stands where its whole motif's centre would be.
+    for (x, inc) in k.incomplete.iter().enumerate() {
+        if let Some((first, t)) = *inc {
+            centre[x] = centre_of(strokes, &groups[first]) + t;
+        }
+    }
     let motifs = Motifs { instances: groups, kind: k.kind, centre, part: k.part, copies: None };
     Grouping { motifs, classes: Some(k.classes) }
 }
@@ -159,14 +165,25 @@ impl Motifs {
         keys.sort_unstable();
         keys.dedup();
         let group_of: Vec<usize> = (0..orbit.len()).map(|x| keys.binary_search(&key(x)).unwrap_or(0)).collect();
+        // Variation takes whole copies: an incomplete one (fewer strokes than its kind's
+        // most) only stands at its own place, or where its orbit has no whole copy.
+        let mut most = vec![0usize; self.kind.iter().map(|&k| k as usize + 1).max().unwrap_or(0)];
+        for (g, &k) in self.instances.iter().zip(&self.kind) {
+            most[k as usize] = most[k as usize].max(g.len());
+        }
         let mut by_orbit: Vec<Vec<u32>> = vec![Vec::new(); keys.len()];
         for (x, &g) in group_of.iter().enumerate() {
-            by_orbit[g].push(x as u32);
+            if self.instances[x].len() >= most[self.kind[x] as usize] {
+                by_orbit[g].push(x as u32);
+            }
+        }
+        for (x, &g) in group_of.iter().enumerate() {
+            if by_orbit[g].is_empty() {
+                by_orbit[g].push(x as u32);
+            }
         }
         // Each instance's stroke per part, to name the source stroke of a copied part.
-        let of_part = |x: usize, part: u32| {
-            self.instances[x].iter().copied().find(|&s| self.part[s as usize] == part).unwrap_or(self.instances[x][0])
-        };
+        let of_part = |x: usize, part: u32| self.instances[x].iter().copied().find(|&s| self.part[s as usize] == part);
         let mut rng = Rng::new(variation.unwrap_or(0));
         let mut out: Vec<(u32, usize, Stroke, u32, u32)> =
             Vec::with_capacity(placed.len() * self.part.len() / self.instances.len().max(1));
@@ -187,7 +204,9 @@ impl Motifs {
                 {
                     continue;
                 }
-                let src = if chosen == source { s } else { of_part(source, self.part[s as usize]) };
+                // The source's stroke of this part (an incomplete source may lack it: then
+                // the copied stroke itself).
+                let src = if chosen == source { s } else { of_part(source, self.part[s as usize]).unwrap_or(s) };
                 out.push((first, k, stroke.translated(shift.x, shift.y), classes[s as usize], src));
             }
         }
