@@ -77,15 +77,6 @@ impl Classification {
     pub fn elements(&self) -> Vec<Element> {
         self.motifs.elements()
     }
-
-    /// The strokes of each class, in drawing order.
-    pub fn members(&self) -> Vec<Vec<usize>> {
-        let mut members = vec![Vec::new(); self.count as usize];
-        for (i, &c) in self.classes.iter().enumerate() {
-            members[c as usize].push(i);
-        }
-        members
-    }
 }
 
 #[derive(Clone, Debug, Serialize)]

@@ -188,13 +188,22 @@ pub fn kinds(strokes: &[Stroke], groups: &[Vec<u32>], tol: Tolerances, explicit_
 
     // Greedy kinds: an instance joins the first kind one of whose first members it
     // corresponds to within the threshold.
+    // The correspondence to the kind's first member, when that is the one that matched,
+    // is kept for the parts below.
     let mut kind = vec![u32::MAX; instances.len()];
     let mut members: Vec<Vec<usize>> = Vec::new();
+    let mut to_first: Vec<Option<(Vec<u32>, Vec<f64>)>> = vec![None; instances.len()];
     for (x, inst) in instances.iter().enumerate() {
         let found = members.iter().position(|m| {
-            m.iter()
-                .take(REPRESENTATIVES)
-                .any(|&y| cx.correspond(&instances[y], inst).is_some_and(|c| c.0 <= threshold))
+            m.iter().take(REPRESENTATIVES).enumerate().any(|(r, &y)| match cx.correspond(&instances[y], inst) {
+                Some((cost, of, shapes)) if cost <= threshold => {
+                    if r == 0 {
+                        to_first[x] = Some((of, shapes));
+                    }
+                    true
+                }
+                _ => false,
+            })
         });
         match found {
             Some(k) => {
@@ -247,7 +256,10 @@ pub fn kinds(strokes: &[Stroke], groups: &[Vec<u32>], tol: Tolerances, explicit_
         for &x in m {
             let inst = &instances[x];
             let joined = incomplete[x].as_ref().map(|(_, of)| (of.clone(), vec![0.0; inst.strokes.len()]));
-            let (of, shapes) = match joined.or_else(|| cx.correspond(first, inst).map(|(_, of, shapes)| (of, shapes))) {
+            // The first member is its own partner, stroke for stroke.
+            let itself = (x == m[0]).then(|| ((0..inst.strokes.len() as u32).collect(), vec![0.0; inst.strokes.len()]));
+            let known = joined.or(itself).or_else(|| to_first[x].take());
+            let (of, shapes) = match known.or_else(|| cx.correspond(first, inst).map(|(_, of, shapes)| (of, shapes))) {
                 Some(found) => found,
                 // Joined through another member: parts by drawing order.
                 None => ((0..inst.strokes.len() as u32).collect(), vec![0.0; inst.strokes.len()]),

@@ -111,11 +111,6 @@ impl Motifs {
         }
     }
 
-    /// Whether some instance holds several strokes.
-    pub fn grouped(&self) -> bool {
-        self.instances.len() < self.part.len()
-    }
-
     /// One point element per instance, at its centre, of its kind.
     pub fn elements(&self) -> Vec<Element> {
         self.centre.iter().zip(&self.kind).map(|(&pos, &class)| Element { pos, class }).collect()
