@@ -9,13 +9,14 @@ use patternsynth::vector::{suggest_strokes, SuggestOptions};
 
 fn main() {
     let jitter: f64 = std::env::args().nth(1).and_then(|a| a.parse().ok()).unwrap_or(0.03);
+    let seed: u64 = std::env::var("SEED").ok().and_then(|s| s.parse().ok()).unwrap_or(5);
     println!("jitter {jitter} of the spacing; canvases of 8 x 6 periods (rows: 12)");
     println!("| family | strokes | by hand | accepted | accepted after 2 periods | shown | wrong | median ms | slowest ms (native) |");
     println!("|---|---:|---:|---:|---:|---:|---:|---:|---:|");
     let only = std::env::var("FAMILY").ok();
     for f in family_list().into_iter().filter(|f| only.as_deref().is_none_or(|o| o == f.name)) {
         let (x, y) = if f.lattice.b.is_some() { (8.0, 6.0) } else { (12.0, 1.0) };
-        let (ex, canvas) = f.canvas(x, y, jitter, 5);
+        let (ex, canvas) = f.canvas(x, y, jitter, seed);
         let r = replay(&ex.strokes, &ex.classes, canvas, 0.3 * f.lattice.spacing());
         let skip = 2 * f.lattice.motif.len();
         println!(
@@ -41,9 +42,13 @@ fn main() {
         .into_iter()
         .filter(|m| only_motif.as_deref().is_none_or(|o| o == m.name))
     {
-        for (lattice, a, b) in patternsynth::vector::handdrawn::lattices() {
+        let only_lattice = std::env::var("LATTICE").ok();
+        for (lattice, a, b) in patternsynth::vector::handdrawn::lattices()
+            .into_iter()
+            .filter(|l| only_lattice.as_deref().is_none_or(|o| o == l.0))
+        {
             let (ex, canvas) =
-                patternsynth::vector::handdrawn::draw_over(&motif, (a, b), (8.0, 6.0), spacing, jitter, 5);
+                patternsynth::vector::handdrawn::draw_over(&motif, (a, b), (8.0, 6.0), spacing, jitter, seed);
             let r = replay(&ex.strokes, &ex.classes, canvas, 0.3 * spacing);
             println!(
                 "| {} | {lattice} | {} | {} | {} | {:.1}% | {} | {} ({:.1}%) | {:.2} | {:.2} |",

@@ -129,3 +129,25 @@ fn a_copy_left_incomplete_is_not_a_motif_of_its_own() {
     assert_eq!(res.classification.kinds, 1);
     assert!(r.coverage >= 0.99 && r.stray == 0 && r.stacked == 0, "{r:?}");
 }
+
+#[test]
+fn a_drawing_finished_with_accepted_proposals_grows_as_the_hand_drawn_one() {
+    // The playground's story: draw a motif a few times with a shaky hand (5%), accept
+    // the proposed copies, synthesize. Accepted copies are exact translates of drawn
+    // ones; the drawing must still read as hand-drawn motifs, not as an exact tile.
+    use patternsynth::vector::handdrawn::draw_over;
+    use patternsynth::vector::replay::replay;
+    let all = motifs();
+    for (name, lattice) in [("cross", "brick"), ("house", "square"), ("asterisk", "hexagonal")] {
+        let motif = all.iter().find(|m| m.name == name).unwrap();
+        let (_, a, b) = lattices().into_iter().find(|l| l.0 == lattice).unwrap();
+        let (ex, canvas) = draw_over(motif, (a, b), (8.0, 6.0), SPACING, 0.05, 5);
+        let r = replay(&ex.strokes, &ex.classes, canvas, 0.3 * SPACING);
+        assert!(r.accepted * 2 > r.strokes, "{name} on {lattice}: {r:?}");
+        let finished = Exemplar { strokes: r.drawing.clone(), classes: r.drawing_classes.clone(), ..ex.clone() };
+        let (g, res) = grow_and_measure(&finished, (a, b), SPACING, StrokeOptions::default());
+        assert!(res.classification.motifs.copies.is_none(), "{name} on {lattice}: read as an exact tile");
+        assert!(g.coverage >= 0.99 && g.stray == 0 && g.stacked == 0, "{name} on {lattice}: {g:?}");
+        assert!(g.median_residual <= 0.05 && g.p95_residual <= 0.1, "{name} on {lattice}: {g:?}");
+    }
+}

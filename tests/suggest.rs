@@ -125,3 +125,24 @@ fn bad_options_are_refused_with_a_message() {
         suggest_strokes(&ex.strokes, &SuggestOptions { region: Some([0.0, 0.0, -1.0, 5.0]), ..Default::default() });
     assert!(region.unwrap_err().to_string().contains("region"));
 }
+
+#[test]
+fn a_shaky_hand_drawing_motifs_of_several_strokes_gets_whole_right_copies() {
+    // The aim at a wobble of 5% of the spacing: at least 80% of the strokes
+    // after the first two copies come from accepted proposals, under 5% of the shown
+    // ones are wrong. Every motif on every lattice (the flower, the slowest, on two).
+    use patternsynth::vector::handdrawn::{draw_over, lattices, motifs};
+    let spacing = 70.0;
+    for motif in motifs() {
+        for (lattice, a, b) in lattices() {
+            if motif.name == "flower" && !matches!(lattice, "square" | "hexagonal") {
+                continue;
+            }
+            let (ex, canvas) = draw_over(&motif, (a, b), (8.0, 6.0), spacing, 0.05, 5);
+            let r = replay(&ex.strokes, &ex.classes, canvas, 0.3 * spacing);
+            let skip = 2 * motif.parts.len();
+            assert!(r.accepted_after(skip) >= 0.8, "{} on {lattice}: {r:?}", motif.name);
+            assert!(r.wrong_share() < 0.05, "{} on {lattice}: {r:?}", motif.name);
+        }
+    }
+}

@@ -24,6 +24,9 @@ pub struct Replay {
     /// Slowest and median call, in milliseconds (native).
     pub slowest_ms: f64,
     pub median_ms: f64,
+    /// The finished drawing (hand-drawn and accepted strokes, in order) and its classes.
+    pub drawing: Vec<Stroke>,
+    pub drawing_classes: Vec<u32>,
 }
 
 impl Replay {
@@ -80,7 +83,10 @@ pub fn replay(truth: &[Stroke], classes: &[u32], region: Rect, tol: f64) -> Repl
                         let near = (0..truth.len())
                             .map(|g| (truth[g].reference_point().distance(p), done[g], classes[g]))
                             .min_by(|x, y| x.0.total_cmp(&y.0));
-                        eprintln!("  wrong {:?} class {class} at {p:?}: nearest truth {near:?}", s.cells[k]);
+                        eprintln!(
+                            "  wrong {:?} class {class} (source {}) at {p:?}: nearest truth {near:?}",
+                            s.cells[k], s.sources[k]
+                        );
                     }
                 }
             }
@@ -104,6 +110,8 @@ pub fn replay(truth: &[Stroke], classes: &[u32], region: Rect, tol: f64) -> Repl
             }
         }
     }
+    r.drawing = drawn;
+    r.drawing_classes = drawn_class;
     crate::order::floats(&mut times);
     r.slowest_ms = times.last().copied().unwrap_or(0.0);
     r.median_ms = times.get(times.len() / 2).copied().unwrap_or(0.0);

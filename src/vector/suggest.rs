@@ -16,18 +16,28 @@
 //! Predictions then complete the cells already begun (the copy being drawn) and add the
 //! next `count` cells along the rhythm of the latest cells. Nothing is proposed on a
 //! first stroke, on irregular input, or when the latest stroke does not repeat anything
-//! (a stroke that contradicts the prediction dismisses it). Each proposed stroke is a
-//! random member of its class placed at its site with a drawn member's own deviation,
-//! as synthesis places them, so accepted copies keep the hand-drawn character.
+//! (a stroke that contradicts the prediction dismisses it). Each proposed copy is a
+//! random drawn copy of its motif (so accepted copies keep the hand-drawn character)
+//! placed at its site: the least-squares site is the best guess of where the hand
+//! would put it, and a drawn copy's own deviation would only add to the miss.
+//!
+//! A proposal is shown only where it is likely right: where its expected miss (the
+//! site's standard error, grown with each period away from the hand-drawn copies, and
+//! the hand's own scatter) fits in the matching tolerance twice. The scatter is
+//! estimated with its degrees of freedom (two copies fit a row exactly and say nothing
+//! of it) and a prior read from the hand's wobble; accepted copies, which sit where an
+//! earlier fit put them, count neither as evidence of the periods' error nor as whole
+//! copies of the hand (a copy finished by hand weighs by its hand-drawn share).
 
 use super::element::Element;
 use super::reference::Spread;
 use super::stroke::Stroke;
-use super::synthesize::classify_strokes;
+use super::synthesize::classify_drawing;
 use crate::error::{invalid, Result};
 use crate::rng::Rng;
 use kurbo::{Point, Rect, Vec2};
 use serde::{Deserialize, Serialize};
+use std::f64::consts::SQRT_2;
 
 /// Options of `suggest_strokes`.
 #[derive(Clone, Debug, Deserialize)]
@@ -105,9 +115,17 @@ const TOLERANCE: f64 = 0.3;
 const MAX_RESIDUAL: f64 = 0.2;
 /// Confidence lost per period of distance from the nearest drawn copy.
 const FALLOFF: f64 = 0.85;
-/// A proposal is shown only where this many standard errors of its site fit in the
-/// matching tolerance.
-const UNCERTAIN: f64 = 2.5;
+/// A proposal is shown only where this many root-mean-square misses fit in the
+/// matching tolerance (a miss being the distance from the copy the hand would draw
+/// there: for a Gaussian miss, 2 of them leave about one proposal in 50 outside).
+const UNCERTAIN: f64 = 2.0;
+/// The least scatter of a copy about its site assumed before the drawing shows its
+/// own, as a fraction of the spacing (a hand's own is read from its strokes' shapes:
+/// see `hand_scatter`).
+const MIN_SCATTER: f64 = 0.04;
+/// A hand places its copies more loosely than it shapes them: the prior scatter of a
+/// copy's place is this multiple of the mean square wobble of its strokes' ends.
+const HAND_TO_PLACEMENT: f64 = 8.0;
 /// Weight of an accepted proposal in the periods' fit (a hand-drawn stroke's is 1).
 const SUGGESTED_WEIGHT: f64 = 0.05;
 
@@ -144,7 +162,9 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
         }
     }
     let (earlier, strokes) = strokes.split_at(skip);
-    let classification = classify_strokes(strokes, opts.path_tolerance, opts.width_tolerance, opts.color_tolerance)?;
+    let accepted: Vec<bool> = weight.iter().map(|&w| w < 1.0).collect();
+    let classification =
+        classify_drawing(strokes, opts.path_tolerance, opts.width_tolerance, opts.color_tolerance, &accepted)?;
     // The repetition is one of motifs: a copy of a motif of several strokes is one
     // element, proposed whole (an accepted copy is one whose strokes all were).
     let motifs = &classification.motifs;
@@ -161,15 +181,27 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
         .instances
         .iter()
         .enumerate()
-        .map(|(x, g)| if !whole(x) || g.iter().all(|&s| weight[s as usize] < 1.0) { SUGGESTED_WEIGHT } else { 1.0 })
+        .map(|(x, g)| {
+            // A copy of accepted strokes sits where the lattice put it and says nothing
+            // new about it; one finished by hand is placed by its hand-drawn strokes only.
+            let hand = g.iter().filter(|&&s| weight[s as usize] >= 1.0).count() as f64 / g.len() as f64;
+            if whole(x) {
+                hand.max(SUGGESTED_WEIGHT)
+            } else {
+                SUGGESTED_WEIGHT
+            }
+        })
         .collect();
     let Ok(mut spread) = Spread::new(&elems) else {
         return Ok(nothing("The strokes have no spacing to repeat."));
     };
     spread.spacing = spread.apart(&elems);
-    let Some(fit) = Fit::find(&elems, &weight, &parts, &spread) else {
+    let Some(mut fit) = Fit::find(&elems, &weight, &parts, &spread) else {
         return Ok(nothing("The drawing shows no repetition yet."));
     };
+    let prior = (HAND_TO_PLACEMENT * hand_scatter(strokes, &classification.classes, &accepted))
+        .max((MIN_SCATTER * spread.spacing).powi(2));
+    fit.certainty = fit.certainty(&elems, &weight, prior);
     let latest = motifs.instance_of()[strokes.len() - 1] as usize;
     if !whole(latest) {
         return Ok(nothing("The copy being drawn is not finished: the next copies are proposed once it is."));
@@ -202,7 +234,7 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
     for (m, cell, steps) in wanted {
         // Not so far ahead of the hand-drawn copies that the site is likely off by more
         // than the tolerance (fill is asked for explicitly and goes everywhere).
-        if !opts.fill && UNCERTAIN * fit.error_at(cell) > tol {
+        if !opts.fill && UNCERTAIN * fit.miss_at(m, cell) > tol {
             uncertain += 1;
             continue;
         }
@@ -219,7 +251,7 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
         // A whole drawn copy (not one still being drawn) when varying.
         let copies: Vec<usize> = motif.members.iter().copied().filter(|&x| whole(x)).collect();
         let pick = if opts.variation && !copies.is_empty() { copies[rng.below(copies.len())] } else { source };
-        let target = fit.site(m, cell) + (elems[source].pos - fit.site(m, fit.at(source)));
+        let target = fit.site(m, cell);
         if drawn_at(elems[source].class, target, extents[pick].hypot() * 2.0) {
             continue;
         }
@@ -261,18 +293,19 @@ struct Fit {
     cell: Vec<(usize, (i64, i64))>,
     /// Share of the strokes explained, less their residual.
     quality: f64,
-    /// How far off the lattice may be in cell `(u, w)`: see `Fit::error_at`.
+    /// How far off the lattice may be in a cell: see `Fit::error_at`.
     certainty: Certainty,
 }
 
-/// What the (weighted) drawn copies say about the lattice's error: their mean squared
-/// distance from their sites, their mean cell and the spread of their cells.
-#[derive(Clone, Copy, Debug, Default)]
+/// What the (weighted) drawn copies say about the lattice's error: the variance of a
+/// copy about its site, each motif position's weight and mean cell, and the pooled
+/// scatter of the cells about those means (`[uu, uw, ww]`).
+#[derive(Clone, Debug, Default)]
 struct Certainty {
     residual2: f64,
-    count: f64,
-    mean: (f64, f64),
-    spread: (f64, f64),
+    held: Vec<f64>,
+    mean: Vec<(f64, f64)>,
+    scatter: [f64; 3],
 }
 
 impl Fit {
@@ -427,8 +460,7 @@ impl Fit {
             return None;
         }
         let quality = (explained as f64 / total as f64) * (1.0 - residual / spread.spacing);
-        let certainty = fit.certainty(elems, weight);
-        Some(Fit { quality, certainty, ..fit })
+        Some(Fit { quality, ..fit })
     }
 
     /// Whether a motif position is drawn twice in one cell, leaves cells out inside its
@@ -501,29 +533,69 @@ impl Fit {
         false
     }
 
-    fn certainty(&self, elems: &[Element], weight: &[f64]) -> Certainty {
-        let count: f64 = weight.iter().sum();
-        let (mut mu, mut mw, mut r2) = (0.0, 0.0, 0.0);
+    /// The residual is the unbiased one (each motif position's site and each period take
+    /// a degree of freedom: two copies fit a row exactly and say nothing of its error),
+    /// with one prior copy off by `prior` (a mean square), so that a lattice seen in few
+    /// copies is not taken as exact.
+    fn certainty(&self, elems: &[Element], weight: &[f64], prior: f64) -> Certainty {
+        let positions = self.motif.len();
+        let mut held = vec![0.0; positions];
+        let mut mean = vec![(0.0, 0.0); positions];
+        let mut r2 = 0.0;
+        // Accepted copies sit where an earlier fit put them: they carry no evidence of
+        // its error, and their cells, far out, would make it look well anchored.
+        let weight: Vec<f64> = weight.iter().map(|&w| if w > SUGGESTED_WEIGHT { w } else { 0.0 }).collect();
         for (i, &(m, (u, w))) in self.cell.iter().enumerate() {
-            mu += weight[i] * u as f64;
-            mw += weight[i] * w as f64;
+            held[m] += weight[i];
+            mean[m].0 += weight[i] * u as f64;
+            mean[m].1 += weight[i] * w as f64;
             r2 += weight[i] * self.site(m, (u, w)).distance_squared(elems[i].pos);
         }
-        let mean = (mu / count, mw / count);
-        let spread = self.cell.iter().zip(weight).fold((0.0, 0.0), |s, (&(_, (u, w)), &wi)| {
-            (s.0 + wi * (u as f64 - mean.0).powi(2), s.1 + wi * (w as f64 - mean.1).powi(2))
-        });
-        Certainty { residual2: r2 / count, count, mean, spread }
+        for (m, h) in mean.iter_mut().zip(&held) {
+            *m = if *h > 0.0 { (m.0 / h, m.1 / h) } else { (0.0, 0.0) };
+        }
+        let mut scatter = [0.0; 3];
+        for (i, &(m, (u, w))) in self.cell.iter().enumerate() {
+            let (du, dw) = (u as f64 - mean[m].0, w as f64 - mean[m].1);
+            scatter[0] += weight[i] * du * du;
+            scatter[1] += weight[i] * du * dw;
+            scatter[2] += weight[i] * dw * dw;
+        }
+        let periods = if self.b.is_some() { 2.0 } else { 1.0 };
+        let free = (held.iter().map(|&h| (h - 1.0).max(0.0)).sum::<f64>() - periods).max(0.0);
+        Certainty { residual2: (r2 + prior) / (free + 1.0), held, mean, scatter }
     }
 
-    /// The standard error of the lattice's site in cell `(u, w)`: a period fitted to
-    /// copies that spread over `s` cells with residual `r` is off by about `r / sqrt(s)`,
-    /// and its error grows with each period away from the copies' mean cell.
-    fn error_at(&self, (u, w): (i64, i64)) -> f64 {
+    /// The standard error of motif position `m`'s site in cell `(u, w)`, as least
+    /// squares gives it: with `d` the cell's offset from the position's (weighted) mean
+    /// cell and `S` the cells' scatter, `r^2 (1 / held + d' S^-1 d)`. The periods are
+    /// correlated when the copies lie along a diagonal of the cells (the basis then
+    /// crosses the rows), which the full `S` takes in.
+    fn error_at(&self, m: usize, (u, w): (i64, i64)) -> f64 {
         let c = &self.certainty;
-        let along = |d: f64, s: f64| if s > 0.0 { d * d / s } else { 0.0 };
-        let k = 1.0 / c.count + along(u as f64 - c.mean.0, c.spread.0) + along(w as f64 - c.mean.1, c.spread.1);
-        (c.residual2 * k).sqrt()
+        let (du, dw) = (u as f64 - c.mean[m].0, w as f64 - c.mean[m].1);
+        let [suu, suw, sww] = c.scatter;
+        let det = suu * sww - suw * suw;
+        let far = if self.b.is_none() {
+            if suu > 0.0 {
+                du * du / suu
+            } else {
+                f64::INFINITY
+            }
+        } else if det > 1e-9 * (suu * sww).max(1e-300) {
+            (du * du * sww - 2.0 * du * dw * suw + dw * dw * suu) / det
+        } else {
+            f64::INFINITY
+        };
+        (c.residual2 * (1.0 / c.held[m].max(1e-9) + far)).sqrt()
+    }
+
+    /// The root-mean-square distance between a proposal for motif position `m` in cell
+    /// `(u, w)` and the copy the hand would draw there: the site's error, the drawn
+    /// copy's own scatter about its site and the scatter the proposal carries over from
+    /// the copy it varies.
+    fn miss_at(&self, m: usize, cell: (i64, i64)) -> f64 {
+        (self.error_at(m, cell).powi(2) + self.certainty.residual2).sqrt()
     }
 
     fn lattice(&self) -> Lattice {
@@ -547,7 +619,16 @@ impl Fit {
         opts: &SuggestOptions,
         max_cells: usize,
     ) -> Vec<(usize, (i64, i64), usize)> {
-        let inside = |m: usize, c: (i64, i64)| region.is_none_or(|r| r.contains(self.site(m, c)));
+        // Near the region's edge, a site off by its error may be outside: the copy the
+        // hand would draw there may not be on the canvas (fill goes to the edge).
+        let margin = |m: usize, c: (i64, i64)| if opts.fill { 0.0 } else { UNCERTAIN * self.error_at(m, c) / SQRT_2 };
+        let inside = |m: usize, c: (i64, i64)| {
+            region.is_none_or(|r| {
+                let p = self.site(m, c);
+                let d = margin(m, c);
+                r.contains(p) && p.x - r.x0 >= d && r.x1 - p.x >= d && p.y - r.y0 >= d && r.y1 - p.y >= d
+            })
+        };
         let mut drawn = self.cell.clone();
         drawn.sort_unstable();
         let mut occupied: Vec<(i64, i64)> = self.cell.iter().map(|c| c.1).collect();
@@ -623,6 +704,39 @@ impl Fit {
     }
 }
 
+/// How far a hand's copy strays from where it means to put it, as the drawing shows it
+/// before its repetition does: the mean square difference, between consecutive
+/// hand-drawn strokes of one class, of their ends' offsets from their reference
+/// points (either way round), halved. Exact copies give 0; a hand that wobbles its
+/// strokes' ends by `e` gives about `e^2`, and places its copies about as loosely.
+fn hand_scatter(strokes: &[Stroke], classes: &[u32], accepted: &[bool]) -> f64 {
+    let ends = |s: &Stroke| {
+        let r = s.reference_point().to_vec2();
+        let p = |q: &[f64; 2]| Vec2::new(q[0], q[1]) - r;
+        (s.points.first().map_or(Vec2::ZERO, p), s.points.last().map_or(Vec2::ZERO, p))
+    };
+    let mut last: Vec<Option<usize>> = vec![None; classes.iter().map(|&c| c as usize + 1).max().unwrap_or(0)];
+    let (mut sum, mut count) = (0.0, 0usize);
+    for (i, &c) in classes.iter().enumerate() {
+        if accepted[i] {
+            continue;
+        }
+        if let Some(j) = last[c as usize] {
+            let ((a0, a1), (b0, b1)) = (ends(&strokes[i]), ends(&strokes[j]));
+            let same = (a0 - b0).hypot2() + (a1 - b1).hypot2();
+            let reversed = (a0 - b1).hypot2() + (a1 - b0).hypot2();
+            sum += same.min(reversed) / 4.0;
+            count += 1;
+        }
+        last[c as usize] = Some(i);
+    }
+    if count == 0 {
+        0.0
+    } else {
+        sum / count as f64
+    }
+}
+
 /// The periods that best explain the strokes' positions given their cells: with `d`
 /// a stroke's offset from its motif position's (weighted) mean and `(du, dw)` its
 /// cell's, the weighted least squares solution of `d = du a + dw b`.
@@ -693,7 +807,7 @@ const SHEAR_SNAP: f64 = 0.04;
 /// and a few copies leave the offset uncertain by a few percent, which grows row by row.
 fn shear(a: Vec2, b: Vec2) -> Vec2 {
     let t = b.dot(a) / a.hypot2();
-    let nearest = [1.0, 2.0, 3.0, 4.0]
+    let nearest = [1.0, 2.0]
         .iter()
         .map(|&q| (t * q).round() / q)
         .min_by(|x, y| (x - t).abs().total_cmp(&(y - t).abs()))

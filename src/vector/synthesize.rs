@@ -108,6 +108,19 @@ pub fn classify_strokes(
     width: Option<f64>,
     color: Option<f64>,
 ) -> Result<Classification> {
+    classify_drawing(strokes, path, width, color, &[])
+}
+
+/// `classify_strokes` on a drawing in which the strokes marked in `accepted` are
+/// accepted suggestions: exact translates of drawn copies, which say nothing of whether
+/// the hand repeats its strokes exactly (see `motif::group`).
+pub(crate) fn classify_drawing(
+    strokes: &[Stroke],
+    path: Option<f64>,
+    width: Option<f64>,
+    color: Option<f64>,
+    accepted: &[bool],
+) -> Result<Classification> {
     check_strokes(strokes)?;
     for (name, v) in [("path", path), ("width", width), ("colour", color)] {
         if v.is_some_and(|v| !v.is_finite() || v < 0.0) {
@@ -127,7 +140,7 @@ pub fn classify_strokes(
             strokes.iter().zip(classes).map(|(s, &class)| Element { pos: s.reference_point(), class }).collect();
         find_periods(&elems).ok().flatten().is_some()
     };
-    let grouping = motif::group(strokes, &classes, tolerances, path.is_some(), periodic);
+    let grouping = motif::group(strokes, &classes, tolerances, path.is_some(), accepted, periodic);
     let classes = grouping.classes.unwrap_or(classes);
     let count = classes.iter().max().map_or(0, |m| m + 1);
     let motifs = grouping.motifs;

@@ -51,8 +51,9 @@ pub struct Grouping {
 /// Reads `strokes` (with the paper's `classes` and tolerances) as motif instances.
 /// `periodic` says whether the strokes, one by one under some classes, are periodic.
 /// - An exact repeat (most strokes have exact copies, and it is periodic with its copies
-///   as classes, as an SVG tile repeated is): strokes stay their own instances, of their paper classes, and their
-///   copies are kept for variation.
+///   as classes, as an SVG tile repeated is): strokes stay their own instances, of their
+///   paper classes, and their copies are kept for variation. Strokes marked `accepted`
+///   (suggestions accepted, exact translates of drawn ones) are left out of "most".
 /// - Strokes drawn on one another in compact, repeated copies: motif instances, classes
 ///   by the motifs' evidence (even when the strokes are periodic one by one: a copy's
 ///   parts then keep the relation the hand gave them, a cross's bars meet as drawn).
@@ -62,16 +63,19 @@ pub fn group(
     classes: &[u32],
     tol: super::classify::Tolerances,
     explicit_path: bool,
+    accepted: &[bool],
     periodic: impl Fn(&[u32]) -> bool,
 ) -> Grouping {
     let copies = super::classify::copies(strokes);
     let mut count = vec![0usize; strokes.len()];
     copies.iter().for_each(|&g| count[g as usize] += 1);
-    let copied = copies.iter().filter(|&&g| count[g as usize] >= 2).count();
+    let hand = |i: usize| !accepted.get(i).copied().unwrap_or(false);
+    let copied = (0..strokes.len()).filter(|&i| hand(i) && count[copies[i] as usize] >= 2).count();
+    let drawn = (0..strokes.len()).filter(|&i| hand(i)).count();
     // Periodic with the copies as classes: a drawing and its accepted suggestions (exact
     // copies of drawn strokes among the hand's own) is not, since the hand's strokes have
     // no copies one period on.
-    if 2 * copied >= strokes.len() && periodic(&copies) && periodic(classes) {
+    if 2 * copied >= drawn && periodic(&copies) && periodic(classes) {
         let motifs = Motifs { copies: Some(copies), ..Motifs::single(strokes, classes) };
         return Grouping { motifs, classes: None };
     }
