@@ -7,8 +7,13 @@
 //! outline). The strokes are joined in order of increasing gap (a minimum spanning
 //! forest, Kruskal) and the joins are cut at the largest ratio gap between consecutive
 //! join lengths, when it is clear: parts of a motif touch or nearly touch, copies stand
-//! apart. A drawing with no clear gap (a grid of single strokes, hatching, a mesh whose
-//! pieces all touch) has no multi-stroke instances, and its strokes stay their own.
+//! apart. Copies that touch their neighbours (crosses whose arms meet) touch them where
+//! a part meets the same part of the next copy: when no cut groups, joins between
+//! strokes of one class are left out and the cut is sought again. A drawing with no
+//! clear gap (a grid of single strokes, hatching, a mesh whose pieces all touch) has no
+//! multi-stroke instances, and its strokes stay their own. (Houses whose eaves come
+//! within a stroke's width of the next house's walls have no gap left either: they
+//! stay their strokes.)
 
 use super::super::classify::typical_size;
 use super::super::spatial::Grid;
@@ -29,10 +34,10 @@ const MAX_PAIRS_PER_STROKE: usize = 64;
 /// Samples per stroke for the gap (the gap is then exact to about a sixtieth of its length).
 const SAMPLES: usize = 32;
 
-/// Groups `strokes` into motif instances: each instance's strokes in drawing order,
-/// instances in the order of their first stroke. `None` when no clear grouping exists
-/// (every stroke is then its own instance).
-pub fn instances(strokes: &[Stroke]) -> Option<Vec<Vec<u32>>> {
+/// Groups `strokes` (of the paper's `classes`) into motif instances: each instance's
+/// strokes in drawing order, instances in the order of their first stroke. `None` when
+/// no clear grouping exists (every stroke is then its own instance).
+pub fn instances(strokes: &[Stroke], classes: &[u32]) -> Option<Vec<Vec<u32>>> {
     let n = strokes.len();
     if n < 4 {
         return None;
@@ -76,9 +81,23 @@ pub fn instances(strokes: &[Stroke]) -> Option<Vec<Vec<u32>>> {
         }
     }
     edges.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)).then(a.2.cmp(&b.2)));
+    let cut = |edges: &[(f64, u32, u32)]| best_cut(n, edges, &boxes, reach, FLOOR * size);
+    // Copies that touch their neighbours (eaves that meet, arms that join) touch them
+    // where a part meets the same part of the next copy: without joins between strokes
+    // of one class, the copies come apart again.
+    cut(&edges).or_else(|| {
+        let apart: Vec<(f64, u32, u32)> =
+            edges.iter().copied().filter(|&(_, i, j)| classes[i as usize] != classes[j as usize]).collect();
+        (apart.len() < edges.len()).then(|| cut(&apart)).flatten()
+    })
+}
+
+/// The grouping the minimum spanning forest of `edges` (sorted by gap) gives at its
+/// best cut, if any.
+fn best_cut(n: usize, edges: &[(f64, u32, u32)], boxes: &[Rect], reach: f64, floor: f64) -> Option<Vec<Vec<u32>>> {
     // Kruskal: the joins of the minimum spanning forest, in order.
     let mut sets = Sets::new(n);
-    let joins: Vec<(f64, u32, u32)> = edges.into_iter().filter(|&(_, i, j)| sets.union(i, j)).collect();
+    let joins: Vec<(f64, u32, u32)> = edges.iter().copied().filter(|&(_, i, j)| sets.union(i, j)).collect();
     let lengths: Vec<f64> = joins.iter().map(|j| j.0).collect();
     // The clearest cut that gives repeated, compact copies (a word's letters stand
     // closer than its lines: the cut between words makes lines, the one between
@@ -87,8 +106,8 @@ pub fn instances(strokes: &[Stroke]) -> Option<Vec<Vec<u32>>> {
     // several (a mask's eyes join its outline only at the cut between copies), then the
     // clearest.
     let mut best: Option<(usize, Vec<Vec<u32>>)> = None;
-    for cut in cuts(&lengths, reach, FLOOR * size) {
-        if let Some(g) = grouped(n, &joins, cut, &boxes) {
+    for cut in cuts(&lengths, reach, floor) {
+        if let Some(g) = grouped(n, &joins, cut, boxes) {
             let held = g.iter().filter(|i| i.len() >= 2).map(Vec::len).sum::<usize>();
             if best.as_ref().is_none_or(|b| held > b.0) {
                 best = Some((held, g));
@@ -313,10 +332,28 @@ mod tests {
                 dashes.push(seg(x, y, 15.0, 0.0));
             }
         }
-        let got = instances(&crosses).expect("crosses group");
+        let bars: Vec<u32> = (0..crosses.len() as u32).map(|i| i % 2).collect();
+        let got = instances(&crosses, &bars).expect("crosses group");
         assert_eq!(got.len(), 9);
         assert!(got.iter().all(|g| g.len() == 2 && g[1] == g[0] + 1), "{got:?}");
-        assert!(instances(&dashes).is_none());
+        assert!(instances(&dashes, &vec![0; dashes.len()]).is_none());
+    }
+
+    #[test]
+    fn crosses_whose_arms_meet_their_neighbours_still_group() {
+        // Arms of 35 on a 70 lattice: each bar meets the same bar of the next cross.
+        let mut crosses = Vec::new();
+        for j in 0..3 {
+            for i in 0..3 {
+                let (x, y) = (70.0 * i as f64, 70.0 * j as f64 + 0.3 * i as f64);
+                crosses.push(seg(x, y, 35.0, 0.2));
+                crosses.push(seg(x + 0.3, y, 0.2, 35.0));
+            }
+        }
+        let bars: Vec<u32> = (0..crosses.len() as u32).map(|i| i % 2).collect();
+        let got = instances(&crosses, &bars).expect("crosses group");
+        assert_eq!(got.len(), 9, "{got:?}");
+        assert!(got.iter().all(|g| g.len() == 2 && g[1] == g[0] + 1), "{got:?}");
     }
 
     #[test]
@@ -328,7 +365,7 @@ mod tests {
                 mesh.push(Stroke::new(vec![[x, y], [x + 20.0, y], [x, y + 20.0]], 1.0, Some(Rgb([0, 0, 0]))));
             }
         }
-        assert!(instances(&mesh).is_none());
+        assert!(instances(&mesh, &vec![0; mesh.len()]).is_none());
     }
 
     #[test]

@@ -79,7 +79,7 @@ pub fn group(
         let motifs = Motifs { copies: Some(copies), ..Motifs::single(strokes, classes) };
         return Grouping { motifs, classes: None };
     }
-    let Some(groups) = contact::instances(strokes) else {
+    let Some(groups) = contact::instances(strokes, classes) else {
         return Grouping { motifs: Motifs::single(strokes, classes), classes: None };
     };
     let k = kinds::kinds(strokes, &groups, tol, explicit_path);
