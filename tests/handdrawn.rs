@@ -151,3 +151,49 @@ fn a_drawing_finished_with_accepted_proposals_grows_as_the_hand_drawn_one() {
         assert!(g.median_residual <= 0.05 && g.p95_residual <= 0.1, "{name} on {lattice}: {g:?}");
     }
 }
+
+#[test]
+fn motifs_drawn_against_their_neighbours_grow_whole() {
+    // Plus signs whose arms meet the next plus, and houses whose eaves meet the next
+    // house's: no gap separates the copies, the repetition does.
+    use patternsynth::vector::handdrawn::{Motif, Part};
+    let part = |pts: &[(f64, f64)], color: [u8; 3]| Part {
+        path: pts.iter().map(|&(x, y)| Point::new(x, y)).collect(),
+        closed: false,
+        width: 2.5,
+        color,
+    };
+    let ink = [30, 30, 30];
+    let touching = [
+        Motif {
+            name: "plus-touching",
+            parts: vec![
+                part(&[(-0.5, 0.0), (0.5, 0.0)], ink),
+                part(&[(0.0, -0.5), (0.0, 0.5)], ink),
+                part(&[(0.15, 0.15), (0.25, 0.15), (0.25, 0.25), (0.15, 0.25), (0.15, 0.15)], [200, 40, 40]),
+            ],
+        },
+        Motif {
+            name: "house-touching",
+            parts: vec![
+                part(&[(-0.3, 0.0), (-0.3, 0.3), (0.3, 0.3), (0.3, 0.0)], ink),
+                part(&[(-0.5, 0.02), (0.0, -0.3), (0.5, 0.02)], [170, 50, 40]),
+                part(&[(-0.06, 0.3), (-0.06, 0.12), (0.06, 0.12), (0.06, 0.3)], [90, 60, 30]),
+                part(&[(0.16, -0.14), (0.16, -0.28), (0.24, -0.28), (0.24, -0.09)], ink),
+            ],
+        },
+    ];
+    let (_, a, b) = lattices().into_iter().find(|l| l.0 == "square").unwrap();
+    let mut failures = Vec::new();
+    for motif in &touching {
+        for wobble in [0.01, 0.03] {
+            let ex = draw(motif, (a, b), (3, 3), SPACING, wobble, 41);
+            let (r, classes) = grown(&ex, a, b, 1);
+            println!("{} {:.0}%: {r:?} classes {classes}", motif.name, wobble * 100.0);
+            if r.coverage < 0.99 || r.stray > 0 || r.stacked > 0 || r.p95_residual > 0.1 {
+                failures.push(format!("{} {wobble}: {r:?}", motif.name));
+            }
+        }
+    }
+    assert!(failures.is_empty(), "{failures:#?}");
+}

@@ -15,6 +15,7 @@
 //! positions are left as drawn.
 
 use super::element::Element;
+use super::period::Periods;
 use super::spatial::Grid;
 use kurbo::{Point, Vec2};
 
@@ -26,6 +27,24 @@ pub struct LatticeFit {
     pub snapped: Vec<Point>,
     /// Motif position of each element (its component under the periods).
     pub component: Vec<u32>,
+    /// Each element's cell in its component (`None` for one no period reached).
+    pub cell: Vec<Option<(i32, i32)>>,
+}
+
+impl LatticeFit {
+    /// The fit of `elems` as periods (one motif position per component, at its centre),
+    /// when it is a lattice and every element is reached.
+    pub fn periods(&self, elems: &[Element]) -> Option<Periods> {
+        let b = self.b?;
+        let cell: Vec<(i32, i32)> = self.cell.iter().copied().collect::<Option<_>>()?;
+        let positions = self.component.iter().map(|&c| c as usize + 1).max().unwrap_or(0);
+        let mut motifs = vec![(0, Point::ZERO); positions];
+        for (i, &c) in self.component.iter().enumerate() {
+            let (u, w) = cell[i];
+            motifs[c as usize] = (elems[i].class, self.snapped[i] - self.a * u as f64 - b * w as f64);
+        }
+        Some(Periods { a: self.a, b, motif: self.component.clone(), cell, motifs })
+    }
 }
 
 /// A period must map at least this fraction of the elements onto same-class elements.
@@ -163,5 +182,6 @@ pub fn fit(elems: &[Element], grid: &Grid, pair_radius: &[f64], spacing: f64, re
         return None;
     }
     let component = coord.iter().map(|c| c.map_or(0, |c| c.0 as u32)).collect();
-    Some(LatticeFit { a, b, snapped, component })
+    let cell = coord.iter().map(|c| c.map(|(_, u, w)| (u as i32, w as i32))).collect();
+    Some(LatticeFit { a, b, snapped, component, cell })
 }

@@ -2,7 +2,7 @@
 //! write SVG. This is the entry point the wasm layer and the tests call.
 
 use super::classify::{classify, propose_tolerances, Tolerances};
-use super::grow::{find_periods, grow, Element, GrowOptions, Grown};
+use super::grow::{find_periods, fit_lattice, grow, Element, GrowOptions, Grown};
 use super::motif::{self, Motifs};
 use super::stroke::Stroke;
 use super::svg::to_svg;
@@ -135,12 +135,16 @@ pub(crate) fn classify_drawing(
     };
     let classes = classify(strokes, &tolerances);
     // Motifs of several strokes, unless the strokes repeat one by one (an exact tile).
-    let periodic = |classes: &[u32]| {
-        let elems: Vec<Element> =
-            strokes.iter().zip(classes).map(|(s, &class)| Element { pos: s.reference_point(), class }).collect();
-        find_periods(&elems).ok().flatten().is_some()
+    let elements = |classes: &[u32]| -> Vec<Element> {
+        strokes.iter().zip(classes).map(|(s, &class)| Element { pos: s.reference_point(), class }).collect()
     };
-    let grouping = motif::group(strokes, &classes, tolerances, path.is_some(), accepted, periodic);
+    // Exact periods (a tile repeated), and the lattice a hand's copies are drawn on.
+    let periods = |classes: &[u32]| find_periods(&elements(classes)).ok().flatten();
+    let lattice = |classes: &[u32]| {
+        let elems = elements(classes);
+        find_periods(&elems).ok().flatten().or_else(|| fit_lattice(&elems).ok().flatten()?.periods(&elems))
+    };
+    let grouping = motif::group(strokes, &classes, tolerances, path.is_some(), accepted, periods, lattice);
     let classes = grouping.classes.unwrap_or(classes);
     let count = classes.iter().max().map_or(0, |m| m + 1);
     let motifs = grouping.motifs;

@@ -36,8 +36,13 @@ const SAMPLES: usize = 32;
 
 /// Groups `strokes` (of the paper's `classes`) into motif instances: each instance's
 /// strokes in drawing order, instances in the order of their first stroke. `None` when
-/// no clear grouping exists (every stroke is then its own instance).
-pub fn instances(strokes: &[Stroke], classes: &[u32]) -> Option<Vec<Vec<u32>>> {
+/// no clear grouping exists (every stroke is then its own instance). `touching` reads
+/// copies that touch their neighbours, when no cut separates them.
+pub fn instances(
+    strokes: &[Stroke],
+    classes: &[u32],
+    touching: impl FnOnce() -> Option<Vec<Vec<u32>>>,
+) -> Option<Vec<Vec<u32>>> {
     let n = strokes.len();
     if n < 4 {
         return None;
@@ -82,12 +87,19 @@ pub fn instances(strokes: &[Stroke], classes: &[u32]) -> Option<Vec<Vec<u32>>> {
     }
     edges.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)).then(a.2.cmp(&b.2)));
     let cut = |edges: &[(f64, u32, u32)]| best_cut(n, edges, &boxes, reach, FLOOR * size);
-    // Copies that touch their neighbours (eaves that meet, arms that join) touch them
-    // where a part meets the same part of the next copy: without joins between strokes
-    // of one class, the copies come apart again.
-    cut(&edges).or_else(|| {
-        let apart: Vec<(f64, u32, u32)> =
-            edges.iter().copied().filter(|&(_, i, j)| classes[i as usize] != classes[j as usize]).collect();
+    // Copies that touch their neighbours (eaves that meet, arms that join): first as
+    // `touching` reads them (the lattice's cells), else they touch them where a part
+    // meets the same part of the next copy, and without joins between strokes of one
+    // class the copies come apart again.
+    cut(&edges).or_else(touching).or_else(|| {
+        // (One inside the other is a face and its eye, both loops: kept.)
+        let nested =
+            |i: usize, j: usize| inside(&strokes[i], &paths[i], &paths[j]) || inside(&strokes[j], &paths[j], &paths[i]);
+        let apart: Vec<(f64, u32, u32)> = edges
+            .iter()
+            .copied()
+            .filter(|&(_, i, j)| classes[i as usize] != classes[j as usize] || nested(i as usize, j as usize))
+            .collect();
         (apart.len() < edges.len()).then(|| cut(&apart)).flatten()
     })
 }
@@ -203,7 +215,7 @@ fn touches(a: Rect, b: Rect) -> bool {
 
 /// A stroke's path resampled to at most `SAMPLES` points (each subpath kept apart is not
 /// needed here: a gap is a least distance, and joining subpaths only adds segments).
-fn sampled(s: &Stroke) -> Vec<Point> {
+pub(super) fn sampled(s: &Stroke) -> Vec<Point> {
     let pts: Vec<Point> = s.points.iter().map(|&[x, y]| Point::new(x, y)).collect();
     if pts.len() <= SAMPLES {
         return pts;
@@ -218,7 +230,7 @@ fn sampled(s: &Stroke) -> Vec<Point> {
 
 /// The gap between two strokes: least distance between their paths less half their
 /// widths, zero when the paths cross or one lies inside the other's closed outline.
-fn gap(a: &Stroke, pa: &[Point], b: &Stroke, pb: &[Point]) -> f64 {
+pub(super) fn gap(a: &Stroke, pa: &[Point], b: &Stroke, pb: &[Point]) -> f64 {
     let pad = 0.5 * (a.width + b.width);
     if inside(a, pa, pb) || inside(b, pb, pa) {
         return 0.0;
@@ -247,8 +259,15 @@ fn gap(a: &Stroke, pa: &[Point], b: &Stroke, pb: &[Point]) -> f64 {
 }
 
 /// Whether `other`'s first point lies inside the closed (or filled) outline `path` of `s`.
+/// A loop drawn by hand is seldom closed exactly: an open stroke whose ends come within
+/// a tenth of its size of each other counts as closed (a face's eyes lie inside it).
 fn inside(s: &Stroke, path: &[Point], other: &[Point]) -> bool {
-    if !(s.closed || s.fill.is_some()) || path.len() < 3 || other.is_empty() {
+    if path.len() < 3 || other.is_empty() {
+        return false;
+    }
+    let ends = path[0].distance(path[path.len() - 1]);
+    let looped = ends <= 0.1 * s.bounds().size().to_vec2().hypot();
+    if !(s.closed || s.fill.is_some() || looped) {
         return false;
     }
     let p = other[0];
@@ -333,10 +352,10 @@ mod tests {
             }
         }
         let bars: Vec<u32> = (0..crosses.len() as u32).map(|i| i % 2).collect();
-        let got = instances(&crosses, &bars).expect("crosses group");
+        let got = instances(&crosses, &bars, || None).expect("crosses group");
         assert_eq!(got.len(), 9);
         assert!(got.iter().all(|g| g.len() == 2 && g[1] == g[0] + 1), "{got:?}");
-        assert!(instances(&dashes, &vec![0; dashes.len()]).is_none());
+        assert!(instances(&dashes, &vec![0; dashes.len()], || None).is_none());
     }
 
     #[test]
@@ -351,7 +370,7 @@ mod tests {
             }
         }
         let bars: Vec<u32> = (0..crosses.len() as u32).map(|i| i % 2).collect();
-        let got = instances(&crosses, &bars).expect("crosses group");
+        let got = instances(&crosses, &bars, || None).expect("crosses group");
         assert_eq!(got.len(), 9, "{got:?}");
         assert!(got.iter().all(|g| g.len() == 2 && g[1] == g[0] + 1), "{got:?}");
     }
@@ -365,7 +384,7 @@ mod tests {
                 mesh.push(Stroke::new(vec![[x, y], [x + 20.0, y], [x, y + 20.0]], 1.0, Some(Rgb([0, 0, 0]))));
             }
         }
-        assert!(instances(&mesh, &vec![0; mesh.len()]).is_none());
+        assert!(instances(&mesh, &vec![0; mesh.len()], || None).is_none());
     }
 
     #[test]

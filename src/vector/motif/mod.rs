@@ -16,10 +16,12 @@
 //! its strokes as elements: its periodic extension is exact as it is, and pieces cut at a
 //! tile's edge that abut in the repeat would otherwise join across copies.
 
+mod cells;
 mod contact;
 mod kinds;
 
 use super::element::{Element, Placed};
+use super::period::Periods;
 use super::stroke::Stroke;
 use crate::rng::Rng;
 use kurbo::{Point, Rect, Vec2};
@@ -49,7 +51,8 @@ pub struct Grouping {
 }
 
 /// Reads `strokes` (with the paper's `classes` and tolerances) as motif instances.
-/// `periodic` says whether the strokes, one by one under some classes, are periodic.
+/// `periods` gives the exact periods of the strokes one by one under some classes, and
+/// `lattice` the periods or the lattice they are drawn on (a hand's copies).
 /// - An exact repeat (most strokes have exact copies, and it is periodic with its copies
 ///   as classes, as an SVG tile repeated is): strokes stay their own instances, of their
 ///   paper classes, and their copies are kept for variation. Strokes marked `accepted`
@@ -64,7 +67,8 @@ pub fn group(
     tol: super::classify::Tolerances,
     explicit_path: bool,
     accepted: &[bool],
-    periodic: impl Fn(&[u32]) -> bool,
+    periods: impl Fn(&[u32]) -> Option<Periods>,
+    lattice: impl Fn(&[u32]) -> Option<Periods>,
 ) -> Grouping {
     let copies = super::classify::copies(strokes);
     let mut count = vec![0usize; strokes.len()];
@@ -75,11 +79,14 @@ pub fn group(
     // Periodic with the copies as classes: a drawing and its accepted suggestions (exact
     // copies of drawn strokes among the hand's own) is not, since the hand's strokes have
     // no copies one period on.
-    if 2 * copied >= drawn && periodic(&copies) && periodic(classes) {
+    if 2 * copied >= drawn && periods(&copies).is_some() && periods(classes).is_some() {
         let motifs = Motifs { copies: Some(copies), ..Motifs::single(strokes, classes) };
         return Grouping { motifs, classes: None };
     }
-    let Some(groups) = contact::instances(strokes, classes) else {
+    // Copies drawn against their neighbours have no gap to cut at: the repetition of the
+    // strokes one by one, if there is one, shows them.
+    let groups = contact::instances(strokes, classes, || lattice(classes).and_then(|p| cells::instances(strokes, &p)));
+    let Some(groups) = groups else {
         return Grouping { motifs: Motifs::single(strokes, classes), classes: None };
     };
     let k = kinds::kinds(strokes, &groups, tol, explicit_path);
