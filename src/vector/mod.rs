@@ -10,6 +10,7 @@ pub mod grow;
 #[cfg(feature = "test-support")]
 pub mod handdrawn;
 pub mod lattice;
+mod mesh;
 mod mosaic;
 pub mod motif;
 pub mod period;

@@ -3,6 +3,7 @@
 
 use super::classify::{classify, propose_tolerances, Tolerances};
 use super::grow::{find_periods, fit_lattice, grow, Element, GrowOptions, Grown};
+use super::mesh::Mesh;
 use super::motif::{self, Motifs};
 use super::stroke::Stroke;
 use super::svg::to_svg;
@@ -190,10 +191,21 @@ pub fn synthesize_strokes(
         seed: opts.seed,
         ..GrowOptions::default()
     };
-    let Grown { placed, stats, orbit } = grow(&elements, &grow_opts, &mut Throttle::with_range(progress, 0.02, 0.98))?;
     let area = kurbo::Rect::new(0.0, 0.0, opts.width, opts.height);
-    let (out, classes, sources) =
-        motifs.dress(strokes, &classification.classes, &placed, &orbit, opts.variation.then_some(opts.seed), area);
+    let mut throttle = Throttle::with_range(progress, 0.02, 0.98);
+    // A mesh (pieces that share their edges) is joined afresh, not placed piece by piece,
+    // unless it repeats exactly (a tile repeated extends exactly as it is).
+    let mesh = if motifs.copies.is_none() { Mesh::of(strokes) } else { None };
+    let (out, classes, sources, stats) = if let Some(mesh) = mesh {
+        let (out, sources, grown) = mesh.synthesize(strokes, area, &grow_opts, &mut throttle)?;
+        let classes = sources.iter().map(|&s| classification.classes[s as usize]).collect();
+        (out, classes, sources, grown.stats)
+    } else {
+        let Grown { placed, stats, orbit } = grow(&elements, &grow_opts, &mut throttle)?;
+        let (out, classes, sources) =
+            motifs.dress(strokes, &classification.classes, &placed, &orbit, opts.variation.then_some(opts.seed), area);
+        (out, classes, sources, stats)
+    };
     let svg = to_svg(&out, opts.width, opts.height);
     Throttle::new(progress).tick(1.0)?;
     Ok(StrokeResult {

@@ -1,0 +1,124 @@
+//! Tessellations (issue 23): an example whose pieces share their edges (a low-poly
+//! triangle mesh) grows to an output with the example's coverage (no gaps, no double
+//! cover) and its mix of paints, with the default options.
+
+use patternsynth::vector::{synthesize_strokes, Rgb, Stroke, StrokeOptions};
+use patternsynth::Silent;
+
+/// A square grid of `n x n` cells of side `s`, inner vertices jittered by up to a fifth
+/// of a cell, each cell cut into two triangles of random paint from three.
+fn mesh(n: usize, s: f64, seed: u64) -> Vec<Stroke> {
+    let mut state = seed;
+    let mut next = move || {
+        state = state.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let mut v = Vec::new();
+    for j in 0..=n {
+        for i in 0..=n {
+            let edge = i == 0 || j == 0 || i == n || j == n;
+            let jit = |r: f64| if edge { 0.0 } else { (r - 0.5) * 0.4 * s };
+            let (rx, ry) = (next(), next());
+            v.push([i as f64 * s + jit(rx), j as f64 * s + jit(ry)]);
+        }
+    }
+    let at = |i: usize, j: usize| v[j * (n + 1) + i];
+    let paints = [Rgb([200, 90, 60]), Rgb([60, 120, 180]), Rgb([230, 190, 80])];
+    let mut out = Vec::new();
+    for j in 0..n {
+        for i in 0..n {
+            for tri in [[at(i, j), at(i + 1, j), at(i + 1, j + 1)], [at(i, j), at(i + 1, j + 1), at(i, j + 1)]] {
+                let mut st = Stroke::new(tri.to_vec(), 0.0, None);
+                st.fill = Some(paints[(next() * 3.0) as usize]);
+                st.closed = true;
+                out.push(st);
+            }
+        }
+    }
+    out
+}
+
+/// Shares of sample points in the square `[x0, x1]^2` covered by no triangle and by two
+/// or more, and the share of each paint among the covered points.
+fn cover(strokes: &[Stroke], x0: f64, x1: f64, step: f64) -> (f64, f64, Vec<(Rgb, f64)>) {
+    let inside = |p: [f64; 2], t: &[[f64; 2]]| {
+        let d = |u: [f64; 2], v: [f64; 2], w: [f64; 2]| (v[0] - u[0]) * (w[1] - u[1]) - (v[1] - u[1]) * (w[0] - u[0]);
+        let (s1, s2, s3) = (d(t[0], t[1], p), d(t[1], t[2], p), d(t[2], t[0], p));
+        (s1 >= 0.0 && s2 >= 0.0 && s3 >= 0.0) || (s1 <= 0.0 && s2 <= 0.0 && s3 <= 0.0)
+    };
+    let (mut none, mut twice, mut all) = (0usize, 0usize, 0usize);
+    let mut paints: Vec<(Rgb, f64)> = Vec::new();
+    let mut y = x0 + step / 2.0;
+    while y < x1 {
+        let mut x = x0 + step / 2.0;
+        while x < x1 {
+            let hits: Vec<&Stroke> = strokes.iter().filter(|s| inside([x, y], &s.points)).collect();
+            all += 1;
+            none += hits.is_empty() as usize;
+            twice += (hits.len() > 1) as usize;
+            if let Some(fill) = hits.first().and_then(|s| s.fill) {
+                match paints.iter_mut().find(|p| p.0 == fill) {
+                    Some(p) => p.1 += 1.0,
+                    None => paints.push((fill, 1.0)),
+                }
+            }
+            x += step;
+        }
+        y += step;
+    }
+    let covered = (all - none) as f64;
+    paints.iter_mut().for_each(|p| p.1 /= covered);
+    (none as f64 / all as f64, twice as f64 / all as f64, paints)
+}
+
+#[test]
+fn a_triangle_mesh_grows_covered_once_with_its_mix_of_paints() {
+    let example = mesh(8, 30.0, 3);
+    let (gap0, twice0, mix0) = cover(&example, 0.0, 240.0, 3.0);
+    assert!(gap0 < 0.005 && twice0 < 0.01, "the example itself: {gap0} {twice0}");
+    for seed in [1, 2] {
+        let opts = StrokeOptions { width: 480.0, height: 480.0, seed, ..Default::default() };
+        let out = synthesize_strokes(&example, &opts, &mut Silent).unwrap();
+        let (gap, twice, mix) = cover(&out.strokes, 0.0, 480.0, 4.0);
+        assert!(gap < 0.01 && twice < 0.01, "seed {seed}: {gap} uncovered, {twice} twice");
+        for (paint, share) in &mix0 {
+            let got = mix.iter().find(|p| p.0 == *paint).map_or(0.0, |p| p.1);
+            assert!((got - share).abs() < 0.08, "seed {seed}: {paint:?} covers {got}, {share} in the example");
+        }
+        // Pieces the size of the example's: as many per area (centres inside), within a fifth.
+        let centred = |s: &&Stroke| {
+            let c = s.points.iter().fold([0.0, 0.0], |a, p| [a[0] + p[0] / 3.0, a[1] + p[1] / 3.0]);
+            (0.0..480.0).contains(&c[0]) && (0.0..480.0).contains(&c[1])
+        };
+        let inside = out.strokes.iter().filter(centred).count();
+        let ratio = (inside as f64 / (480.0 * 480.0)) / (example.len() as f64 / (240.0 * 240.0));
+        assert!((0.8..1.25).contains(&ratio), "seed {seed}: piece density {ratio} of the example's");
+    }
+}
+
+#[test]
+fn triangles_that_do_not_share_corners_are_placed_as_elements() {
+    // The same triangles pulled apart (each shrunk about its centre): no mesh, so the
+    // output holds copies of the example's own triangles, as any scatter's.
+    let apart: Vec<Stroke> = mesh(8, 30.0, 3)
+        .into_iter()
+        .map(|mut s| {
+            let c = s.points.iter().fold([0.0, 0.0], |a, p| [a[0] + p[0] / 3.0, a[1] + p[1] / 3.0]);
+            s.points.iter_mut().for_each(|p| *p = [c[0] + 0.7 * (p[0] - c[0]), c[1] + 0.7 * (p[1] - c[1])]);
+            s
+        })
+        .collect();
+    let out =
+        synthesize_strokes(&apart, &StrokeOptions { width: 300.0, height: 300.0, ..Default::default() }, &mut Silent)
+            .unwrap();
+    let shape = |s: &Stroke| {
+        let p = &s.points;
+        let mut e: Vec<i64> = (0..3)
+            .map(|k| (((p[k][0] - p[(k + 1) % 3][0]).hypot(p[k][1] - p[(k + 1) % 3][1])) * 1000.0).round() as i64)
+            .collect();
+        e.sort();
+        e
+    };
+    let shapes: Vec<Vec<i64>> = apart.iter().map(shape).collect();
+    assert!(out.strokes.iter().all(|s| shapes.contains(&shape(s))), "a triangle not of the example's");
+}
