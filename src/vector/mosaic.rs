@@ -112,7 +112,7 @@ pub(super) fn mosaic(
             let best = tries
                 .iter()
                 .map(|&w| {
-                    let count = window(reference, &torus, w, cell, &mut inside);
+                    let count = window(reference, &torus, w, cell, false, &mut inside);
                     let shortfall = (SPARSE * expected - count as f64).max(0.0);
                     (w, seam_agreement(reference, &torus, &placed, &grid, here, w) as f64 - 2.0 * shortfall)
                 })
@@ -120,7 +120,7 @@ pub(super) fn mosaic(
                 .0;
             taken.push(best);
             let shift = origin - best;
-            window(reference, &torus, best, cell, &mut inside);
+            window(reference, &torus, best, cell, true, &mut inside);
             for &(i, at) in &inside {
                 let e = &elems[i as usize];
                 let pos = at + shift;
@@ -163,9 +163,16 @@ impl Torus {
 }
 
 /// Fills `inside` with the example elements in the window of size `cell` at `w` on the
-/// torus, each with its position as the window sees it (in the grid's order per copy of
-/// the example the window reaches, which is fixed, so drops at seams are reproducible).
-fn window(reference: &Reference, torus: &Torus, w: Point, cell: Vec2, inside: &mut Vec<(u32, Point)>) -> usize {
+/// torus, each with its position as the window sees it, and counts them. `ordered`: in
+/// the order they are to be placed (fixed, so drops at seams are reproducible).
+fn window(
+    reference: &Reference,
+    torus: &Torus,
+    w: Point,
+    cell: Vec2,
+    ordered: bool,
+    inside: &mut Vec<(u32, Point)>,
+) -> usize {
     let rect = Rect::from_origin_size(w, (cell.x, cell.y));
     inside.clear();
     // The window reaches past the torus's copy at most once each way (it is smaller).
@@ -187,7 +194,7 @@ fn window(reference: &Reference, torus: &Torus, w: Point, cell: Vec2, inside: &m
     // Where the window wraps, elements of the example's far edge meet those of its near
     // edge, and of two too close the one placed first stays: in an order fixed by the
     // element but blind to its side, neither edge loses more.
-    if xs.len() + ys.len() > 2 {
+    if ordered && xs.len() + ys.len() > 2 {
         inside.sort_by_key(|&(j, _)| (j as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15));
     }
     inside.len()
