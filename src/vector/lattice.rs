@@ -27,16 +27,17 @@ pub struct LatticeFit {
     pub snapped: Vec<Point>,
     /// Motif position of each element (its component under the periods).
     pub component: Vec<u32>,
-    /// Each element's cell in its component (`None` for one no period reached).
-    pub cell: Vec<Option<(i32, i32)>>,
+    /// Each element's cell in its component (an element no period reaches is a
+    /// component of its own, in its cell (0, 0)).
+    pub cell: Vec<(i32, i32)>,
 }
 
 impl LatticeFit {
     /// The fit of `elems` as periods (one motif position per component, at its centre),
-    /// when it is a lattice and every element is reached.
+    /// when it is a lattice (not a row).
     pub fn periods(&self, elems: &[Element]) -> Option<Periods> {
         let b = self.b?;
-        let cell: Vec<(i32, i32)> = self.cell.iter().copied().collect::<Option<_>>()?;
+        let cell = self.cell.clone();
         let positions = self.component.iter().map(|&c| c as usize + 1).max().unwrap_or(0);
         let mut motifs = vec![(0, Point::ZERO); positions];
         for (i, &c) in self.component.iter().enumerate() {
@@ -182,6 +183,6 @@ pub fn fit(elems: &[Element], grid: &Grid, pair_radius: &[f64], spacing: f64, re
         return None;
     }
     let component = coord.iter().map(|c| c.map_or(0, |c| c.0 as u32)).collect();
-    let cell = coord.iter().map(|c| c.map(|(_, u, w)| (u as i32, w as i32))).collect();
+    let cell = coord.iter().map(|c| c.map_or((0, 0), |(_, u, w)| (u as i32, w as i32))).collect();
     Some(LatticeFit { a, b, snapped, component, cell })
 }

@@ -21,12 +21,21 @@ use crate::progress::Throttle;
 use crate::rng::Rng;
 use kurbo::{Point, Rect, Vec2};
 
-/// Share of the pieces that must be triangles, and of their corners that must be
-/// shared with another piece, for the example to be read as a mesh.
+/// Share of the pieces that must be triangles, and of their edges that must be shared
+/// with exactly one other piece, for the example to be read as a mesh (an 8 x 8 grid of
+/// cells cut in two shares 85% of its edges; triangles that only meet at corners, none).
 const TRIANGLES: f64 = 0.9;
-const SHARED: f64 = 0.8;
+const SHARED: f64 = 0.6;
 /// Random example triangles tried per new one.
 const TRIES: usize = 12;
+
+/// A mesh joined afresh: its triangles, the example stroke each copies, and how the
+/// vertices grew.
+pub struct Joined {
+    pub strokes: Vec<Stroke>,
+    pub sources: Vec<u32>,
+    pub grown: Grown,
+}
 
 /// A triangle mesh read from an example: its vertices, each piece's corners and the
 /// pieces that share an edge with each.
@@ -39,7 +48,8 @@ pub struct Mesh {
 
 impl Mesh {
     /// The mesh `strokes` form, if they are one: at least eight filled pieces, nearly
-    /// all triangles, whose corners nearly all meet another piece's (to a thousandth of
+    /// all triangles (the few others, a frame or a stray, are left out of the output),
+    /// most of whose edges border another piece's (corners meeting to a thousandth of
     /// the typical edge).
     pub fn of(strokes: &[Stroke]) -> Option<Mesh> {
         let triangle = |s: &Stroke| {
@@ -64,7 +74,13 @@ impl Mesh {
             })
             .collect();
         crate::order::floats(&mut edges);
-        let eps = 1e-3 * edges[edges.len() / 2].max(1e-12);
+        let eps = 1e-3 * edges[edges.len() / 2];
+        // Degenerate pieces (points, not triangles), or coordinates so far out that the
+        // rounding below would not hold them: no mesh.
+        let far = tris.iter().flatten().flatten().any(|p| p[0].abs().max(p[1].abs()) / eps > 1e12);
+        if !eps.is_finite() || eps <= 0.0 || far {
+            return None;
+        }
         // Corners merged by rounding to `eps` (and looked up in the neighbouring cells,
         // so two on either side of a rounding edge still meet).
         let mut index: std::collections::HashMap<(i64, i64), u32> = std::collections::HashMap::new();
@@ -82,50 +98,59 @@ impl Mesh {
             vertices.push(Point::new(p[0], p[1]));
             vertices.len() as u32 - 1
         };
-        let corners: Vec<Option<[u32; 3]>> =
-            tris.iter().map(|t| t.as_ref().map(|t| [vertex(t[0]), vertex(t[1]), vertex(t[2])])).collect();
-        let mut uses = vec![0u32; vertices.len()];
-        corners.iter().flatten().flatten().for_each(|&v| uses[v as usize] += 1);
-        let shared = corners.iter().flatten().flatten().filter(|&&v| uses[v as usize] >= 2).count();
-        if (shared as f64) < SHARED * 3.0 * count as f64 {
-            return None;
-        }
-        // Pieces sharing an edge.
+        let corners: Vec<Option<[u32; 3]>> = tris
+            .iter()
+            .map(|t| t.as_ref().map(|t| [vertex(t[0]), vertex(t[1]), vertex(t[2])]))
+            // A piece whose corners merged is a sliver: no triangle of the mesh.
+            .map(|c| c.filter(|c| c[0] != c[1] && c[1] != c[2] && c[0] != c[2]))
+            .collect();
+        // Pieces sharing an edge: a mesh's edges each border two pieces (one at its
+        // rim). Pieces stacked on one another share an edge among more: not a mesh.
         let mut by_edge: std::collections::HashMap<(u32, u32), Vec<u32>> = std::collections::HashMap::new();
         for (i, c) in corners.iter().enumerate() {
             if let Some(c) = c {
                 for k in 0..3 {
                     let (a, b) = (c[k], c[(k + 1) % 3]);
-                    by_edge.entry((a.min(b), a.max(b))).or_default().push(i as u32);
+                    let faces = by_edge.entry((a.min(b), a.max(b))).or_default();
+                    if faces.len() >= 2 {
+                        return None;
+                    }
+                    faces.push(i as u32);
                 }
             }
         }
+        let shared = by_edge.values().filter(|f| f.len() == 2).count();
+        if (shared as f64) < SHARED * by_edge.len() as f64 {
+            return None;
+        }
         let mut neighbours = vec![Vec::new(); strokes.len()];
-        for faces in by_edge.values() {
-            for &f in faces {
-                neighbours[f as usize].extend(faces.iter().copied().filter(|&g| g != f));
-            }
+        for faces in by_edge.values().filter(|f| f.len() == 2) {
+            neighbours[faces[0] as usize].push(faces[1]);
+            neighbours[faces[1] as usize].push(faces[0]);
         }
         Some(Mesh { vertices, corners, neighbours })
     }
 
     /// A new mesh over `area`: its triangles as strokes painted from the example's, with
     /// the example stroke each copies. `opts` carries growth's options for the vertices.
+    /// `None` when the grown vertices make no triangle (they all lie on a line).
     pub fn synthesize(
         &self,
         strokes: &[Stroke],
         area: Rect,
         opts: &GrowOptions,
         progress: &mut Throttle,
-    ) -> Result<(Vec<Stroke>, Vec<u32>, Grown)> {
+    ) -> Result<Option<Joined>> {
         // The vertices grown a typical edge beyond the area, so its edges are covered.
         let elems: Vec<Element> = self.vertices.iter().map(|&pos| Element { pos, class: 0 }).collect();
         let spacing = super::reference::Spread::new(&elems)?.spacing;
         let pad = 1.5 * spacing;
+        // About two triangles per vertex: the vertices take half the output's allowance.
         let grow_opts = GrowOptions {
             width: area.width() + 2.0 * pad,
             height: area.height() + 2.0 * pad,
             extents: Vec::new(),
+            max_elements: opts.max_elements / 2,
             ..opts.clone()
         };
         let grown = grow(&elems, &grow_opts, progress)?;
@@ -134,6 +159,9 @@ impl Mesh {
         let coords: Vec<delaunator::Point> = points.iter().map(|p| delaunator::Point { x: p.x, y: p.y }).collect();
         let t = delaunator::triangulate(&coords);
         let faces = t.triangles.len() / 3;
+        if faces == 0 {
+            return Ok(None);
+        }
         // New triangles sharing an edge: across each half-edge.
         let halfedges = &t.halfedges;
         let adjacent = |f: usize| {
@@ -182,6 +210,30 @@ impl Mesh {
             out.push(s);
             sources.push(best);
         }
-        Ok((out, sources, grown))
+        Ok(Some(Joined { strokes: out, sources, grown }))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::vector::color::Rgb;
+
+    fn filled(points: Vec<[f64; 2]>) -> Stroke {
+        let mut s = Stroke::new(points, 0.0, None);
+        s.fill = Some(Rgb([200, 90, 60]));
+        s.closed = true;
+        s
+    }
+
+    #[test]
+    fn stacked_or_degenerate_pieces_are_no_mesh() {
+        // 20,000 copies of one triangle share each edge among all of them: refused at
+        // the third, not listed pairwise.
+        let stacked: Vec<Stroke> = (0..20_000).map(|_| filled(vec![[0.0, 0.0], [10.0, 0.0], [0.0, 10.0]])).collect();
+        assert!(Mesh::of(&stacked).is_none());
+        // Triangles of three equal points, far out: no edge length to merge corners by.
+        let points: Vec<Stroke> = (0..10).map(|i| filled(vec![[1e4, 1e4 + i as f64]; 3])).collect();
+        assert!(Mesh::of(&points).is_none());
     }
 }

@@ -3,7 +3,7 @@
 //!
 //! The output is divided into cells about half the example across, and each cell takes
 //! the elements of an example window of its size. Windows wrap round the example (taken
-//! as a torus one typical gap wider than its elements' box), so every element is in as
+//! as a torus `GAP` spacings wider than its elements' box), so every element is in as
 //! many windows as any other: windows kept inside the box would hold its middle more
 //! often than its edges, and the output's mix of elements would drift from the
 //! example's. Of a few random windows (and the one that continues a neighbouring cell's

@@ -591,9 +591,8 @@ impl Fit {
     }
 
     /// The root-mean-square distance between a proposal for motif position `m` in cell
-    /// `(u, w)` and the copy the hand would draw there: the site's error, the drawn
-    /// copy's own scatter about its site and the scatter the proposal carries over from
-    /// the copy it varies.
+    /// `(u, w)` and the copy the hand would draw there: the site's error and the drawn
+    /// copy's own scatter about its site (the proposal itself sits on the site).
     fn miss_at(&self, m: usize, cell: (i64, i64)) -> f64 {
         (self.error_at(m, cell).powi(2) + self.certainty.residual2).sqrt()
     }

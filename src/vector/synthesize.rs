@@ -196,10 +196,13 @@ pub fn synthesize_strokes(
     // A mesh (pieces that share their edges) is joined afresh, not placed piece by piece,
     // unless it repeats exactly (a tile repeated extends exactly as it is).
     let mesh = if motifs.copies.is_none() { Mesh::of(strokes) } else { None };
-    let (out, classes, sources, stats) = if let Some(mesh) = mesh {
-        let (out, sources, grown) = mesh.synthesize(strokes, area, &grow_opts, &mut throttle)?;
-        let classes = sources.iter().map(|&s| classification.classes[s as usize]).collect();
-        (out, classes, sources, grown.stats)
+    let joined = match mesh {
+        Some(mesh) => mesh.synthesize(strokes, area, &grow_opts, &mut throttle)?,
+        None => None,
+    };
+    let (out, classes, sources, stats) = if let Some(j) = joined {
+        let classes = j.sources.iter().map(|&s| classification.classes[s as usize]).collect();
+        (j.strokes, classes, j.sources, j.grown.stats)
     } else {
         let Grown { placed, stats, orbit } = grow(&elements, &grow_opts, &mut throttle)?;
         let (out, classes, sources) =

@@ -19,6 +19,8 @@ use kurbo::{Point, Vec2};
 
 /// Parts of one copy are at most this share of the typical stroke size apart.
 const TOUCH: f64 = 0.25;
+/// The most strokes a copy may hold.
+const MAX_PARTS: usize = 64;
 
 /// Groups `strokes` into the copies the periodic reading `periods` makes (see the
 /// module comment), or `None`.
@@ -47,22 +49,33 @@ pub fn instances(strokes: &[Stroke], periods: &Periods) -> Option<Vec<Vec<u32>>>
     if origins.iter().zip(&shift).any(|(&o, &t)| (o + step(t)).distance(centre) > 0.5 * shorter) {
         return None;
     }
-    // Strokes by their cell under the gathered sites.
-    let mut keyed: Vec<((i32, i32), u32)> = (0..strokes.len())
-        .map(|i| {
-            let (m, (u, w)) = (periods.motif[i] as usize, periods.cell[i]);
-            ((u - shift[m].0, w - shift[m].1), i as u32)
-        })
-        .collect();
+    // Strokes by their cell under the gathered sites; a position with one stroke (one no
+    // period reached) is no part of the repetition and stays its own instance.
+    let mut members = vec![0usize; origins.len()];
+    periods.motif.iter().for_each(|&m| members[m as usize] += 1);
+    let mut keyed: Vec<((i32, i32), u32)> = Vec::new();
+    let mut out: Vec<Vec<u32>> = Vec::new();
+    for i in 0..strokes.len() {
+        let (m, (u, w)) = (periods.motif[i] as usize, periods.cell[i]);
+        if members[m] < 2 {
+            out.push(vec![i as u32]);
+        } else {
+            keyed.push(((u - shift[m].0, w - shift[m].1), i as u32));
+        }
+    }
     keyed.sort_unstable();
-    let mut out: Vec<Vec<u32>> = keyed.chunk_by(|p, q| p.0 == q.0).map(|g| g.iter().map(|x| x.1).collect()).collect();
+    out.extend(keyed.chunk_by(|p, q| p.0 == q.0).map(|g| g.iter().map(|x| x.1).collect::<Vec<u32>>()));
     out.sort_by_key(|g| g[0]);
     let multi: Vec<&Vec<u32>> = out.iter().filter(|g| g.len() >= 2).collect();
     let grouped: usize = multi.iter().map(|g| g.len()).sum();
     if multi.len() < 2 || 2 * grouped < strokes.len() {
         return None;
     }
-    // Most copies hold together by touch.
+    // Most copies hold together by touch (a copy of more strokes than this is no drawn
+    // motif, and measuring all its gaps would cost too much).
+    if multi.iter().any(|g| g.len() > MAX_PARTS) {
+        return None;
+    }
     let near = TOUCH * typical_size(strokes);
     let paths: Vec<Vec<kurbo::Point>> = strokes.iter().map(sampled).collect();
     let whole_copies = multi.iter().filter(|g| {
