@@ -154,8 +154,8 @@ fn a_drawing_finished_with_accepted_proposals_grows_as_the_hand_drawn_one() {
 
 #[test]
 fn motifs_drawn_against_their_neighbours_grow_whole() {
-    // Plus signs whose arms meet the next plus, and houses whose eaves meet the next
-    // house's: no gap separates the copies, the repetition does.
+    // Plus signs whose arms meet the next plus, houses whose eaves meet the next house's,
+    // faces whose outlines meet: no gap separates the copies, the repetition does.
     use patternsynth::vector::handdrawn::{Motif, Part};
     let part = |pts: &[(f64, f64)], color: [u8; 3]| Part {
         path: pts.iter().map(|&(x, y)| Point::new(x, y)).collect(),
@@ -183,6 +183,28 @@ fn motifs_drawn_against_their_neighbours_grow_whole() {
             ],
         },
     ];
+    // Faces cheek to cheek (each outline crosses the next one), eyes inside.
+    let ring = |cx: f64, cy: f64, r: f64, n: usize| Part {
+        path: (0..n)
+            .map(|k| {
+                let t = k as f64 * std::f64::consts::TAU / n as f64;
+                Point::new(cx + r * t.cos(), cy + r * t.sin())
+            })
+            .collect(),
+        closed: true,
+        width: 2.5,
+        color: ink,
+    };
+    let smiley = Motif {
+        name: "smiley-touching",
+        parts: vec![
+            ring(0.0, 0.0, 0.53, 48),
+            ring(-0.15, -0.12, 0.06, 12),
+            ring(0.15, -0.12, 0.06, 12),
+            part(&[(-0.2, 0.15), (-0.1, 0.22), (0.0, 0.24), (0.1, 0.22), (0.2, 0.15)], [170, 30, 30]),
+        ],
+    };
+    let touching: Vec<Motif> = touching.into_iter().chain(std::iter::once(smiley)).collect();
     let (_, a, b) = lattices().into_iter().find(|l| l.0 == "square").unwrap();
     let mut failures = Vec::new();
     for motif in &touching {
@@ -196,4 +218,16 @@ fn motifs_drawn_against_their_neighbours_grow_whole() {
         }
     }
     assert!(failures.is_empty(), "{failures:#?}");
+}
+
+#[test]
+fn overlapping_faces_are_nine_smileys_not_a_merged_pair() {
+    // Faces drawn so that neighbours overlap: a point of one face lies inside the next,
+    // which is no eye inside its face; the copies are the nine smileys.
+    let strokes: Vec<patternsynth::vector::Stroke> =
+        serde_json::from_str(include_str!("fixtures/handdrawn/smileys-touching-5pct.json")).unwrap();
+    let c = patternsynth::vector::classify_strokes(&strokes, None, None, None).unwrap();
+    assert_eq!(c.motifs.instances.len(), 9, "{:?}", c.motifs.instances);
+    assert!(c.motifs.instances.iter().all(|g| g.len() == 4), "{:?}", c.motifs.instances);
+    assert_eq!(c.kinds, 1);
 }

@@ -93,8 +93,13 @@ pub fn instances(
     // class the copies come apart again.
     cut(&edges).or_else(touching).or_else(|| {
         // (One inside the other is a face and its eye, both loops: kept.)
-        let nested =
-            |i: usize, j: usize| inside(&strokes[i], &paths[i], &paths[j]) || inside(&strokes[j], &paths[j], &paths[i]);
+        // (Within means wholly within: two faces drawn overlapping put a point of one
+        // inside the other.)
+        let within = |i: usize, j: usize| {
+            let (outer, inner) = (strokes[i].bounds(), strokes[j].bounds());
+            inside(&strokes[i], &paths[i], &paths[j]) && outer.union(inner) == outer
+        };
+        let nested = |i: usize, j: usize| within(i, j) || within(j, i);
         let apart: Vec<(f64, u32, u32)> = edges
             .iter()
             .copied()
