@@ -52,12 +52,11 @@ impl Mesh {
     /// most of whose edges border another piece's (corners meeting to a thousandth of
     /// the typical edge).
     pub fn of(strokes: &[Stroke]) -> Option<Mesh> {
+        // (Checked before anything is copied: this runs on every synthesis.)
         let triangle = |s: &Stroke| {
-            let mut p = s.points.clone();
-            if p.len() == 4 && p[0] == p[3] {
-                p.pop();
-            }
-            (s.fill.is_some() && s.breaks.is_empty() && p.len() == 3).then_some(p)
+            let p = &s.points;
+            let closed_twice = p.len() == 4 && p[0] == p[3];
+            (s.fill.is_some() && s.breaks.is_empty() && (p.len() == 3 || closed_twice)).then(|| p[..3].to_vec())
         };
         let tris: Vec<Option<Vec<[f64; 2]>>> = strokes.iter().map(triangle).collect();
         let count = tris.iter().flatten().count();

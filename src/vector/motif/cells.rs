@@ -14,7 +14,7 @@
 use super::super::classify::typical_size;
 use super::super::period::Periods;
 use super::super::stroke::Stroke;
-use super::contact::{gap, sampled};
+use super::contact::{gap, repeats, sampled, Sets};
 use kurbo::{Point, Vec2};
 
 /// Parts of one copy are at most this share of the typical stroke size apart.
@@ -66,11 +66,10 @@ pub fn instances(strokes: &[Stroke], periods: &Periods) -> Option<Vec<Vec<u32>>>
     keyed.sort_unstable();
     out.extend(keyed.chunk_by(|p, q| p.0 == q.0).map(|g| g.iter().map(|x| x.1).collect::<Vec<u32>>()));
     out.sort_by_key(|g| g[0]);
-    let multi: Vec<&Vec<u32>> = out.iter().filter(|g| g.len() >= 2).collect();
-    let grouped: usize = multi.iter().map(|g| g.len()).sum();
-    if multi.len() < 2 || 2 * grouped < strokes.len() {
+    if !repeats(&out, strokes.len()) {
         return None;
     }
+    let multi: Vec<&Vec<u32>> = out.iter().filter(|g| g.len() >= 2).collect();
     // Most copies hold together by touch (a copy of more strokes than this is no drawn
     // motif, and measuring all its gaps would cost too much).
     if multi.iter().any(|g| g.len() > MAX_PARTS) {
@@ -89,16 +88,10 @@ pub fn instances(strokes: &[Stroke], periods: &Periods) -> Option<Vec<Vec<u32>>>
 
 /// Whether the strokes `g` form one piece under `touch`.
 fn connected(g: &[u32], touch: impl Fn(u32, u32) -> bool) -> bool {
-    let mut reached = vec![false; g.len()];
-    reached[0] = true;
-    let mut stack = vec![0];
-    while let Some(k) = stack.pop() {
-        for l in 0..g.len() {
-            if !reached[l] && touch(g[k], g[l]) {
-                reached[l] = true;
-                stack.push(l);
-            }
-        }
-    }
-    reached.iter().all(|&r| r)
+    let mut sets = Sets::new(g.len());
+    let joins = (0..g.len())
+        .flat_map(|k| (k + 1..g.len()).map(move |l| (k, l)))
+        .filter(|&(k, l)| touch(g[k], g[l]) && sets.union(k as u32, l as u32))
+        .count();
+    joins + 1 == g.len()
 }

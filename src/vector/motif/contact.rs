@@ -92,9 +92,8 @@ pub fn instances(
     // meets the same part of the next copy, and without joins between strokes of one
     // class the copies come apart again.
     cut(&edges).or_else(touching).or_else(|| {
-        // (One inside the other is a face and its eye, both loops: kept.)
-        // (Within means wholly within: two faces drawn overlapping put a point of one
-        // inside the other.)
+        // (A loop wholly within another is an eye in its face: kept. Two faces drawn
+        // overlapping put a point of one inside the other without being nested.)
         let within = |i: usize, j: usize| {
             let (outer, inner) = (strokes[i].bounds(), strokes[j].bounds());
             inside(&strokes[i], &paths[i], &paths[j]) && outer.union(inner) == outer
@@ -157,10 +156,8 @@ fn grouped(n: usize, joins: &[(f64, u32, u32)], cut: f64, boxes: &[Rect]) -> Opt
         }
         out[index[root] as usize].push(i as u32);
     }
-    let multi: Vec<&Vec<u32>> = out.iter().filter(|g| g.len() >= 2).collect();
-    let grouped: usize = multi.iter().map(|g| g.len()).sum();
     let largest = out.iter().map(Vec::len).max().unwrap_or(0);
-    if multi.len() < 2 || 2 * grouped < n || 4 * largest > 3 * n {
+    if !repeats(&out, n) || 4 * largest > 3 * n {
         return None;
     }
     let bounds: Vec<Rect> =
@@ -210,6 +207,13 @@ fn cuts(joins: &[f64], reach: f64, floor: f64) -> Vec<f64> {
         .collect();
     gaps.sort_by(|a, b| b.0.total_cmp(&a.0));
     gaps.into_iter().map(|g| g.1).collect()
+}
+
+/// Whether `groups` of `n` strokes repeat: at least two hold several strokes, and those
+/// hold at least half of them.
+pub(super) fn repeats(groups: &[Vec<u32>], n: usize) -> bool {
+    let multi = groups.iter().filter(|g| g.len() >= 2);
+    multi.clone().count() >= 2 && 2 * multi.map(Vec::len).sum::<usize>() >= n
 }
 
 /// Whether two boxes touch along an edge (zero-area intersection of degenerate boxes:
@@ -308,10 +312,10 @@ fn point_segment(p: Point, a: Point, b: Point) -> f64 {
 }
 
 /// Union-find over stroke indices.
-struct Sets(Vec<u32>);
+pub(super) struct Sets(Vec<u32>);
 
 impl Sets {
-    fn new(n: usize) -> Sets {
+    pub(super) fn new(n: usize) -> Sets {
         Sets((0..n as u32).collect())
     }
 
@@ -325,7 +329,7 @@ impl Sets {
     }
 
     /// Joins the sets of `i` and `j`; false when they were one already.
-    fn union(&mut self, i: u32, j: u32) -> bool {
+    pub(super) fn union(&mut self, i: u32, j: u32) -> bool {
         let (a, b) = (self.find(i), self.find(j));
         if a == b {
             return false;
