@@ -13,6 +13,10 @@
 //! - the strokes lie near their lattice sites (median residual at most 20% of the
 //!   spacing).
 //!
+//! Of the lattices built on the first few periods that fit as a row, the one that
+//! leaves fewest cells out inside its lines and then needs fewest motif positions
+//! wins: the finest lattice the drawing bears out.
+//!
 //! Predictions then complete the cells already begun (the copy being drawn) and add the
 //! next `count` cells along the rhythm of the latest cells. Nothing is proposed on a
 //! first stroke, on irregular input, or when the latest stroke does not repeat anything
@@ -21,13 +25,15 @@
 //! placed at its site: the least-squares site is the best guess of where the hand
 //! would put it, and a drawn copy's own deviation would only add to the miss.
 //!
-//! A proposal is shown only where it is likely right: where its expected miss (the
-//! site's standard error, grown with each period away from the hand-drawn copies, and
-//! the hand's own scatter) fits in the matching tolerance twice. The scatter is
-//! estimated with its degrees of freedom (two copies fit a row exactly and say nothing
-//! of it) and a prior read from the hand's wobble; accepted copies, which sit where an
-//! earlier fit put them, count neither as evidence of the periods' error nor as whole
-//! copies of the hand (a copy finished by hand weighs by its hand-drawn share).
+//! A proposal is shown only where it is likely right: where the hand's copy falls
+//! within the matching tolerance of it with probability 0.98, given its expected miss
+//! (the site's standard error, grown with each period away from the hand-drawn copies,
+//! and the hand's own scatter) and how few copies that scatter is estimated from (an
+//! F quantile, not a Gaussian one). The scatter is estimated with its degrees of
+//! freedom (two copies fit a row exactly and say nothing of it) and a prior read from
+//! the hand's wobble; accepted copies, which sit where an earlier fit put them, count
+//! neither as evidence of the periods' error nor as whole copies of the hand (a copy
+//! finished by hand weighs by its hand-drawn share).
 
 use super::element::Element;
 use super::reference::Spread;
@@ -107,6 +113,8 @@ pub const MAX_FILL_POINTS: usize = 2_000_000;
 const RECENT: usize = 32;
 /// Candidate periods evaluated in full, shortest first.
 const MAX_TRIED: usize = 48;
+/// Periods that fit as a row on which a lattice is tried.
+const ROW_CHOICES: usize = 3;
 /// Share of the strokes that must sit at a motif position drawn at least twice.
 const EXPLAINED: f64 = 0.7;
 /// Matching tolerance, as a fraction of the spacing.
@@ -115,10 +123,12 @@ const TOLERANCE: f64 = 0.3;
 const MAX_RESIDUAL: f64 = 0.2;
 /// Confidence lost per period of distance from the nearest drawn copy.
 const FALLOFF: f64 = 0.85;
-/// A proposal is shown only where this many root-mean-square misses fit in the
-/// matching tolerance (a miss being the distance from the copy the hand would draw
-/// there: for a Gaussian miss, 2 of them leave about one proposal in 50 outside).
-const UNCERTAIN: f64 = 2.0;
+/// A proposal is shown only where the hand's copy is this likely to fall within the
+/// matching tolerance of it (see `Certainty::reach`).
+const SURE: f64 = 0.98;
+/// A site nearer the region's edge than this many of its standard errors (in either
+/// coordinate) may be outside it.
+const EDGE: f64 = 2.0;
 /// The least scatter of a copy about its site assumed before the drawing shows its
 /// own, as a fraction of the spacing (a hand's own is read from its strokes' shapes:
 /// see `hand_scatter`).
@@ -126,6 +136,9 @@ const MIN_SCATTER: f64 = 0.04;
 /// A hand places its copies more loosely than it shapes them: the prior scatter of a
 /// copy's place is this multiple of the mean square wobble of its strokes' ends.
 const HAND_TO_PLACEMENT: f64 = 8.0;
+/// The prior scatter counts as this many copies: it is read from every pair of a
+/// hand's strokes of one class, not guessed.
+const PRIOR_COPIES: f64 = 3.0;
 /// Weight of an accepted proposal in the periods' fit (a hand-drawn stroke's is 1).
 const SUGGESTED_WEIGHT: f64 = 0.05;
 
@@ -234,7 +247,7 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
     for (m, cell, steps) in wanted {
         // Not so far ahead of the hand-drawn copies that the site is likely off by more
         // than the tolerance (fill is asked for explicitly and goes everywhere).
-        if !opts.fill && UNCERTAIN * fit.miss_at(m, cell) > tol {
+        if !opts.fill && fit.certainty.reach() * fit.miss_at(m, cell) > tol {
             uncertain += 1;
             continue;
         }
@@ -303,35 +316,65 @@ struct Fit {
 #[derive(Clone, Debug, Default)]
 struct Certainty {
     residual2: f64,
+    /// The copies `residual2` is estimated from (the prior counting as `PRIOR_COPIES`).
+    copies: f64,
     held: Vec<f64>,
     mean: Vec<(f64, f64)>,
     scatter: [f64; 3],
 }
 
+impl Certainty {
+    /// How many root-mean-square misses (`Fit::miss_at`) reach the circle that holds
+    /// the hand's copy with probability `SURE`. The scatter is estimated from few
+    /// copies (each gives two coordinates), so the miss's square over its estimate's
+    /// is `2 F(2, 2n)`, whose quantile has a closed form: `F = n (p^(-1/n) - 1)` for
+    /// `p = 1 - SURE`. From `sqrt(-ln p)` = 1.98 with many copies it grows to 3.5 with
+    /// two and 7 with one: a row of three copies fits its periods almost exactly and
+    /// says little of how far the next ones will stray.
+    fn reach(&self) -> f64 {
+        let n = self.copies.max(1.0);
+        (n * ((1.0 - SURE).powf(-1.0 / n) - 1.0)).sqrt()
+    }
+}
+
 impl Fit {
     /// The best lattice of `elems`, or `None` when no candidate explains them.
+    ///
+    /// A lattice is tried on each of the first few periods that fit as a row, and the
+    /// one with the fewest motif positions wins (the finest lattice the drawing does not
+    /// contradict): a period that joins one part of a copy to another part of the next
+    /// (the diagonal from a pair's left stroke to the right stroke of the pair above)
+    /// also fits, but on a coarser lattice that needs twice the positions.
     fn find(elems: &[Element], weight: &[f64], parts: &[usize], spread: &Spread) -> Option<Fit> {
         let tol = TOLERANCE * spread.spacing;
         let candidates = candidates(elems, parts, spread, tol);
-        let rows = |check| {
-            candidates
-                .iter()
-                .take(MAX_TRIED)
-                .find_map(|&a| Fit::build(elems, weight, parts, spread, tol, a, None, check))
-        };
-        let row = rows(true);
+        let row = candidates
+            .iter()
+            .take(MAX_TRIED)
+            .find_map(|&a| Fit::build(elems, weight, parts, spread, tol, a, None, true));
         // A lattice filled in out of order leaves cells out of its rows, which no row
-        // explains: its first period is then the first that fits as a row with a few.
-        let a = match &row {
-            Some(r) => r.a,
-            None => rows(false)?.a,
-        };
-        for &b in candidates.iter().filter(|v| a.cross(**v).abs() > 0.3 * a.hypot() * v.hypot()).take(MAX_TRIED) {
-            if let Some(f) = Fit::build(elems, weight, parts, spread, tol, a, Some(b), true) {
-                return Some(f);
+        // explains: its first periods are then those that fit as a row with a few left out.
+        let firsts = candidates
+            .iter()
+            .take(MAX_TRIED)
+            .filter_map(|&a| Fit::build(elems, weight, parts, spread, tol, a, None, false))
+            .map(|r| r.a)
+            .take(ROW_CHOICES);
+        let mut best: Option<Fit> = None;
+        for a in firsts {
+            let lattice = candidates
+                .iter()
+                .filter(|v| a.cross(**v).abs() > 0.3 * a.hypot() * v.hypot())
+                .take(MAX_TRIED)
+                .find_map(|&b| Fit::build(elems, weight, parts, spread, tol, a, Some(b), true));
+            if let Some(f) = lattice {
+                let rank = |f: &Fit| (f.sparse(), f.motif.len(), -f.quality);
+                if best.as_ref().is_none_or(|b| rank(&f) < rank(b)) {
+                    best = Some(f);
+                }
             }
         }
-        row
+        best.or(row)
     }
 
     /// The lattice of periods `a` (and `b`) over `elems`, if it explains them (without
@@ -463,6 +506,41 @@ impl Fit {
         Some(Fit { quality, ..fit })
     }
 
+    /// The lines of cells along `(du, dw)` that motif position `m` is drawn on: per line,
+    /// the lowest and highest place on it, the last cell, and how many cells are drawn.
+    fn lines(&self, m: usize, (du, dw): (i64, i64)) -> Vec<(i64, i64, (i64, i64), usize)> {
+        let mut places: Vec<(i64, i64, (i64, i64))> = self.motif[m]
+            .members
+            .iter()
+            .map(|&i| {
+                let (u, w) = self.cell[i].1;
+                (u * dw - w * du, u * du + w * dw, (u, w))
+            })
+            .collect();
+        places.sort_unstable();
+        places
+            .chunk_by(|p, q| p.0 == q.0)
+            .map(|group| (group[0].1, group[group.len() - 1].1, group[group.len() - 1].2, group.len()))
+            .collect()
+    }
+
+    /// Whether a quarter or more of the cells inside the lines along a period are left
+    /// out: a lattice finer than the drawing (a pair's gap taken for a period) leaves a
+    /// third or more; one drawn in order but a copy or two, about none.
+    fn sparse(&self) -> bool {
+        let axes: &[(i64, i64)] = if self.b.is_some() { &[(1, 0), (0, 1)] } else { &[(1, 0)] };
+        axes.iter().any(|&axis| {
+            let (mut span, mut drawn) = (0, 0);
+            for m in 0..self.motif.len() {
+                for (low, high, _, count) in self.lines(m, axis) {
+                    span += high - low + 1;
+                    drawn += count as i64;
+                }
+            }
+            4 * drawn <= 3 * span
+        })
+    }
+
     /// Whether a motif position is drawn twice in one cell, leaves cells out inside its
     /// lines (in a row: any when `strict`, else a third of them: a sub-period leaves
     /// half or more), or stops short of a stroke of its class further along a line
@@ -487,22 +565,7 @@ impl Fit {
             for &(du, dw) in &axes {
                 let dir = lattice.step(du, dw);
                 let len = dir.hypot();
-                // Per line of cells along (du, dw): the lowest and highest place on it,
-                // the last cell, and how many cells are drawn.
-                let mut places: Vec<(i64, i64, (i64, i64))> = mp
-                    .members
-                    .iter()
-                    .map(|&i| {
-                        let (u, w) = self.cell[i].1;
-                        (u * dw - w * du, u * du + w * dw, (u, w))
-                    })
-                    .collect();
-                places.sort_unstable();
-                let mut lines: Vec<(i64, i64, (i64, i64), usize)> = Vec::new();
-                for group in places.chunk_by(|p, q| p.0 == q.0) {
-                    let (first, last) = (group[0], group[group.len() - 1]);
-                    lines.push((first.1, last.1, last.2, group.len()));
-                }
+                let lines = self.lines(m, (du, dw));
                 // A row with a cell left out inside it: the period skips copies. (Only
                 // for a row: in a lattice, copies are often filled in out of order.)
                 if self.b.is_none() {
@@ -535,8 +598,8 @@ impl Fit {
 
     /// The residual is the unbiased one (each motif position's site and each period take
     /// a degree of freedom: two copies fit a row exactly and say nothing of its error),
-    /// with one prior copy off by `prior` (a mean square), so that a lattice seen in few
-    /// copies is not taken as exact.
+    /// with `PRIOR_COPIES` prior copies off by `prior` (a mean square), so that a lattice
+    /// seen in few copies is not taken as exact.
     fn certainty(&self, elems: &[Element], weight: &[f64], prior: f64) -> Certainty {
         let positions = self.motif.len();
         let mut held = vec![0.0; positions];
@@ -563,7 +626,8 @@ impl Fit {
         }
         let periods = if self.b.is_some() { 2.0 } else { 1.0 };
         let free = (held.iter().map(|&h| (h - 1.0).max(0.0)).sum::<f64>() - periods).max(0.0);
-        Certainty { residual2: (r2 + prior) / (free + 1.0), held, mean, scatter }
+        let copies = free + PRIOR_COPIES;
+        Certainty { residual2: (r2 + PRIOR_COPIES * prior) / copies, copies, held, mean, scatter }
     }
 
     /// The standard error of motif position `m`'s site in cell `(u, w)`, as least
@@ -620,7 +684,7 @@ impl Fit {
     ) -> Vec<(usize, (i64, i64), usize)> {
         // Near the region's edge, a site off by its error may be outside: the copy the
         // hand would draw there may not be on the canvas (fill goes to the edge).
-        let margin = |m: usize, c: (i64, i64)| if opts.fill { 0.0 } else { UNCERTAIN * self.error_at(m, c) / SQRT_2 };
+        let margin = |m: usize, c: (i64, i64)| if opts.fill { 0.0 } else { EDGE * self.error_at(m, c) / SQRT_2 };
         let inside = |m: usize, c: (i64, i64)| {
             region.is_none_or(|r| {
                 let p = self.site(m, c);
