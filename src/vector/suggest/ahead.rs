@@ -1,0 +1,134 @@
+//! The cells to propose: those begun, then the next along the rhythm (or all the
+//! region's, for `fill`).
+
+use super::fit::Fit;
+use super::SuggestOptions;
+use crate::vector::element::Element;
+use kurbo::Rect;
+use std::f64::consts::SQRT_2;
+
+/// A site nearer the region's edge than this many of its standard errors (in either
+/// coordinate) may be outside it.
+const EDGE: f64 = 2.0;
+
+impl Fit {
+    fn at(&self, i: usize) -> (i64, i64) {
+        self.cell[i].1
+    }
+
+    /// The (motif position, cell, periods from the nearest drawn copy) to propose.
+    pub(super) fn wanted(
+        &self,
+        elems: &[Element],
+        region: Option<Rect>,
+        opts: &SuggestOptions,
+        max_cells: usize,
+    ) -> Vec<(usize, (i64, i64), usize)> {
+        // Near the region's edge, a site off by its error may be outside: the copy the
+        // hand would draw there may not be on the canvas (fill goes to the edge).
+        let margin = |m: usize, c: (i64, i64)| if opts.fill { 0.0 } else { EDGE * self.error_at(m, c) / SQRT_2 };
+        let inside = |m: usize, c: (i64, i64)| {
+            region.is_none_or(|r| {
+                let p = self.site(m, c);
+                let d = margin(m, c);
+                r.contains(p) && p.x - r.x0 >= d && r.x1 - p.x >= d && p.y - r.y0 >= d && r.y1 - p.y >= d
+            })
+        };
+        let mut drawn = self.cell.clone();
+        drawn.sort_unstable();
+        let mut occupied: Vec<(i64, i64)> = self.cell.iter().map(|c| c.1).collect();
+        occupied.sort_unstable();
+        occupied.dedup();
+        let neighbours: Vec<(i64, i64)> =
+            if self.b.is_some() { vec![(1, 0), (-1, 0), (0, 1), (0, -1)] } else { vec![(1, 0), (-1, 0)] };
+        let any_inside = |c: (i64, i64)| (0..self.motif.len()).any(|m| inside(m, c));
+        let latest = self.at(elems.len() - 1);
+        // The rhythm: from the cell drawn before the latest one to the latest.
+        let previous = (0..elems.len()).rev().map(|i| self.at(i)).find(|&c| c != latest);
+        let rhythm = previous.map_or((1, 0), |p| (latest.0 - p.0, latest.1 - p.1));
+
+        let mut cells: Vec<((i64, i64), usize)> = occupied.iter().map(|&c| (c, 0)).collect();
+        let mut taken = Cells(occupied);
+        if opts.fill {
+            // Every cell reachable from the drawn ones through cells in the region, in
+            // breadth-first order (`cells` is the queue).
+            let mut head = 0;
+            while let Some(&(c, d)) = cells.get(head) {
+                head += 1;
+                for &(du, dw) in &neighbours {
+                    let n = (c.0 + du, c.1 + dw);
+                    if taken.len() < max_cells && !taken.contains(n) && any_inside(n) {
+                        taken.insert(n);
+                        cells.push((n, d + 1));
+                    }
+                }
+            }
+        } else {
+            // The next cells along the rhythm, else the free neighbour nearest the latest.
+            let mut last = latest;
+            for _ in 0..opts.count {
+                let along = (last.0 + rhythm.0, last.1 + rhythm.1);
+                let next = if !taken.contains(along) && any_inside(along) && taken.adjacent(along, &neighbours) {
+                    Some(along)
+                } else {
+                    let here = self.lattice().step(latest.0, latest.1);
+                    taken
+                        .0
+                        .iter()
+                        .flat_map(|&c| neighbours.iter().map(move |&(du, dw)| (c.0 + du, c.1 + dw)))
+                        .filter(|&c| !taken.contains(c) && any_inside(c))
+                        // The latest copy's line of cells first: a row is finished before the next.
+                        .min_by(|p, q| {
+                            let dp = (self.lattice().step(p.0, p.1) - here).hypot2();
+                            let dq = (self.lattice().step(q.0, q.1) - here).hypot2();
+                            (p.1 != latest.1).cmp(&(q.1 != latest.1)).then(dp.total_cmp(&dq)).then(p.cmp(q))
+                        })
+                };
+                let Some(next) = next else { break };
+                let steps = neighbours
+                    .iter()
+                    .filter_map(|&(du, dw)| cells.iter().find(|(c, _)| *c == (next.0 - du, next.1 - dw)).map(|x| x.1))
+                    .min()
+                    .unwrap_or(0)
+                    + 1;
+                taken.insert(next);
+                cells.push((next, steps));
+                last = next;
+            }
+        }
+        let mut out = Vec::new();
+        for (c, steps) in cells {
+            // Motif positions drawn once are not yet part of the repetition.
+            for m in 0..self.motif.len() {
+                if self.motif[m].members.len() >= 2 && drawn.binary_search(&(m, c)).is_err() && inside(m, c) {
+                    out.push((m, c, steps));
+                }
+            }
+        }
+        out
+    }
+}
+
+/// A set of lattice cells, kept sorted.
+struct Cells(Vec<(i64, i64)>);
+
+impl Cells {
+    fn len(&self) -> usize {
+        self.0.len()
+    }
+
+    fn contains(&self, c: (i64, i64)) -> bool {
+        self.0.binary_search(&c).is_ok()
+    }
+
+    fn insert(&mut self, c: (i64, i64)) {
+        if let Err(at) = self.0.binary_search(&c) {
+            self.0.insert(at, c);
+        }
+    }
+
+    /// Whether a neighbour of `c` is in the set.
+    fn adjacent(&self, c: (i64, i64), neighbours: &[(i64, i64)]) -> bool {
+        neighbours.iter().any(|&(du, dw)| self.contains((c.0 - du, c.1 - dw)))
+    }
+}

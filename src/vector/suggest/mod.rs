@@ -1,0 +1,275 @@
+//! Autocomplete while drawing (SPEC 1.7, after Xing et al., "Autocomplete Painting
+//! Repetitions", 2014): the drawing so far is the example; once it shows a repetition,
+//! the next copies of the motif near the latest strokes are proposed as ghost strokes.
+//!
+//! A repetition is a lattice `origin_m + u a + w b` of motif positions `m` (a row when
+//! there is no `b`). Its periods are offsets between same-class strokes that recur
+//! (found at least twice among the latest strokes), tried shortest first; a candidate is
+//! kept only when it explains the drawing:
+//! - most strokes (70%) sit at a motif position drawn at least twice;
+//! - no motif position is drawn twice in one cell, and none stops short of a stroke of
+//!   its class further along its line (a period that skips drawn copies is a sub-period,
+//!   such as the gap inside a pair);
+//! - the strokes lie near their lattice sites (median residual at most 20% of the
+//!   spacing).
+//!
+//! Of the lattices built on the first few periods that fit as a row, the one that
+//! leaves fewest cells out inside its lines and then needs fewest motif positions
+//! wins: the finest lattice the drawing bears out.
+//!
+//! Predictions then complete the cells already begun (the copy being drawn) and add the
+//! next `count` cells along the rhythm of the latest cells. Nothing is proposed on a
+//! first stroke, on irregular input, or when the latest stroke does not repeat anything
+//! (a stroke that contradicts the prediction dismisses it). Each proposed copy is a
+//! random drawn copy of its motif (so accepted copies keep the hand-drawn character)
+//! placed at its site: the least-squares site is the best guess of where the hand
+//! would put it, and a drawn copy's own deviation would only add to the miss.
+//!
+//! A proposal is shown only where it is likely right: where the hand's copy falls
+//! within the matching tolerance of it with probability 0.98, given its expected miss
+//! (the site's standard error, grown with each period away from the hand-drawn copies,
+//! and the hand's own scatter) and how few copies that scatter is estimated from (an
+//! F quantile, not a Gaussian one). The scatter is estimated with its degrees of
+//! freedom (two copies fit a row exactly and say nothing of it) and a prior read from
+//! the hand's wobble; accepted copies, which sit where an earlier fit put them, count
+//! neither as evidence of the periods' error nor as whole copies of the hand (a copy
+//! finished by hand weighs by its hand-drawn share).
+
+mod ahead;
+mod certainty;
+mod fit;
+mod lattice;
+
+use self::certainty::hand_scatter;
+use self::fit::Fit;
+use super::reference::Spread;
+use super::stroke::Stroke;
+use super::synthesize::classify_drawing;
+use crate::error::{invalid, Result};
+use crate::rng::Rng;
+use kurbo::{Point, Rect};
+use serde::{Deserialize, Serialize};
+
+/// Options of `suggest_strokes`.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(rename_all = "camelCase", default, deny_unknown_fields)]
+pub struct SuggestOptions {
+    /// The area suggestions must fall in, `[x, y, width, height]` (the canvas); none:
+    /// anywhere.
+    pub region: Option<[f64; 4]>,
+    /// How many copies of the motif to propose beyond those already begun.
+    pub count: usize,
+    /// Propose every copy in the region instead (the region is then required).
+    pub fill: bool,
+    pub path_tolerance: Option<f64>,
+    pub width_tolerance: Option<f64>,
+    pub color_tolerance: Option<f64>,
+    /// Each proposal takes a random member of its class (else the stroke at its place).
+    pub variation: bool,
+    pub seed: u64,
+    /// Indices of the strokes that are accepted proposals. They count for little in the
+    /// periods' fit: they repeat the periods they were proposed with, so without this a
+    /// period misjudged from the first copies drifts on through every accepted copy and
+    /// the next hand-drawn stroke cannot correct it.
+    pub suggested: Vec<u32>,
+}
+
+impl Default for SuggestOptions {
+    fn default() -> Self {
+        SuggestOptions {
+            region: None,
+            count: 3,
+            fill: false,
+            path_tolerance: None,
+            width_tolerance: None,
+            color_tolerance: None,
+            variation: true,
+            seed: 1,
+            suggested: Vec::new(),
+        }
+    }
+}
+
+/// Proposed strokes (empty when the drawing shows no repetition yet).
+#[derive(Clone, Debug, Default, Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct Suggestions {
+    pub strokes: Vec<Stroke>,
+    /// Of each proposed stroke, in (0, 1]: how well the lattice explains the drawing,
+    /// lower for copies further from the drawn ones.
+    pub confidence: Vec<f64>,
+    /// The drawn stroke whose place (and deviation) each proposal repeats.
+    pub sources: Vec<u32>,
+    /// Lattice cell `[u, w]` of each proposal; proposals of one copy share it.
+    pub cells: Vec<[i64; 2]>,
+    /// The repetition's period vectors (one for a row, two for a lattice; none found).
+    pub periods: Vec<[f64; 2]>,
+    /// Why nothing is proposed, when nothing is.
+    pub reason: Option<String>,
+}
+
+/// The most strokes a suggestion reads; beyond, only the latest ones (the repetition
+/// is near them and the answer must come within a pen-up's patience).
+pub const MAX_STROKES: usize = 400;
+/// The most copies `fill` proposes, and the most points all its strokes may hold.
+pub const MAX_FILL_CELLS: usize = 5_000;
+pub const MAX_FILL_POINTS: usize = 2_000_000;
+/// Matching tolerance, as a fraction of the spacing.
+const TOLERANCE: f64 = 0.3;
+/// Confidence lost per period of distance from the nearest drawn copy.
+const FALLOFF: f64 = 0.85;
+/// The least scatter of a copy about its site assumed before the drawing shows its
+/// own, as a fraction of the spacing (a hand's own is read from its strokes' shapes:
+/// see `hand_scatter`).
+const MIN_SCATTER: f64 = 0.04;
+/// A hand places its copies more loosely than it shapes them: the prior scatter of a
+/// copy's place is this multiple of the mean square wobble of its strokes' ends.
+const HAND_TO_PLACEMENT: f64 = 8.0;
+/// Weight of an accepted proposal in the periods' fit (a hand-drawn stroke's is 1).
+const SUGGESTED_WEIGHT: f64 = 0.05;
+
+fn nothing(reason: &str) -> Suggestions {
+    Suggestions { reason: Some(reason.into()), ..Suggestions::default() }
+}
+
+/// Proposes the next strokes of the repetition in `strokes` (in drawing order).
+pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Suggestions> {
+    if opts.count > 64 {
+        return invalid("count can be at most 64 copies; use fill to propose the whole region.");
+    }
+    let region = match opts.region {
+        Some([x, y, w, h]) => {
+            if ![x, y, w, h].iter().all(|v| v.is_finite()) || w <= 0.0 || h <= 0.0 {
+                return invalid("region must be [x, y, width, height] with finite numbers and a positive size.");
+            }
+            Some(Rect::new(x, y, x + w, y + h))
+        }
+        None if opts.fill => return invalid("fill needs a region: the canvas to fill."),
+        None => None,
+    };
+    if let Some(&i) = opts.suggested.iter().find(|&&i| i as usize >= strokes.len()) {
+        return invalid(format!("suggested lists stroke {i}, but there are {} strokes.", strokes.len()));
+    }
+    if strokes.len() < 3 {
+        return Ok(nothing("Draw a motif two or three times and the next copies are proposed."));
+    }
+    let skip = strokes.len().saturating_sub(MAX_STROKES);
+    let mut weight = vec![1.0; strokes.len() - skip];
+    for &i in &opts.suggested {
+        if let Some(w) = (i as usize).checked_sub(skip).and_then(|k| weight.get_mut(k)) {
+            *w = SUGGESTED_WEIGHT;
+        }
+    }
+    let (earlier, strokes) = strokes.split_at(skip);
+    let accepted: Vec<bool> = weight.iter().map(|&w| w < 1.0).collect();
+    let classification =
+        classify_drawing(strokes, opts.path_tolerance, opts.width_tolerance, opts.color_tolerance, &accepted)?;
+    // The repetition is one of motifs: a copy of a motif of several strokes is one
+    // element, proposed whole (an accepted copy is one whose strokes all were).
+    let motifs = &classification.motifs;
+    let elems = classification.elements();
+    let parts: Vec<usize> = motifs.instances.iter().map(Vec::len).collect();
+    // A copy with fewer strokes than its kind's most is still being drawn (or was left
+    // so): its centre is only estimated from the parts drawn, so it weighs little.
+    let mut most = vec![0usize; motifs.kind.iter().map(|&k| k as usize + 1).max().unwrap_or(0)];
+    for (&p, &k) in parts.iter().zip(&motifs.kind) {
+        most[k as usize] = most[k as usize].max(p);
+    }
+    let whole = |x: usize| parts[x] >= most[motifs.kind[x] as usize];
+    let weight: Vec<f64> = motifs
+        .instances
+        .iter()
+        .enumerate()
+        .map(|(x, g)| {
+            // A copy of accepted strokes sits where the lattice put it and says nothing
+            // new about it; one finished by hand is placed by its hand-drawn strokes only.
+            let hand = g.iter().filter(|&&s| weight[s as usize] >= 1.0).count() as f64 / g.len() as f64;
+            if whole(x) {
+                hand.max(SUGGESTED_WEIGHT)
+            } else {
+                SUGGESTED_WEIGHT
+            }
+        })
+        .collect();
+    let Ok(mut spread) = Spread::new(&elems) else {
+        return Ok(nothing("The strokes have no spacing to repeat."));
+    };
+    spread.spacing = spread.apart(&elems);
+    let Some(mut fit) = Fit::find(&elems, &weight, &parts, &spread) else {
+        return Ok(nothing("The drawing shows no repetition yet."));
+    };
+    let prior = (HAND_TO_PLACEMENT * hand_scatter(strokes, &classification.classes, &accepted))
+        .max((MIN_SCATTER * spread.spacing).powi(2));
+    fit.certainty = fit.certainty(&elems, &weight, prior);
+    let latest = motifs.instance_of()[strokes.len() - 1] as usize;
+    if !whole(latest) {
+        return Ok(nothing("The copy being drawn is not finished: the next copies are proposed once it is."));
+    }
+    if fit.motif[fit.cell[latest].0].members.len() < 2 {
+        return Ok(nothing("The latest stroke does not repeat the pattern."));
+    }
+    let points = strokes.iter().map(|s| s.points.len().max(1)).sum::<usize>();
+    let per_copy = points.div_ceil(elems.len()) * fit.motif.len();
+    let extents = motifs.extents(strokes);
+    let wanted = fit.wanted(&elems, region, opts, (MAX_FILL_POINTS / per_copy.max(1)).clamp(1, MAX_FILL_CELLS));
+    let mut out = Suggestions {
+        periods: std::iter::once(fit.a).chain(fit.b).map(|v| [v.x, v.y]).collect(),
+        ..Suggestions::default()
+    };
+    // A copy drawn where the lattice (fitted to hand-drawn copies) no longer puts it is
+    // still drawn: nothing is proposed on a stroke of its class.
+    let tol = TOLERANCE * spread.spacing;
+    let drawn_at = |class: u32, p: Point, size: f64| {
+        let mut hit = false;
+        spread.grid.for_each_near(p, tol, |j| {
+            let o = &elems[j as usize];
+            hit |= o.class == class && o.pos.distance(p) < tol;
+        });
+        hit || earlier.iter().any(|e| {
+            e.reference_point().distance(p) < tol && (e.bounds().size().to_vec2().hypot() - size).abs() <= 0.25 * size
+        })
+    };
+    let mut uncertain = 0;
+    for (m, cell, steps) in wanted {
+        // Not so far ahead of the hand-drawn copies that the site is likely off by more
+        // than the tolerance (fill is asked for explicitly and goes everywhere).
+        if !opts.fill && fit.certainty.reach() * fit.miss_at(m, cell) > tol {
+            uncertain += 1;
+            continue;
+        }
+        let motif = &fit.motif[m];
+        // Seeded by the place, so a copy keeps its look from one pen-up to the next.
+        let mut rng = Rng::new(
+            opts.seed
+                ^ (m as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15)
+                ^ (cell.0 as u64).wrapping_mul(0xC2B2_AE3D)
+                ^ (cell.1 as u64).wrapping_mul(0x1656_67B1),
+        );
+        // Variation among the drawn copies of this motif position only.
+        let source = motif.members[rng.below(motif.members.len())];
+        // A whole drawn copy (not one still being drawn) when varying.
+        let copies: Vec<usize> = motif.members.iter().copied().filter(|&x| whole(x)).collect();
+        let pick = if opts.variation && !copies.is_empty() { copies[rng.below(copies.len())] } else { source };
+        let target = fit.site(m, cell);
+        if drawn_at(elems[source].class, target, extents[pick].hypot() * 2.0) {
+            continue;
+        }
+        let shift = target - motifs.centre[pick];
+        for &s in &motifs.instances[pick] {
+            let part = motifs.part[s as usize];
+            let named = motifs.instances[source].iter().copied().find(|&t| motifs.part[t as usize] == part);
+            out.strokes.push(strokes[s as usize].translated(shift.x, shift.y));
+            out.confidence.push(fit.quality * FALLOFF.powi(steps as i32));
+            out.sources.push(named.unwrap_or(s) + skip as u32);
+            out.cells.push([cell.0, cell.1]);
+        }
+    }
+    if out.strokes.is_empty() {
+        out.reason = Some(if uncertain > 0 {
+            "The copies drawn so far leave the next ones too uncertain: draw one more.".into()
+        } else {
+            "Every copy of the repetition in the region is drawn.".into()
+        });
+    }
+    Ok(out)
+}
