@@ -231,3 +231,62 @@ fn overlapping_faces_are_nine_smileys_not_a_merged_pair() {
     assert!(c.motifs.instances.iter().all(|g| g.len() == 4), "{:?}", c.motifs.instances);
     assert_eq!(c.kinds, 1);
 }
+
+/// A fixture of the drawing package's strokes.
+fn fixture(name: &str) -> Vec<patternsynth::vector::Stroke> {
+    let path = format!("{}/tests/fixtures/handdrawn/{name}.json", env!("CARGO_MANIFEST_DIR"));
+    serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
+}
+
+#[test]
+fn overlapping_cats_and_fish_with_a_tail_apart_are_nine_whole_copies() {
+    // Cats: faces wider than the spacing leave no gap to cut, and the lattice of the
+    // strokes one by one must not take the offset between a copy's two eyes (or ears)
+    // for a period. Fish: a tail drawn off its body is still that fish's tail.
+    for (name, parts) in [("cats-overlapping-5pct", 6), ("fish-tail-apart-5pct", 3)] {
+        let strokes = fixture(name);
+        let c = patternsynth::vector::classify_strokes(&strokes, None, None, None).unwrap();
+        assert_eq!(c.motifs.instances.len(), 9, "{name}: {:?}", c.motifs.instances);
+        assert!(c.motifs.instances.iter().all(|g| g.len() == parts), "{name}: {:?}", c.motifs.instances);
+        assert_eq!(c.kinds, 1, "{name}");
+        // Grown with the defaults, every copy is whole: around each copy's first part
+        // (away from the edges), one of each other part where the drawn copies put it.
+        let opts = patternsynth::vector::StrokeOptions { width: 640.0, height: 480.0, ..Default::default() };
+        let out = patternsynth::vector::synthesize_strokes(&strokes, &opts, &mut patternsynth::Silent).unwrap();
+        let part_of = |src: u32| c.motifs.part[src as usize] as usize;
+        let at = |s: &patternsynth::vector::Stroke| s.reference_point().to_vec2();
+        let mut offset = vec![kurbo::Vec2::ZERO; parts];
+        for g in &c.motifs.instances {
+            let first = g.iter().find(|&&s| c.motifs.part[s as usize] == 0).unwrap();
+            for &s in g {
+                offset[part_of(s)] += (at(&strokes[s as usize]) - at(&strokes[*first as usize])) / 9.0;
+            }
+        }
+        // How far the drawn copies themselves put each part from where it is on average.
+        let mut reach = vec![0.0f64; parts];
+        for g in &c.motifs.instances {
+            let first = g.iter().find(|&&s| c.motifs.part[s as usize] == 0).unwrap();
+            for &s in g {
+                let d = at(&strokes[s as usize]) - at(&strokes[*first as usize]) - offset[part_of(s)];
+                reach[part_of(s)] = reach[part_of(s)].max(d.hypot() + 1.0);
+            }
+        }
+        let (mut copies, mut whole) = (0, 0);
+        for (s, &src) in out.strokes.iter().zip(&out.sources) {
+            let p = at(s);
+            if part_of(src) != 0 || !(100.0..540.0).contains(&p.x) || !(100.0..380.0).contains(&p.y) {
+                continue;
+            }
+            copies += 1;
+            whole += (1..parts).all(|k| {
+                let near = out
+                    .strokes
+                    .iter()
+                    .zip(&out.sources)
+                    .filter(|(o, &os)| part_of(os) == k && (at(o) - p - offset[k]).hypot() < reach[k]);
+                near.count() == 1
+            }) as usize;
+        }
+        assert!(copies > 15 && whole as f64 >= 0.97 * copies as f64, "{name}: {whole} of {copies} copies whole");
+    }
+}

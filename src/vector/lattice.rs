@@ -64,12 +64,16 @@ pub fn fit(elems: &[Element], grid: &Grid, pair_radius: &[f64], spacing: f64, re
     let partner = |i: usize, v: Vec2| -> Option<usize> {
         let e = &elems[i];
         let p = e.pos + v;
-        let d = pair_radius[e.class as usize];
+        // Within a quarter of the period: a class's own spacing alone would let an
+        // offset between two parts of a copy (a cat's ears) land near another part.
+        let d = pair_radius[e.class as usize].min(0.25 * v.hypot());
         let mut best: Option<(usize, f64)> = None;
         grid.for_each_near(p, d, |j| {
             let o = &elems[j as usize];
             let d2 = (o.pos - p).hypot2();
-            if o.class == e.class && d2 < d * d && best.is_none_or(|b| d2 < b.1) {
+            // (Never the element itself: an offset shorter than the class's radius would
+            // map a lone part of each copy, a cat's face, onto itself.)
+            if j as usize != i && o.class == e.class && d2 < d * d && best.is_none_or(|b| d2 < b.1) {
                 best = Some((j as usize, d2));
             }
         });
@@ -176,10 +180,13 @@ pub fn fit(elems: &[Element], grid: &Grid, pair_radius: &[f64], spacing: f64, re
             (sums[k].0 / sums[k].1 as f64 + a * u as f64 + b0 * w as f64).to_point()
         })
         .collect();
-    // Accept only a fit that explains the drawing: residuals small against the spacing.
+    // Accept only a fit that explains the drawing: residuals small against the periods.
     let mut residuals: Vec<f64> = snapped.iter().zip(elems).map(|(s, e)| s.distance(e.pos)).collect();
     crate::order::floats(&mut residuals);
-    if residuals[residuals.len() / 2] > 0.15 * spacing {
+    // (On the scale of the periods: a motif of small parts, a cat's eyes and mouth, has
+    // its strokes' spacing far below its copies'.)
+    let shorter = b.map_or(a.hypot(), |b| a.hypot().min(b.hypot()));
+    if residuals[residuals.len() / 2] > 0.15 * shorter {
         return None;
     }
     let component = coord.iter().map(|c| c.map_or(0, |c| c.0 as u32)).collect();

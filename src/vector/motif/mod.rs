@@ -17,6 +17,7 @@
 //! tile's edge that abut in the repeat would otherwise join across copies.
 
 mod cells;
+mod complete;
 mod contact;
 mod kinds;
 
@@ -89,6 +90,7 @@ pub fn group(
     let Some(groups) = groups else {
         return Grouping { motifs: Motifs::single(strokes, classes), classes: None };
     };
+    let groups = complete::complete(strokes, classes, groups);
     let k = kinds::kinds(strokes, &groups, tol, explicit_path);
     let mut centre: Vec<Point> = groups.iter().map(|g| centre_of(strokes, g)).collect();
     // An incomplete copy stands where its whole motif's centre would be.
