@@ -290,3 +290,25 @@ fn overlapping_cats_and_fish_with_a_tail_apart_are_nine_whole_copies() {
         assert!(copies > 15 && whole as f64 >= 0.97 * copies as f64, "{name}: {whole} of {copies} copies whole");
     }
 }
+
+#[test]
+fn cats_drawn_against_one_another_are_split_into_copies_and_bring_ghosts() {
+    // Three cats in an L overlap and read as one group of eighteen strokes; the three
+    // drawn apart show what one cat holds, so the group is three cats.
+    let strokes = fixture("cats-six-apart-and-touching-5pct");
+    let c = patternsynth::vector::classify_strokes(&strokes, None, None, None).unwrap();
+    assert_eq!(c.motifs.instances.len(), 6, "{:?}", c.motifs.instances);
+    assert!(c.motifs.instances.iter().all(|g| g.len() == 6), "{:?}", c.motifs.instances);
+    assert_eq!(c.kinds, 1);
+    // The faces of one copy are 70 apart: each copy holds one face and what lies round it.
+    for g in &c.motifs.instances {
+        let b = g.iter().fold(strokes[g[0] as usize].bounds(), |r, &s| r.union(strokes[s as usize].bounds()));
+        assert!(b.width() < 90.0 && b.height() < 90.0, "a copy spans {b:?}");
+    }
+    let s = patternsynth::vector::suggest_strokes(
+        &strokes,
+        &patternsynth::vector::SuggestOptions { region: Some([0.0, 0.0, 500.0, 500.0]), ..Default::default() },
+    )
+    .unwrap();
+    assert!(!s.strokes.is_empty() && s.strokes.len() % 6 == 0, "{} ghosts: {:?}", s.strokes.len(), s.reason);
+}

@@ -9,6 +9,11 @@
 //! lacks, at that offset from an incomplete copy's anchor (within three times the
 //! scatter, or a fifth of the anchor's size when the whole copies are too few to show
 //! it), is that copy's missing part.
+//!
+//! The other way round, copies drawn against one another may be read as one group (three
+//! cats drawn in an L, faces overlapping): a group holding the whole make-up some `m`
+//! times over is split about its `m` anchors, each part going to the anchor where whole
+//! copies put a part of its class.
 
 use super::super::stroke::Stroke;
 use kurbo::Vec2;
@@ -19,6 +24,9 @@ const MIN_WHOLE: usize = 2;
 const SPREAD: f64 = 3.0;
 /// ...and at least within this share of the anchor's size.
 const FLOOR: f64 = 0.2;
+/// A part of a group split about its anchors lands within this share of the anchor's
+/// size of where the whole copies put a part of its class.
+const SPLIT: f64 = 1.0 / 3.0;
 
 /// `groups` (instances of `strokes` of the paper's `classes`) with the lone parts of
 /// incomplete copies joined to them (see the module comment); groups joined into
@@ -41,7 +49,7 @@ pub fn complete(strokes: &[Stroke], classes: &[u32], groups: Vec<Vec<u32>>) -> V
     let Some(&(whole, count)) = counted.iter().max_by_key(|c| (c.1, c.0.len())) else {
         return groups;
     };
-    if count < MIN_WHOLE || whole.windows(2).any(|w| w[0] == w[1]) {
+    if count < MIN_WHOLE {
         return groups;
     }
     let size = |s: u32| strokes[s as usize].bounds().size().to_vec2().hypot();
@@ -50,11 +58,16 @@ pub fn complete(strokes: &[Stroke], classes: &[u32], groups: Vec<Vec<u32>>) -> V
     // The anchor: the class of the whole copies' largest part.
     let first = groups.iter().zip(&makes).find(|(_, m)| *m == whole).map(|(g, _)| g).expect("counted");
     let anchor = classes[*first.iter().max_by(|&&p, &&q| size(p).total_cmp(&size(q))).expect("several") as usize];
+    let times = |m: &[u32], c: u32| m.iter().filter(|&&k| k == c).count();
+    if times(whole, anchor) != 1 {
+        return groups;
+    }
     // Per other class: the mean offset from the anchor, and its mean square scatter.
     let wholes: Vec<&Vec<u32>> = groups.iter().zip(&makes).filter(|(_, m)| *m == whole).map(|(g, _)| g).collect();
-    let offsets: Vec<(u32, Vec2, f64)> = whole
+    let mut unique: Vec<u32> = whole.iter().copied().filter(|&c| c != anchor && times(whole, c) == 1).collect();
+    unique.dedup();
+    let offsets: Vec<(u32, Vec2, f64)> = unique
         .iter()
-        .filter(|&&c| c != anchor)
         .map(|&c| {
             let d: Vec<Vec2> = wholes
                 .iter()
@@ -68,6 +81,32 @@ pub fn complete(strokes: &[Stroke], classes: &[u32], groups: Vec<Vec<u32>>) -> V
     let anchor_size =
         wholes.iter().map(|g| size(of_class(g, anchor).expect("whole"))).sum::<f64>() / wholes.len() as f64;
     let reach = |scatter: f64| (SPREAD * scatter.sqrt()).max(FLOOR * anchor_size);
+    // Copies drawn against one another and read as one (three cats in an L): a group of
+    // `m` times the whole make-up is split about its `m` anchors, each stroke to the
+    // anchor where a whole copy has a part of its class (each anchor taking as many of
+    // a class as a whole copy holds), if every stroke lands within a third of the
+    // anchor's size of such a place.
+    let seen: Vec<(u32, Vec2)> = wholes
+        .iter()
+        .flat_map(|g| {
+            let a = at(of_class(g, anchor).expect("whole"));
+            g.iter().filter(|&&s| classes[s as usize] != anchor).map(move |&s| (classes[s as usize], at(s) - a))
+        })
+        .collect();
+    let mut groups = groups;
+    let mut x = 0;
+    while x < groups.len() {
+        let m = times(&make_up(&groups[x]), anchor);
+        let multiple = m >= 2 && whole.iter().all(|&c| times(&make_up(&groups[x]), c) == m * times(whole, c));
+        match multiple.then(|| split(&groups[x], anchor, classes, &seen, whole, &at, SPLIT * anchor_size)).flatten() {
+            Some(parts) => {
+                groups.splice(x..=x, parts.clone());
+                x += parts.len();
+            }
+            None => x += 1,
+        }
+    }
+    let makes: Vec<Vec<u32>> = groups.iter().map(|g| make_up(g)).collect();
     // Lone parts, each joined at most once, to incomplete copies that hold the anchor.
     let mut joined: Vec<Option<usize>> = vec![None; groups.len()];
     let mut out = groups.clone();
@@ -97,4 +136,46 @@ pub fn complete(strokes: &[Stroke], classes: &[u32], groups: Vec<Vec<u32>>) -> V
     // Instances stay in the order of their first stroke (a tail may be drawn first).
     out.sort_by_key(|g| g[0]);
     out
+}
+
+/// `group` split about its strokes of class `anchor`: each other stroke, nearest first,
+/// goes to the anchor where it is nearest a place `seen` for its class (offsets from
+/// the anchor in whole copies), while that anchor lacks strokes of its class (`whole`
+/// counts them); `None` when a stroke lands further than `reach` from such a place.
+fn split(
+    group: &[u32],
+    anchor: u32,
+    classes: &[u32],
+    seen: &[(u32, Vec2)],
+    whole: &[u32],
+    at: &impl Fn(u32) -> Vec2,
+    reach: f64,
+) -> Option<Vec<Vec<u32>>> {
+    let anchors: Vec<u32> = group.iter().copied().filter(|&s| classes[s as usize] == anchor).collect();
+    let mut pairs: Vec<(f64, u32, usize)> = Vec::new();
+    for &s in group.iter().filter(|&&s| classes[s as usize] != anchor) {
+        let c = classes[s as usize];
+        for (k, &a) in anchors.iter().enumerate() {
+            let d =
+                seen.iter().filter(|o| o.0 == c).map(|o| (at(s) - at(a) - o.1).hypot()).fold(f64::INFINITY, f64::min);
+            pairs.push((d, s, k));
+        }
+    }
+    pairs.sort_by(|p, q| p.0.total_cmp(&q.0).then(p.1.cmp(&q.1)).then(p.2.cmp(&q.2)));
+    let mut out: Vec<Vec<u32>> = anchors.iter().map(|&a| vec![a]).collect();
+    let mut placed: Vec<u32> = Vec::new();
+    for (d, s, k) in pairs {
+        let c = classes[s as usize];
+        let held = out[k].iter().filter(|&&t| classes[t as usize] == c).count();
+        if placed.contains(&s) || held >= whole.iter().filter(|&&w| w == c).count() {
+            continue;
+        }
+        if d > reach {
+            return None;
+        }
+        placed.push(s);
+        out[k].push(s);
+    }
+    out.iter_mut().for_each(|g| g.sort_unstable());
+    (placed.len() + anchors.len() == group.len()).then_some(out)
 }
