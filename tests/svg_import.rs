@@ -229,3 +229,30 @@ fn holes_stay_with_their_outline_and_the_report_says_so() {
     assert_eq!(svg.matches("<path").count(), 4);
     assert_eq!(svg.matches("fill-rule=\"evenodd\"").count(), 1);
 }
+
+#[test]
+fn small_documents_that_backtracking_or_quadratic_parsing_would_hang_import_as_they_should() {
+    // Issue 26: a descendant chain of 20 groups, 40 times, over 95 nested groups (C(95,
+    // 20) ways to place it) matches nothing; the chain that does match still applies.
+    let chain = format!(".nomatch {}rect {{ fill: #ff0000 }}", "g ".repeat(20)).repeat(40);
+    let body = format!(
+        "<style>{chain} g g g rect.hit {{ fill: #00ff00 }}</style>{}<rect width='5' height='5'/><rect class='hit' width='5' height='5'/>{}",
+        "<g>".repeat(95),
+        "</g>".repeat(95)
+    );
+    let strokes = parse(&body);
+    assert_eq!(strokes.len(), 2);
+    assert_eq!(strokes[0].fill, Some(Rgb([0, 0, 0])), "no rule matches the first rect");
+    assert_eq!(strokes[1].fill, Some(Rgb([0, 255, 0])));
+    // A style attribute of 500,000 declarations: the last one wins.
+    let style = format!("{}fill: #0000ff", "fill: #ff0000; ".repeat(500_000));
+    let strokes = parse(&format!("<rect width='5' height='5' style='{style}'/>"));
+    assert_eq!(strokes[0].fill, Some(Rgb([0, 0, 255])));
+    // One rule of 2,000 declarations is refused with the limit named.
+    let rule = format!(
+        "<svg xmlns='http://www.w3.org/2000/svg'><style>rect {{ {} }}</style><rect width='5' height='5'/></svg>",
+        "fill: red; ".repeat(2_000)
+    );
+    let err = parse_svg(&rule, &ImportOptions::default()).unwrap_err().to_string();
+    assert!(err.contains("2000 declarations") && err.contains("limit is 1000"), "{err}");
+}

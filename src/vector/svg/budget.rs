@@ -8,7 +8,9 @@
 //! - **Attributes per element.** roxmltree compares each attribute of an element with
 //!   every other one (duplicate check), which is quadratic in attributes per element.
 //! - **CSS.** The importer matches every style-sheet rule against every element it
-//!   draws, including the copies `<use>` makes: rules x elements selector matches.
+//!   draws, including the copies `<use>` makes: rules x elements selector matches
+//!   (each in time linear in the chain, `selector`); and the CSS parser's work on one
+//!   rule is quadratic in its declarations.
 
 use crate::error::{Error, Result};
 use roxmltree::{Document, Node};
@@ -24,6 +26,9 @@ pub const MAX_ATTRIBUTE_PAIRS: u64 = 20_000_000;
 pub const MAX_CSS_RULES: u64 = 2_000;
 /// CSS selector matches the resolver may make (rules x elements, after `<use>` copies).
 pub const MAX_CSS_MATCHES: u64 = 20_000_000;
+/// Declarations in one style-sheet rule: simplecss's parse of a rule is quadratic in
+/// them (10,000 take 1.5 s; 1,000, 15 ms), and no drawing's rule holds a hundred.
+pub const MAX_CSS_DECLARATIONS: u64 = 1_000;
 /// Elements after `<use>` expansion.
 pub const MAX_EXPANDED_ELEMENTS: u64 = 1_000_000;
 
@@ -69,6 +74,8 @@ pub struct Shape {
     pub expanded: u64,
     /// Style-sheet rules (one per selector of a comma list).
     pub css_rules: u64,
+    /// The most declarations (`;`-separated) in one block of a style sheet.
+    pub css_declarations: u64,
     /// `<text>` elements (left out without fonts; reported).
     pub texts: usize,
 }
@@ -86,6 +93,7 @@ pub fn measure(doc: &Document) -> Shape {
     // into new elements (a `<use>`'s target), the others it converts once.
     let mut edges: Vec<Vec<(usize, bool)>> = vec![Vec::new(); nodes.len()];
     let mut css_rules = 0;
+    let mut css_declarations = 0;
     let mut texts = 0;
     for (i, n) in nodes.iter().enumerate() {
         let is_use = n.tag_name().name() == "use";
@@ -99,7 +107,10 @@ pub fn measure(doc: &Document) -> Shape {
             }
         }
         match n.tag_name().name() {
-            "style" => css_rules += n.text().map(count_rules).unwrap_or(0),
+            "style" => {
+                css_rules += n.text().map(count_rules).unwrap_or(0);
+                css_declarations = css_declarations.max(n.text().map(most_declarations).unwrap_or(0));
+            }
             "text" => texts += 1,
             _ => {}
         }
@@ -145,7 +156,7 @@ pub fn measure(doc: &Document) -> Shape {
         max_depth = max_depth.max(depth[root]);
         expanded = expanded.max(size[root]);
     }
-    Shape { depth: max_depth, expanded, css_rules, texts }
+    Shape { depth: max_depth, expanded, css_rules, css_declarations, texts }
 }
 
 /// Refuses a document whose resolution would overflow the stack or take minutes.
@@ -167,6 +178,12 @@ pub fn check(shape: &Shape) -> Result<()> {
             shape.css_rules
         )));
     }
+    if shape.css_declarations > MAX_CSS_DECLARATIONS {
+        return Err(Error::TooLarge(format!(
+            "The SVG's style sheet has a rule of {} declarations; the limit is {MAX_CSS_DECLARATIONS}.",
+            shape.css_declarations
+        )));
+    }
     let matches = shape.expanded.saturating_mul(shape.css_rules);
     if matches > MAX_CSS_MATCHES {
         return Err(Error::TooLarge(format!(
@@ -183,6 +200,23 @@ fn url_refs(value: &str) -> impl Iterator<Item = &str> {
         let rest = rest.trim_start().trim_start_matches(['"', '\'']).strip_prefix('#')?;
         rest.split([')', '"', '\'']).next()
     })
+}
+
+/// The most `;` in one block of a sheet (strings and comments not special-cased: an
+/// overestimate).
+fn most_declarations(css: &str) -> u64 {
+    let (mut most, mut here) = (0u64, 0u64);
+    for c in css.bytes() {
+        match c {
+            b'{' | b'}' => here = 0,
+            b';' => {
+                here += 1;
+                most = most.max(here);
+            }
+            _ => {}
+        }
+    }
+    most
 }
 
 /// Style rules in a sheet: one per selector of each block (`a, b { }` is two), as the
@@ -238,6 +272,10 @@ mod tests {
     #[test]
     fn css_rules_and_attribute_pairs() {
         assert_eq!(count_rules(".a{fill:red} .b, .c {stroke:blue} @media x { .d {} }"), 4);
+        assert_eq!(most_declarations(".a{fill:red;stroke:blue;} .b{opacity:1}"), 2);
+        let long = format!("<svg><style>.a{{{}}}</style></svg>", "fill:red;".repeat(1_001));
+        let err = check(&shape(&long)).unwrap_err().to_string();
+        assert!(err.contains("1001 declarations") && err.contains("limit is 1000"), "{err}");
         assert_eq!(attribute_pairs("<svg a='1' b='2' c='3'><g x='1'/></svg>"), 3);
         let many: String = (0..7000).map(|i| format!(" a{i}='1'")).collect();
         assert!(check_source(&format!("<svg{many}/>")).is_err());

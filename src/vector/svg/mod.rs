@@ -6,6 +6,7 @@ pub mod budget;
 pub mod compound;
 pub mod export;
 pub mod import;
+mod selector;
 pub mod shape;
 pub mod style;
 
