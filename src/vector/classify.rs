@@ -4,7 +4,9 @@
 use super::color::paint_distance;
 use super::frechet::Shape;
 use super::stroke::Stroke;
+use kurbo::Point;
 use serde::{Deserialize, Serialize};
+use std::collections::HashMap;
 
 /// The three tolerances of `Match`: Fréchet distance of the centred paths (e1), stroke
 /// width difference (e2) and Euclidean RGB distance of stroke and of fill colour (e3).
@@ -85,32 +87,56 @@ pub fn classify(strokes: &[Stroke], tol: &Tolerances) -> Vec<u32> {
 }
 
 /// The greedy clustering itself, on strokes that are not copies of one another.
+///
+/// A class grows from its first stroke through its members: each member is compared
+/// only with the unclassified strokes that could match it. The discrete Fréchet
+/// distance couples the paths' first points and their last points (or, drawn the other
+/// way, each one's first with the other's last), so a match has its first point within
+/// the path tolerance of the member's first or last; strokes are looked up by their
+/// first point in a grid of that cell size. Sweeping every stroke left for every class
+/// made 200,000 distinct strokes 2e10 comparisons.
 fn components(strokes: &[Stroke], tol: &Tolerances) -> Vec<u32> {
     let prepared = Prepared::new(strokes, sample_spacing(strokes, tol.path));
-    let mut class = vec![u32::MAX; strokes.len()];
-    let mut left: Vec<usize> = (0..strokes.len()).collect();
-    let mut checked = vec![0usize; strokes.len()];
+    let n = strokes.len();
+    let ends: Vec<(Point, Point)> = prepared
+        .shapes
+        .iter()
+        .map(|s| (s.points.first().copied().unwrap_or(Point::ZERO), s.points.last().copied().unwrap_or(Point::ZERO)))
+        .collect();
+    // Cells no smaller than a millionth of a stroke (a tolerance of 0 matches nothing).
+    let cell = tol.path.max(1e-6 * typical_size(strokes));
+    let key = |p: Point| ((p.x / cell).floor() as i64, (p.y / cell).floor() as i64);
+    let mut grid: HashMap<(i64, i64), Vec<u32>> = HashMap::new();
+    for (i, e) in ends.iter().enumerate() {
+        grid.entry(key(e.0)).or_default().push(i as u32);
+    }
+    let mut class = vec![u32::MAX; n];
     let mut next = 0u32;
-    while !left.is_empty() {
-        let seed = left.remove(0);
+    for seed in 0..n {
+        if class[seed] != u32::MAX {
+            continue;
+        }
         class[seed] = next;
-        let mut members = vec![seed];
-        loop {
-            let before = members.len();
-            left.retain(|&s| {
-                let hit = members[checked[s]..].iter().any(|&m| prepared.matches(s, m, tol));
-                checked[s] = members.len();
-                if hit {
-                    class[s] = next;
-                    members.push(s);
+        let mut queue = vec![seed];
+        while let Some(m) = queue.pop() {
+            for end in [ends[m].0, ends[m].1] {
+                let (cx, cy) = key(end);
+                for k in [(cx - 1, cy - 1), (cx, cy - 1), (cx + 1, cy - 1), (cx - 1, cy), (cx, cy), (cx + 1, cy)]
+                    .into_iter()
+                    .chain([(cx - 1, cy + 1), (cx, cy + 1), (cx + 1, cy + 1)])
+                {
+                    let Some(near) = grid.get_mut(&k) else { continue };
+                    // Classified strokes leave the grid as their cells are visited.
+                    near.retain(|&s| class[s as usize] == u32::MAX);
+                    for &s in near.iter() {
+                        if class[s as usize] == u32::MAX && prepared.matches(s as usize, m, tol) {
+                            class[s as usize] = next;
+                            queue.push(s as usize);
+                        }
+                    }
                 }
-                !hit
-            });
-            if members.len() == before {
-                break;
             }
         }
-        left.iter().for_each(|&s| checked[s] = 0);
         next += 1;
     }
     class
@@ -277,6 +303,55 @@ mod tests {
         let (firsts, _) = translates(&strokes);
         assert_eq!(firsts, vec![0, 1, 2, 30]);
         assert_eq!(classify(&strokes, &tol), (0..30).map(|i| i % 3).chain([3]).collect::<Vec<u32>>());
+    }
+
+    #[test]
+    fn classes_are_the_components_of_every_pair_that_matches() {
+        // Against the definition (union of every matching pair, numbered by first
+        // stroke), on wobbly strokes of a few shapes drawn either way round.
+        let mut rng = crate::rng::Rng::new(11);
+        let mut strokes = Vec::new();
+        for i in 0..300 {
+            let (x, y) = (rng.next_f64() * 500.0, rng.next_f64() * 500.0);
+            let k = rng.below(4) as f64;
+            let wob = |r: &mut crate::rng::Rng| (r.next_f64() - 0.5) * 3.0;
+            let mut pts: Vec<[f64; 2]> =
+                (0..6).map(|t| [x + t as f64 * (4.0 + k), y + (t as f64 * k).sin() * 6.0 + wob(&mut rng)]).collect();
+            if i % 3 == 0 {
+                pts.reverse();
+            }
+            strokes.push(Stroke::new(pts, 1.0 + (i % 2) as f64 * 0.1, None));
+        }
+        for path in [0.0, 0.8, 2.0, 5.0, 40.0] {
+            let tol = Tolerances { path, width: 0.5, color: 1.0 };
+            let prepared = Prepared::new(&strokes, sample_spacing(&strokes, path));
+            let mut root: Vec<usize> = (0..strokes.len()).collect();
+            fn find(r: &mut [usize], i: usize) -> usize {
+                if r[i] != i {
+                    let t = find(r, r[i]);
+                    r[i] = t;
+                }
+                r[i]
+            }
+            for i in 0..strokes.len() {
+                for j in 0..i {
+                    if prepared.matches(i, j, &tol) {
+                        let (a, b) = (find(&mut root, i), find(&mut root, j));
+                        root[a.max(b)] = a.min(b);
+                    }
+                }
+            }
+            let mut number = std::collections::HashMap::new();
+            let want: Vec<u32> = (0..strokes.len())
+                .map(|i| {
+                    let r = find(&mut root, i);
+                    let next = number.len() as u32;
+                    *number.entry(r).or_insert(next)
+                })
+                .collect();
+            assert_eq!(components(&strokes, &tol), want, "path tolerance {path}");
+            assert!(path < 1.0 || number.len() < strokes.len(), "path tolerance {path} joins some");
+        }
     }
 
     #[test]
