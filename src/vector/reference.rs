@@ -49,10 +49,17 @@ pub(super) struct Reference<'a> {
 /// Each element's distance to its nearest other (of its class, with `same_class`)
 /// further than `beyond`; pass a negative `beyond` to count coincident elements.
 fn nearest_distances(elems: &[Element], same_class: bool, beyond: f64, grid: &Grid, scale: f64) -> Vec<f64> {
+    // An element alone in its class has no other: without this, the search widened to
+    // the whole drawing for each (20,000 strokes of distinct shapes took 11 s).
+    let mut members = vec![0usize; elems.iter().map(|e| e.class as usize + 1).max().unwrap_or(0)];
+    elems.iter().for_each(|e| members[e.class as usize] += 1);
     elems
         .iter()
         .enumerate()
         .map(|(i, e)| {
+            if (same_class && members[e.class as usize] < 2) || elems.len() < 2 {
+                return f64::INFINITY;
+            }
             let mut radius = scale;
             loop {
                 let mut best = f64::INFINITY;
