@@ -51,7 +51,7 @@ const NORMAL = `ps.synthesizeStrokes(${grid.replace('W', '1')}, { width: 100, he
 
 function child(expr) {
   return `
-    const ps = await import(${JSON.stringify(pkgDir + '/node.js')});
+    const ps = await import(${JSON.stringify(pkgDir + '/node/index.js')});
     const t0 = performance.now();
     let outcome;
     try { const r = ${expr}; outcome = { kind: 'ok', detail: typeof r === 'object' && r ? Object.keys(r).slice(0, 4).join(',') : String(r) }; }

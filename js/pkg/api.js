@@ -21,4 +21,4 @@ export const METHODS = {
 
 // The wasm exports of banded synthesis, which workers call for the client (bands.js);
 // the entries with the texture engine carry them as `bands`, not as API.
-export const BAND_EXPORTS = ['bandsOpen', 'bandsRun', 'bandsClose'];
+export const BAND_EXPORTS = ['bandsOpen', 'bandsRun', 'bandsClose', 'bandsOpenJobs'];

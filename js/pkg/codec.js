@@ -13,8 +13,11 @@ const codec = engine(
 
 export default codec.init;
 export const initSync = codec.initSync;
-/** How many times a trap (a bug) made the engine restart, for diagnostics. */
+/** How many times the engine replaced its instance after a trap (a bug) or an exception
+ *  thrown through it, for diagnostics. */
 export const restarts = () => codec.restarts;
+/** The engine's restarts, renewals (instances replaced to give memory back) and memory. */
+export const diagnostics = () => codec.diagnostics();
 
 export const version = codec.method('version');
 export const decodeImage = codec.method('decodeImage');

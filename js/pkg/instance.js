@@ -1,21 +1,53 @@
 // One wasm engine module's life: compiled once, instantiated by `init()` (or
-// `initSync()`), checked before every call, and replaced after a trap. A trap is a bug
-// (a Rust panic, a stack overflow): it leaves the instance's memory and stack pointer
-// in an unknown state, so the broken instance is dropped and a fresh one made from the
-// same compiled module; the call that trapped throws an `InternalError`, and the next
-// call works.
+// `initSync()`), checked before every call, and replaced when its state cannot be
+// trusted or its memory should be given back:
+// - after a trap (a bug: a Rust panic, a stack overflow), which leaves the instance's
+//   memory and stack pointer in an unknown state; the call throws an `InternalError`;
+// - after an exception that unwound through the module instead of being returned by it
+//   (page code, such as a getter, throwing where the engine did not catch it): the
+//   frames it skipped never restored the stack pointer; the call throws that exception;
+// - after a call that left its memory more than `SPARE_BYTES` above what the instance
+//   started with: wasm memory only grows, and a page open all day should get it back;
+//   or its table of JS references `SPARE_REFERENCES` above: wasm-bindgen 0.2 leaks a
+//   slot each time a catching import catches (its shim stores the missing return
+//   value), which page code that throws from getters can repeat without end.
+// Each time a fresh instance is made from the same compiled module (a few ms), and
+// the next call works. A call made while another is running (from its progress
+// callback) is refused: it would run on the running call's stack, and a trap in it
+// would replace the instance under the outer call.
+
+/** Memory an instance may keep above its starting size after a call. */
+export const SPARE_BYTES = 64 << 20;
+/** JS reference slots an instance may keep above its starting count after a call. */
+export const SPARE_REFERENCES = 1024;
 
 /** `glue`: the wasm-bindgen module (web target, with `__wbg_reset` added by the build);
  *  `defaultUrl`: where its .wasm is served; `name` and `hint` make the message for a
  *  call before loading. */
 export function engine(glue, defaultUrl, name, hint = '`await init()` first (or call initSync)') {
   let module = null;
+  let exports = null;
+  let baseline = 0;
+  let baselineReferences = 0;
   let loading = null;
   let restarts = 0;
+  let renewals = 0;
+  let running = null;
 
   function start(compiled) {
-    glue.initSync({ module: compiled });
+    exports = glue.initSync({ module: compiled });
     module = compiled;
+    baseline = memoryBytes();
+    baselineReferences = references();
+  }
+
+  const memoryBytes = () => exports?.memory?.buffer.byteLength ?? 0;
+  const references = () => exports?.__wbindgen_externrefs?.length ?? 0;
+
+  /** A fresh instance in place of the current one. */
+  function renew() {
+    glue.__wbg_reset();
+    start(module);
   }
 
   async function compile(input) {
@@ -57,27 +89,62 @@ export function engine(glue, defaultUrl, name, hint = '`await init()` first (or 
     return e instanceof WebAssembly.RuntimeError || (e instanceof RangeError && /call stack/i.test(e.message));
   }
 
-  /** Calls `glue[method]`, replacing the instance if the call traps. */
+  /** Calls `glue[method]`: one call at a time, the instance replaced when needed. */
   function call(method, args) {
     if (!module) {
       throw new Error(`${name}: ${method}() was called before the engine was loaded; ${hint}.`);
     }
+    if (running) {
+      throw new Error(`patternsynth is busy: ${method}() was called while ${running}() is running (from its progress callback); a call from a progress callback must wait until the current call returns (setTimeout or queueMicrotask).`);
+    }
+    running = method;
+    glue.__wbg_takeReturned?.();
     try {
-      return glue[method](...args);
+      const result = glue[method](...args);
+      giveBack(method);
+      return result;
     } catch (e) {
-      if (!isTrap(e)) throw e;
-      glue.__wbg_reset();
-      start(module);
-      restarts += 1;
-      const err = new Error(`Internal error in patternsynth's ${method}() (${e.message}). This is a bug; the engine was restarted, so the next call works.`);
-      err.name = 'InternalError';
-      err.cause = e;
-      throw err;
+      if (isTrap(e)) {
+        renew();
+        restarts += 1;
+        const err = new Error(`Internal error in patternsynth's ${method}() (${e.message}). This is a bug; the engine was restarted, so the next call works.`);
+        err.name = 'InternalError';
+        err.cause = e;
+        throw err;
+      }
+      if (glue.__wbg_takeReturned && !glue.__wbg_takeReturned()) {
+        renew();
+        restarts += 1;
+      } else {
+        giveBack(method);
+      }
+      throw e;
+    } finally {
+      running = null;
+    }
+  }
+
+  /** Replaces an instance whose memory or reference table grew past the spare
+   *  allowance, unless `method` is a step of a banded job that stays open for the next
+   *  (a worker runs a job's steps back to back; any other call means a job still open
+   *  was forgotten, and goes with the instance). */
+  function giveBack(method) {
+    const grown = memoryBytes() > baseline + SPARE_BYTES || references() > baselineReferences + SPARE_REFERENCES;
+    if (grown && !(method.startsWith('bands') && glue.bandsOpenJobs?.() > 0)) {
+      renew();
+      renewals += 1;
     }
   }
 
   /** `method(name)`: the entry-point function that calls `name` (what entries export). */
   const method = (name) => (...args) => call(name, args);
 
-  return { init, initSync, call, method, get restarts() { return restarts; } };
+  /** For diagnostics and tests: restarts (after traps and exceptions through the
+   *  module), renewals (to give memory back), and the memory and JS reference slots
+   *  now and at the start. */
+  const diagnostics = () => ({
+    restarts, renewals, memoryBytes: memoryBytes(), baselineBytes: baseline, references: references(), baselineReferences,
+  });
+
+  return { init, initSync, call, method, diagnostics, get restarts() { return restarts; } };
 }

@@ -9,8 +9,11 @@ const full = engine(glue, new URL('./wasm/full_bg.wasm', import.meta.url), 'patt
 
 export default full.init;
 export const initSync = full.initSync;
-/** How many times a trap (a bug) made the engine restart, for diagnostics. */
+/** How many times the engine replaced its instance after a trap (a bug) or an exception
+ *  thrown through it, for diagnostics. */
 export const restarts = () => full.restarts;
+/** The engine's restarts, renewals (instances replaced to give memory back) and memory. */
+export const diagnostics = () => full.diagnostics();
 export { default as initCodecs, initSync as initCodecsSync, decodeImage, encodePng } from './codec.js';
 
 export const version = full.method('version');

@@ -8,8 +8,11 @@ const texture = engine(glue, new URL('./wasm/texture_bg.wasm', import.meta.url),
 
 export default texture.init;
 export const initSync = texture.initSync;
-/** How many times a trap (a bug) made the engine restart, for diagnostics. */
+/** How many times the engine replaced its instance after a trap (a bug) or an exception
+ *  thrown through it, for diagnostics. */
 export const restarts = () => texture.restarts;
+/** The engine's restarts, renewals (instances replaced to give memory back) and memory. */
+export const diagnostics = () => texture.diagnostics();
 
 export const version = texture.method('version');
 export const synthesizeTexture = texture.method('synthesizeTexture');

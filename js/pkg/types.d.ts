@@ -68,6 +68,8 @@ export interface StrokeOptions extends ClassifyOptions {
   regularize?: boolean;
 }
 /** An image in: RGBA bytes, like a canvas ImageData. */
+/** An engine's state, for diagnostics (`diagnostics()`). */
+export interface Diagnostics { restarts: number; renewals: number; memoryBytes: number; baselineBytes: number; references: number; baselineReferences: number }
 export interface Rgba { width: number; height: number; data: Uint8Array | Uint8ClampedArray }
 /** An image out: `new ImageData(out.data, out.width, out.height)` works. */
 export interface RgbaImage { width: number; height: number; data: Uint8ClampedArray<ArrayBuffer> }

@@ -7,8 +7,11 @@ const vector = engine(glue, new URL('./wasm/vector_bg.wasm', import.meta.url), '
 
 export default vector.init;
 export const initSync = vector.initSync;
-/** How many times a trap (a bug) made the engine restart, for diagnostics. */
+/** How many times the engine replaced its instance after a trap (a bug) or an exception
+ *  thrown through it, for diagnostics. */
 export const restarts = () => vector.restarts;
+/** The engine's restarts, renewals (instances replaced to give memory back) and memory. */
+export const diagnostics = () => vector.diagnostics();
 
 export const version = vector.method('version');
 export const parseSvg = vector.method('parseSvg');

@@ -28,6 +28,7 @@ impl FillRule {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase")]
 pub struct Stroke {
+    #[serde(default)]
     pub points: Vec<[f64; 2]>,
     #[serde(default)]
     pub width: f64,

@@ -95,9 +95,29 @@ pub struct StrokeResult {
     pub passed_over: usize,
 }
 
+/// The most example strokes classified at once: each is compared with its neighbours,
+/// and grouping them into motifs measures their gaps (50,000 take about 3.5 s in wasm).
+pub const MAX_EXAMPLE_STROKES: usize = 50_000;
+/// The most points the example strokes may hold together.
+pub const MAX_EXAMPLE_POINTS: usize = 5_000_000;
+
 fn check_strokes(strokes: &[Stroke]) -> Result<()> {
     if strokes.is_empty() {
         return invalid("There are no strokes: draw some or import an SVG first.");
+    }
+    if strokes.len() > MAX_EXAMPLE_STROKES {
+        return Err(Error::TooLarge(format!(
+            "There are {} example strokes; the limit is {MAX_EXAMPLE_STROKES} (each is compared with its \
+             neighbours). Use an excerpt of the drawing.",
+            strokes.len()
+        )));
+    }
+    let points: usize = strokes.iter().map(|s| s.points.len()).sum();
+    if points > MAX_EXAMPLE_POINTS {
+        return Err(Error::TooLarge(format!(
+            "The example strokes hold {points} points; the limit is {MAX_EXAMPLE_POINTS}. Simplify them \
+             (import the SVG with a larger tolerance) or use an excerpt."
+        )));
     }
     strokes.iter().enumerate().try_for_each(|(i, s)| s.validate(i))
 }

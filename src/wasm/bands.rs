@@ -27,6 +27,11 @@ struct StepStart {
     uses: Option<Uses>,
 }
 
+/// Jobs kept open at once. The client closes each job when its call ends, and runs one
+/// call at a time; a job past this many was forgotten (a caller that never closed it),
+/// so the oldest is closed to keep its memory from piling up.
+const MAX_OPEN_JOBS: usize = 8;
+
 thread_local! {
     static OPEN: RefCell<(u32, BTreeMap<u32, Open>)> = const { RefCell::new((0, BTreeMap::new())) };
 }
@@ -81,6 +86,9 @@ pub fn bands_open(method: &str, args: js_sys::Array) -> Result<JsValue, JsValue>
     }
     let exemplars = job.exemplars();
     let handle = OPEN.with_borrow_mut(|(next, jobs)| {
+        while jobs.len() >= MAX_OPEN_JOBS {
+            jobs.pop_first();
+        }
         *next += 1;
         jobs.insert(*next, Open { job, parent: Vec::new(), start: None });
         *next
@@ -194,4 +202,10 @@ pub fn bands_run(
 #[wasm_bindgen(js_name = bandsClose)]
 pub fn bands_close(handle: u32) {
     OPEN.with_borrow_mut(|(_, jobs)| jobs.remove(&handle));
+}
+
+/// How many jobs are open (the package keeps an instance that holds any).
+#[wasm_bindgen(js_name = bandsOpenJobs)]
+pub fn bands_open_jobs() -> u32 {
+    OPEN.with_borrow(|(_, jobs)| jobs.len() as u32)
 }

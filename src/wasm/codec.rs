@@ -1,7 +1,8 @@
 //! PNG and JPEG in wasm, for Node and for pages that want bytes without a canvas.
 
+use super::read::{self, type_name};
 use super::rgba::{rgba_from_js, rgba_to_js};
-use super::{error, js_error, type_name};
+use super::{error, js_error};
 use crate::raster;
 use wasm_bindgen::prelude::*;
 
@@ -12,6 +13,9 @@ const MAX_ENCODED_BYTES: u32 = 96 << 20;
 /// Decodes PNG or JPEG bytes to RGBA.
 #[wasm_bindgen(js_name = decodeImage)]
 pub fn decode_image(bytes: JsValue) -> Result<JsValue, JsValue> {
+    if read::detached(&bytes) {
+        return Err(read::detached_error("image file"));
+    }
     let array = if let Some(a) = bytes.dyn_ref::<js_sys::Uint8Array>() {
         a.clone()
     } else if let Some(b) = bytes.dyn_ref::<js_sys::ArrayBuffer>() {

@@ -1,7 +1,8 @@
 //! RGBA images across the boundary: `{ width, height, data }` objects (an `ImageData`
 //! or anything shaped like one) to sizes and bytes, and back.
 
-use super::{error, js_error, type_name};
+use super::read::{self, type_name};
+use super::{error, js_error};
 use crate::raster;
 use wasm_bindgen::prelude::*;
 
@@ -14,9 +15,9 @@ pub fn rgba_from_js(v: &JsValue, what: &str) -> Result<(usize, usize, Vec<u8>), 
             type_name(v)
         )));
     }
-    let get = |k: &str| js_sys::Reflect::get(v, &JsValue::from_str(k)).unwrap_or(JsValue::UNDEFINED);
+    let get = |k: &str| read::get(v, k, what);
     let dim = |k: &str| -> Result<usize, JsValue> {
-        let n = get(k).as_f64().ok_or_else(|| error(&format!("The {what}'s {k} must be a number.")))?;
+        let n = get(k)?.as_f64().ok_or_else(|| error(&format!("The {what}'s {k} must be a number.")))?;
         if !(n.is_finite() && n >= 0.0 && n.fract() == 0.0 && n <= u32::MAX as f64) {
             return Err(error(&format!("The {what}'s {k} must be a whole number, got {n}.")));
         }
@@ -24,7 +25,10 @@ pub fn rgba_from_js(v: &JsValue, what: &str) -> Result<(usize, usize, Vec<u8>), 
     };
     let (w, h) = (dim("width")?, dim("height")?);
     raster::image::check_size(w, h, what).map_err(js_error)?;
-    let data = get("data");
+    let data = get("data")?;
+    if read::detached(&data) {
+        return Err(read::detached_error(&format!("{what}'s data")));
+    }
     let length = if let Some(a) = data.dyn_ref::<js_sys::Uint8ClampedArray>() {
         a.length()
     } else if let Some(a) = data.dyn_ref::<js_sys::Uint8Array>() {

@@ -1,7 +1,8 @@
 //! Engines 2 and 3's entry points: texture synthesis, blends, seamless tiles.
 
+use super::read::{self, options};
 use super::rgba::{rgba_from_js, rgba_to_js};
-use super::{error, from_js, from_js_with, js_error, to_js, JsProgress};
+use super::{error, js_error, to_js, JsProgress};
 use crate::raster::{self, coefficient::Transfer, Coefficient, Image};
 use crate::seamless;
 use wasm_bindgen::prelude::*;
@@ -12,13 +13,8 @@ fn image_from_js(v: &JsValue, what: &str) -> Result<Image, JsValue> {
     Image::from_rgba8(w, h, &bytes).map_err(js_error)
 }
 
-/// Options objects that carry the output size must be given.
-fn required(opts: &JsValue, call: &str) -> Result<(), JsValue> {
-    if opts.is_undefined() || opts.is_null() {
-        return Err(error(&format!("{call} needs options with the output size: {{ width, height }}.")));
-    }
-    Ok(())
-}
+/// The options that carry the output size.
+const SIZE: [&str; 2] = ["width", "height"];
 
 /// More of one texture ("make more of this texture").
 #[wasm_bindgen(js_name = synthesizeTexture)]
@@ -33,8 +29,7 @@ pub fn synthesize_texture(image: JsValue, opts: JsValue, on_progress: JsValue) -
 /// `synthesizeTexture`'s arguments read.
 pub(super) fn texture_args(image: JsValue, opts: JsValue) -> Result<(Image, raster::TextureOptions), JsValue> {
     let ex = image_from_js(&image, "image")?;
-    required(&opts, "synthesizeTexture")?;
-    Ok((ex, from_js(opts, "texture options")?))
+    Ok((ex, options(&opts, "texture options", &[], &SIZE)?))
 }
 
 /// The blend options' own keys beside those of `TextureOptions` (read by hand:
@@ -68,16 +63,9 @@ pub(super) fn blend_args(
 ) -> Result<(Image, Image, raster::BlendOptions), JsValue> {
     let a = image_from_js(&a, "first image (A)")?;
     let b = image_from_js(&b, "second image (B)")?;
-    required(&opts, "blendTextures")?;
-    let key = |k: &str| {
-        if opts.is_object() {
-            js_sys::Reflect::get(&opts, &JsValue::from_str(k)).unwrap_or(JsValue::UNDEFINED)
-        } else {
-            JsValue::UNDEFINED
-        }
-    };
-    let (coefficient_js, angle_js, transfer_js) = (key("coefficient"), key("angle"), key("transfer"));
-    let base: raster::TextureOptions = from_js_with(opts, "blend options", &BLEND_KEYS)?;
+    let base: raster::TextureOptions = options(&opts, "blend options", &BLEND_KEYS, &SIZE)?;
+    let key = |k: &str| read::get(&opts, k, "blend options");
+    let (coefficient_js, angle_js, transfer_js) = (key("coefficient")?, key("angle")?, key("transfer")?);
     let angle = match angle_js.as_f64() {
         Some(a) if a.is_finite() => Some(a),
         None if angle_js.is_undefined() => None,
@@ -89,6 +77,9 @@ pub(super) fn blend_args(
         None => return Err(error("transfer must be 'linear', 'ease' or 'steep'.")),
     };
     let coefficient = if let Some(map) = coefficient_js.dyn_ref::<js_sys::Float32Array>() {
+        if read::detached(map) {
+            return Err(read::detached_error("coefficient map"));
+        }
         Coefficient::Map(map.to_vec())
     } else if let Some(name) = coefficient_js.as_string() {
         match (name.as_str(), angle) {
@@ -108,7 +99,7 @@ pub(super) fn blend_args(
 #[wasm_bindgen(js_name = seamlessTile)]
 pub fn seamless_tile(image: JsValue, opts: JsValue, on_progress: JsValue) -> Result<JsValue, JsValue> {
     let (width, height, data) = rgba_from_js(&image, "image")?;
-    let opts: seamless::SeamlessOptions = from_js(opts, "seamless tile options")?;
+    let opts: seamless::SeamlessOptions = options(&opts, "seamless tile options", &[], &[])?;
     let input = raster::Rgba { width, height, data };
     let mut progress = JsProgress::from_js(on_progress)?;
     let res = seamless::seamless_tile(&input, &opts, &mut progress);

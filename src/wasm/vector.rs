@@ -1,6 +1,7 @@
 //! Engine 1's entry points: SVG import, classification, synthesis, seamless SVG tiles.
 
-use super::{error, from_js, js_error, to_js, type_name, JsProgress};
+use super::read::{self, options};
+use super::{error, js_error, to_js, type_name, JsProgress};
 use crate::vector;
 use wasm_bindgen::prelude::*;
 
@@ -18,18 +19,14 @@ pub fn parse_svg_report(svg: JsValue, opts: JsValue) -> Result<JsValue, JsValue>
 
 fn import(svg: JsValue, opts: JsValue) -> Result<vector::Import, JsValue> {
     let text = string_from_js(&svg, "SVG (the document's text)")?;
-    let opts: vector::ImportOptions = from_js(opts, "SVG options")?;
+    let opts: vector::ImportOptions = options(&opts, "SVG options", &[], &[])?;
     vector::parse_svg(&text, &opts).map_err(js_error)
 }
 
-fn strokes_from_js(v: JsValue) -> Result<Vec<vector::Stroke>, JsValue> {
-    if !js_sys::Array::is_array(&v) {
-        return Err(error(&format!(
-            "Strokes must be an array of {{ points, width, stroke, fill }}, got {}.",
-            type_name(&v)
-        )));
-    }
-    serde_wasm_bindgen::from_value(v).map_err(|e| error(&format!("Invalid stroke: {e}")))
+/// Strokes that are all examples (classified, grouped, grown from), within the
+/// engine's limits; refused before reading past them.
+fn examples(v: &JsValue) -> Result<Vec<vector::Stroke>, JsValue> {
+    read::strokes(v, vector::synthesize::MAX_EXAMPLE_STROKES, vector::synthesize::MAX_EXAMPLE_POINTS)
 }
 
 #[derive(serde::Deserialize, Default)]
@@ -43,8 +40,8 @@ struct ClassifyOptions {
 /// Classes of similar strokes, with the tolerances used and the automatic proposal.
 #[wasm_bindgen(js_name = classifyStrokes)]
 pub fn classify_strokes(strokes: JsValue, opts: JsValue) -> Result<JsValue, JsValue> {
-    let strokes = strokes_from_js(strokes)?;
-    let o: ClassifyOptions = from_js(opts, "classification options")?;
+    let strokes = examples(&strokes)?;
+    let o: ClassifyOptions = options(&opts, "classification options", &[], &[])?;
     to_js(
         &vector::classify_strokes(&strokes, o.path_tolerance, o.width_tolerance, o.color_tolerance)
             .map_err(js_error)?,
@@ -54,11 +51,8 @@ pub fn classify_strokes(strokes: JsValue, opts: JsValue) -> Result<JsValue, JsVa
 /// Grows a `width x height` pattern from example strokes.
 #[wasm_bindgen(js_name = synthesizeStrokes)]
 pub fn synthesize_strokes(strokes: JsValue, opts: JsValue, on_progress: JsValue) -> Result<JsValue, JsValue> {
-    let strokes = strokes_from_js(strokes)?;
-    if opts.is_undefined() || opts.is_null() {
-        return Err(error("synthesizeStrokes needs options with the output size: { width, height }."));
-    }
-    let opts: vector::StrokeOptions = from_js(opts, "synthesis options")?;
+    let strokes = examples(&strokes)?;
+    let opts: vector::StrokeOptions = options(&opts, "synthesis options", &[], &["width", "height"])?;
     let mut progress = JsProgress::from_js(on_progress)?;
     let res = vector::synthesize_strokes(&strokes, &opts, &mut progress);
     to_js(&progress.finish(res)?)
@@ -68,16 +62,18 @@ pub fn synthesize_strokes(strokes: JsValue, opts: JsValue, on_progress: JsValue)
 /// confidence each, or none with the reason.
 #[wasm_bindgen(js_name = suggestStrokes)]
 pub fn suggest_strokes(strokes: JsValue, opts: JsValue) -> Result<JsValue, JsValue> {
-    let strokes = strokes_from_js(strokes)?;
-    let opts: vector::SuggestOptions = from_js(opts, "suggestion options")?;
+    // A drawing may hold more than the examples' limit: only its last strokes are read
+    // for the repetition.
+    let strokes = read::strokes(&strokes, read::MAX_INPUT_STROKES, read::MAX_INPUT_POINTS)?;
+    let opts: vector::SuggestOptions = options(&opts, "suggestion options", &[], &[])?;
     to_js(&vector::suggest_strokes(&strokes, &opts).map_err(js_error)?)
 }
 
 /// A seamless SVG tile of the strokes' repeat (SPEC 1.4): repeats as a CSS background.
 #[wasm_bindgen(js_name = strokeTile)]
 pub fn stroke_tile(strokes: JsValue, opts: JsValue) -> Result<JsValue, JsValue> {
-    let strokes = strokes_from_js(strokes)?;
-    let opts: vector::TileOptions = from_js(opts, "tile options")?;
+    let strokes = examples(&strokes)?;
+    let opts: vector::TileOptions = options(&opts, "tile options", &[], &[])?;
     to_js(&vector::stroke_tile(&strokes, &opts).map_err(js_error)?)
 }
 

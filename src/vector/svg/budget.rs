@@ -1,7 +1,7 @@
 //! What an SVG document will make the parser and the resolver do, measured before they
 //! run, so a hostile document gets a clear refusal instead of a stack overflow or a hang.
 //!
-//! Three costs are not bounded by the document's size alone:
+//! Four costs are not bounded by the document's size alone:
 //! - **Depth.** The importer resolves the tree recursively, one stack frame chain per
 //!   nesting level and per reference hop (`<use>`, `href`); a few thousand levels
 //!   overflow the wasm stack, and that kills the instance, not just the call.
@@ -11,6 +11,8 @@
 //!   draws, including the copies `<use>` makes: rules x elements selector matches
 //!   (each in time linear in the chain, `selector`); and the CSS parser's work on one
 //!   rule is quadratic in its declarations.
+//! - **Entities.** References to internal entities expand into the parsed text
+//!   (`entities`): a few of them nested are gigabytes.
 
 use crate::error::{Error, Result};
 use roxmltree::{Document, Node};
@@ -54,8 +56,25 @@ pub fn attribute_pairs(svg: &str) -> u64 {
     pairs
 }
 
-/// Refuses a source whose attribute check alone would take seconds.
+/// Text the document's entity references may expand to (as much as the largest
+/// document accepted).
+pub const MAX_ENTITY_TEXT: u64 = super::import::MAX_SVG_BYTES as u64;
+
+/// Refuses a source whose attribute check alone would take seconds, or whose entities
+/// expand past `MAX_ENTITY_TEXT`.
 pub fn check_source(svg: &str) -> Result<()> {
+    if let (total, Some(e)) = super::entities::expansion(svg) {
+        if total > MAX_ENTITY_TEXT {
+            return Err(Error::TooLarge(format!(
+                "The SVG's entities expand to {} MB of text (`&{};`, {} KB, is used {} times); the limit is {} MB.",
+                total >> 20,
+                e.name,
+                e.bytes >> 10,
+                e.references,
+                MAX_ENTITY_TEXT >> 20
+            )));
+        }
+    }
     let pairs = attribute_pairs(svg);
     if pairs > MAX_ATTRIBUTE_PAIRS {
         return Err(Error::TooLarge(format!(

@@ -4,6 +4,7 @@
 
 pub mod budget;
 pub mod compound;
+mod entities;
 pub mod export;
 pub mod import;
 mod selector;
