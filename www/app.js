@@ -12,11 +12,33 @@ for (const section of document.querySelectorAll('[data-feature]')) {
   features[section.dataset.feature]?.(section, client);
 }
 
-for (const tab of document.querySelectorAll('[role="tab"]')) {
-  tab.addEventListener('click', () => {
-    for (const t of document.querySelectorAll('[role="tab"]')) t.setAttribute('aria-selected', String(t === tab));
-    for (const s of document.querySelectorAll('.tab')) s.hidden = s.id !== `tab-${tab.dataset.tab}`;
+// Tabs as the WAI-ARIA tabs pattern: one tab in the Tab order (the selected one), the
+// arrow keys, Home and End move between tabs and select them.
+const tabs = [...document.querySelectorAll('[role="tab"]')];
+function select(tab, focus = false) {
+  for (const t of tabs) {
+    t.setAttribute('aria-selected', String(t === tab));
+    t.tabIndex = t === tab ? 0 : -1;
+  }
+  for (const s of document.querySelectorAll('.tab')) s.hidden = s.id !== tab.getAttribute('aria-controls');
+  if (focus) tab.focus();
+}
+for (const [i, tab] of tabs.entries()) {
+  tab.addEventListener('click', () => select(tab));
+  tab.addEventListener('keydown', (e) => {
+    const to = { ArrowRight: i + 1, ArrowLeft: i - 1, Home: 0, End: tabs.length - 1 }[e.key];
+    if (to === undefined) return;
+    e.preventDefault();
+    select(tabs[(to + tabs.length) % tabs.length], true);
   });
 }
+
+// File pickers: a button (reachable by keyboard, named) opens the hidden input after it.
+for (const button of document.querySelectorAll('.file-button')) {
+  button.addEventListener('click', () => button.nextElementSibling.click());
+}
+
+// Hints for the device: keys on a keyboard, taps on a touch screen.
+document.documentElement.classList.toggle('touch', matchMedia('(hover: none) and (pointer: coarse)').matches);
 
 client.version().then((v) => { document.getElementById('version').textContent = `v${v}`; });

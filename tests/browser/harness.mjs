@@ -4,10 +4,10 @@ import { chromium } from 'playwright-core';
 import { CHROMIUM } from './chromium.mjs';
 import { serve } from '../../scripts/static-server.mjs';
 
-export async function openPlayground({ width = 1400, height = 1000, tab } = {}) {
+export async function openPlayground({ width = 1400, height = 1000, tab, touch = false } = {}) {
   const server = await serve('www', 0);
   const browser = await chromium.launch(CHROMIUM);
-  const context = await browser.newContext({ acceptDownloads: true, viewport: { width, height } });
+  const context = await browser.newContext({ acceptDownloads: true, viewport: { width, height }, hasTouch: touch, isMobile: touch });
   const page = await context.newPage();
   page.on('pageerror', (e) => console.error('page error:', e.message));
   const url = `http://127.0.0.1:${server.address().port}/`;

@@ -41,3 +41,10 @@ export function offerDownload(link, url) {
   link.classList.remove('disabled');
   link.removeAttribute('aria-disabled');
 }
+
+/** Takes a download link back (its result is gone or out of date). */
+export function withdrawDownload(link) {
+  link.removeAttribute('href');
+  link.classList.add('disabled');
+  link.setAttribute('aria-disabled', 'true');
+}

@@ -2,7 +2,7 @@
 // worker (progress, cancel), judge it repeated 3x3, download PNG.
 import { defaultOptions, imageKey, maxInputSide, methods, storageKey, textures } from '../shared/meta.js';
 import { forget, load, store } from '../../../shared/storage.js';
-import { offerDownload, runControls } from '../../../shared/run.js';
+import { offerDownload, runControls, withdrawDownload } from '../../../shared/run.js';
 import { builtinBitmap, fileBitmap, keepImage, keptImage, onDropFile, rgbaOf } from '../../../shared/images.js';
 
 export function mountSeamless(root, client) {
@@ -86,6 +86,10 @@ export function mountSeamless(root, client) {
     if (settings.size) opts.size = Number(settings.size);
     if (settings.method !== 'synthesis') opts.maxCountDifference = Number(settings.maxCountDifference);
     const t0 = performance.now();
+    // The previous tile goes: should this run fail, it must not look like its result.
+    $('seam-repeat').classList.remove('shown');
+    $('seam-info').textContent = 'Making the tile…';
+    withdrawDownload($('seam-download'));
     await runs.start('Making the tile…', async (call) => {
       const r = await client.seamlessTile(image, opts, call);
       const ms = performance.now() - t0;
@@ -98,13 +102,16 @@ export function mountSeamless(root, client) {
       if (resultUrl) URL.revokeObjectURL(resultUrl);
       resultUrl = URL.createObjectURL(blob);
       // The 3x3 repeat, to judge the seams.
-      const k = Math.max(1, Math.floor(Math.min(512, $('seam-repeat').parentElement.clientWidth - 16) / (3 * width)));
+      // Whole pixels when the column has room, scaled down to fit it when it has not.
+      const fit = Math.min(512, $('seam-repeat').parentElement.clientWidth - 16) / (3 * width);
+      const k = fit >= 1 ? Math.floor(fit) : fit;
       Object.assign($('seam-repeat').style, { backgroundImage: `url("${resultUrl}")`, backgroundSize: `${k * width}px ${k * height}px`, width: `${3 * k * width}px`, height: `${3 * k * height}px` });
       $('seam-repeat').classList.add('shown');
       offerDownload($('seam-download'), resultUrl);
       $('seam-info').textContent = `${width}×${height}, restoration rate ${(100 * r.restorationRate).toFixed(1)}%, seam score ${r.seamScore.toFixed(2)} (about 1: no seam), ${ms.toFixed(0)} ms`;
       say(r.warnings.length ? r.warnings.join(' ') : 'Done.', r.warnings.length ? 'warn' : '');
     });
+    if (!$('seam-repeat').classList.contains('shown')) $('seam-info').textContent = 'No tile: see the message on the left.';
   });
 
   // --- start ---

@@ -163,6 +163,7 @@ export class Drawing {
     c.addEventListener('pointerdown', (e) => {
       if (e.button !== 0) return;
       c.setPointerCapture(e.pointerId);
+      this.liveTouch = e.pointerType === 'touch';
       const pen = this.getPen();
       this.live = {
         points: [this.point(e)],
@@ -188,10 +189,12 @@ export class Drawing {
       const s = this.live;
       this.live = null;
       // A tap (no drag) on a ghost is not a dot: it is handed on (to accept the ghosts).
+      // A finger's tap anywhere else is not a dot either (a stray touch, or one meant to
+      // scroll or focus): on a touch screen dots are drawn as tiny strokes.
       const b = bounds([s]);
       const tap = Math.max(b.x1 - b.x0, b.y1 - b.y0) - s.width <= 4;
       if (keep && tap && this.ghosts.length && this.onGhost(s.points[0]) && this.onTap?.(s.points[0])) this.render();
-      else if (keep && (s.stroke || s.fill)) this.set([...this.strokes, s]);
+      else if (keep && !(tap && this.liveTouch) && (s.stroke || s.fill)) this.set([...this.strokes, s]);
       else this.render();
     };
     c.addEventListener('pointerup', () => finish(true));

@@ -3,7 +3,7 @@ import { Drawing, fitStrokes } from './canvas.js';
 import { Autocomplete } from './autocomplete.js';
 import { classColors, defaultOptions, defaultPen, maxSide, storageKey, suggestCount } from '../shared/meta.js';
 import { load, store as save } from '../../../shared/storage.js';
-import { offerDownload, runControls } from '../../../shared/run.js';
+import { offerDownload, runControls, withdrawDownload } from '../../../shared/run.js';
 
 const SETTINGS_KEY = 'patternsynth.strokes.settings.v1';
 
@@ -89,18 +89,26 @@ export function mountStrokes(root, client) {
       return true;
     },
   });
-  canvas.addEventListener('pointerdown', () => canvas.focus());
+  // Tab accepts ghosts once after drawing (the hand is on the canvas); a keyboard user
+  // who tabs onto the canvas accepts with Enter, and Tab moves on: no trap.
+  let tabAccepts = false;
+  canvas.addEventListener('pointerdown', () => {
+    canvas.focus();
+    tabAccepts = true;
+  });
   $('undo').addEventListener('click', () => drawing.undo());
   $('redo').addEventListener('click', () => drawing.redo());
   $('clear').addEventListener('click', () => drawing.set([]));
   document.addEventListener('keydown', (e) => {
     if (root.hidden) return;
-    // Tab and Escape act on ghosts only from the canvas (or nothing focused), so Tab
-    // still moves focus through the page's controls.
-    const onCanvas = document.activeElement === canvas || document.activeElement === document.body;
-    if (e.key === 'Tab' && !e.shiftKey && onCanvas && autocomplete.ghosts().length) {
+    // Tab, Enter and Escape act on ghosts only while the canvas has focus and ghosts are
+    // shown; otherwise Tab moves focus through the page as everywhere else.
+    const onCanvas = document.activeElement === canvas;
+    const accepting = e.key === 'Enter' || (e.key === 'Tab' && !e.shiftKey && tabAccepts);
+    if (accepting && onCanvas && autocomplete.ghosts().length) {
       e.preventDefault();
       autocomplete.accept();
+      tabAccepts = false;
       return;
     }
     if (e.key === 'Escape' && onCanvas && autocomplete.dismiss()) return void e.preventDefault();
@@ -121,8 +129,9 @@ export function mountStrokes(root, client) {
       $('suggest-status').setAttribute('aria-busy', String(pending));
       $('accept-ghosts').disabled = !count;
       $('dismiss-ghosts').disabled = !count;
+      const touch = document.documentElement.classList.contains('touch');
       $('suggest-status').textContent = count
-        ? `${count} suggested stroke${count === 1 ? '' : 's'}: Tab or tap a ghost to accept, Esc to dismiss.`
+        ? `${count} suggested stroke${count === 1 ? '' : 's'}: ${touch ? 'tap a ghost or Accept to add them.' : 'Tab (after drawing), Enter or a tap on a ghost accepts them, Esc dismisses them.'}`
         : settings.autocomplete === false ? '' : reason ?? '';
     },
   });
@@ -253,6 +262,10 @@ export function mountStrokes(root, client) {
   let tileUrl = null;
   $('make-tile').addEventListener('click', async () => {
     $('make-tile').disabled = true;
+    // A refusal must not leave the previous tile on screen as if it were this one's.
+    $('tile-preview').classList.remove('shown');
+    $('tile-info').textContent = 'Making the tile…';
+    withdrawDownload($('tile-download'));
     try {
       const opts = { variation: settings.variation, seed: Number(settings.seed) || 0, repeats: Number(settings.tileRepeats) || 1, ...tolerances() };
       const t = await client.strokeTile(drawing.strokes, opts);
@@ -272,6 +285,7 @@ export function mountStrokes(root, client) {
       $('tile-info').textContent = `${+t.width.toFixed(2)}×${+t.height.toFixed(2)} tile, ${t.sites} elements (${t.strokes.length} strokes with the edge copies), shown 3×3.`;
       say('Tile ready.');
     } catch (e) {
+      $('tile-info').textContent = 'No tile: see the message above.';
       say(e.message, 'error');
     } finally {
       $('make-tile').disabled = false;

@@ -1,0 +1,162 @@
+// The playground for a keyboard, a screen reader and a finger (issue 29): Tab moves
+// focus everywhere (it accepts ghosts only once after drawing on the canvas; Enter
+// accepts them from the keyboard); every control is reachable and
+// named (axe-core, and Chromium's accessibility tree); the tabs follow the WAI-ARIA
+// pattern; on a phone-sized touch screen targets are at least 24 px, a tap is not a
+// stroke and the hints say "tap"; no tab overflows sideways at 390, 1024 and 1440 px;
+// a refused tile takes the previous one off the screen. Leaves screenshots in out/.
+import { test, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { mkdirSync, readFileSync } from 'node:fs';
+import { createRequire } from 'node:module';
+import { openPlayground } from './harness.mjs';
+
+const AXE = readFileSync(createRequire(import.meta.url).resolve('axe-core/axe.min.js'), 'utf8');
+const TABS = ['strokes', 'blend', 'seamless'];
+mkdirSync('out', { recursive: true });
+
+const opened = [];
+async function open(opts) {
+  const p = await openPlayground(opts);
+  opened.push(p);
+  await p.page.waitForFunction(() => /[1-9]\d* strokes/.test(document.querySelector('#stroke-count').textContent));
+  return p;
+}
+after(async () => { for (const p of opened) await p.close(); });
+
+const strokeCount = (page) => page.evaluate(() => Number(document.querySelector('#stroke-count').textContent.split(' ')[0]));
+const focused = (page) => page.evaluate(() => {
+  const e = document.activeElement;
+  return e === document.body ? 'body' : `${e.tagName.toLowerCase()}${e.id ? `#${e.id}` : ''}${e.className ? `.${e.className}` : ''}:${(e.getAttribute('aria-label') ?? e.textContent).trim().slice(0, 30)}`;
+});
+
+/** Controls in Chromium's accessibility tree with an interactive role and no name. */
+async function unnamed(page) {
+  const cdp = await page.context().newCDPSession(page);
+  const { nodes } = await cdp.send('Accessibility.getFullAXTree');
+  const roles = new Set(['button', 'checkbox', 'radio', 'textbox', 'spinbutton', 'slider', 'combobox', 'progressbar', 'tab', 'tabpanel', 'link', 'image', 'img', 'canvas', 'listbox', 'switch']);
+  return nodes
+    .filter((n) => !n.ignored && roles.has(n.role?.value) && !(n.name?.value ?? '').trim())
+    .map((n) => `${n.role.value} (backend node ${n.backendDOMNodeId})`);
+}
+
+async function axe(page) {
+  if (!(await page.evaluate(() => 'axe' in window))) await page.addScriptTag({ content: AXE });
+  const r = await page.evaluate(() => window.axe.run(document, { resultTypes: ['violations'] }));
+  return r.violations.map((v) => `${v.id}: ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`);
+}
+
+test('from a fresh load Tab moves focus through the controls and adds no strokes', async () => {
+  const { page } = await open();
+  const before = await strokeCount(page);
+  const seen = [];
+  for (let i = 0; i < 24; i++) {
+    await page.keyboard.press('Tab');
+    seen.push(await focused(page));
+  }
+  assert.equal(await strokeCount(page), before, 'Tab added strokes');
+  assert.ok(!seen.includes('body'), seen.join(' | '));
+  for (const name of ['Vector strokes', 'Import SVG', 'Undo']) assert.ok(seen.some((s) => s.includes(name)), `${name} not reached: ${seen.join(' | ')}`);
+  // On the canvas reached by keyboard, Enter accepts the ghosts and Tab moves on.
+  await page.focus('#draw');
+  await page.waitForFunction(() => !document.querySelector('#accept-ghosts').disabled, null, { timeout: 15_000 });
+  await page.keyboard.press('Enter');
+  assert.ok(await strokeCount(page) > before, 'Enter accepted the ghosts');
+  await page.focus('#draw');
+  await page.keyboard.press('Tab');
+  assert.notEqual(await focused(page), 'canvas#draw', 'Tab leaves the canvas reached by keyboard');
+  await page.evaluate(() => document.querySelector('#clear').click());
+  await page.focus('#draw');
+  await page.keyboard.press('Tab');
+  assert.notEqual(await focused(page), 'canvas#draw', 'with no ghosts, Tab leaves the canvas');
+  assert.equal(await strokeCount(page), 0);
+});
+
+test('every tab: no axe violations, no unnamed control; file pickers are buttons in the Tab order', async () => {
+  const { page } = await open();
+  for (const tab of TABS) {
+    await page.click(`[data-tab="${tab}"]`);
+    await page.waitForTimeout(300);
+    assert.deepEqual(await axe(page), [], `axe on ${tab}`);
+    assert.deepEqual(await unnamed(page), [], `unnamed controls on ${tab}`);
+    const pickers = await page.$$eval(`#tab-${tab} .file-button`, (bs) => bs.map((b) => b.tabIndex >= 0 && b.offsetParent !== null));
+    assert.ok(pickers.length >= 1 && pickers.every(Boolean), `${tab}: ${pickers}`);
+  }
+});
+
+test('tabs follow the WAI-ARIA pattern: one in the Tab order, arrows and Home/End select', async () => {
+  const { page } = await open();
+  await page.focus('[data-tab="strokes"]');
+  const state = () => page.evaluate(() => [...document.querySelectorAll('[role="tab"]')].map((t) => `${t.dataset.tab}:${t.getAttribute('aria-selected')}:${t.tabIndex}:${document.getElementById(t.getAttribute('aria-controls')).hidden}`));
+  assert.deepEqual(await state(), ['strokes:true:0:false', 'blend:false:-1:true', 'seamless:false:-1:true']);
+  await page.keyboard.press('ArrowRight');
+  assert.deepEqual(await state(), ['strokes:false:-1:true', 'blend:true:0:false', 'seamless:false:-1:true']);
+  assert.match(await focused(page), /Blend textures/);
+  await page.keyboard.press('End');
+  assert.equal((await state())[2], 'seamless:true:0:false');
+  await page.keyboard.press('ArrowRight');
+  assert.equal((await state())[0], 'strokes:true:0:false', 'wraps around');
+  await page.keyboard.press('Tab');
+  assert.doesNotMatch(await focused(page), /Blend textures|Seamless tile/, 'Tab leaves the tab list');
+  const panels = await page.$$eval('[role="tabpanel"]', (ps) => ps.map((p) => document.getElementById(p.getAttribute('aria-labelledby'))?.textContent));
+  assert.deepEqual(panels, ['Vector strokes', 'Blend textures', 'Seamless tile']);
+});
+
+test('a phone: targets of at least 24 px, a tap is not a stroke, hints without keys', async () => {
+  const { page } = await open({ width: 390, height: 844, touch: true });
+  for (const tab of TABS) {
+    await page.click(`[data-tab="${tab}"]`);
+    const small = await page.evaluate(() => [...document.querySelectorAll('button, a.button, input:not([type=hidden]), select, [role=tab]')]
+      .filter((e) => e.offsetParent !== null && !e.hidden)
+      .map((e) => ({ e, r: e.getBoundingClientRect() }))
+      .filter(({ r }) => r.width < 24 || r.height < 24)
+      .map(({ e, r }) => `${e.id || e.type || e.tagName} ${Math.round(r.width)}x${Math.round(r.height)}`));
+    assert.deepEqual(small, [], `${tab}: targets under 24 px`);
+    await page.screenshot({ path: `out/a11y-phone-${tab}.png`, fullPage: true });
+  }
+  await page.click('[data-tab="strokes"]');
+  const before = await strokeCount(page);
+  const box = await page.locator('#draw').boundingBox();
+  await page.touchscreen.tap(box.x + box.width * 0.9, box.y + box.height * 0.9);
+  await page.waitForTimeout(200);
+  assert.equal(await strokeCount(page), before, 'a tap added a stroke');
+  const hints = await page.evaluate(() => [...document.querySelectorAll('kbd')].filter((k) => k.offsetParent !== null).length);
+  assert.equal(hints, 0, 'key hints shown on a touch screen');
+});
+
+test('no tab overflows sideways at 390, 1024 and 1440 px, with a 512 px seamless tile shown', async () => {
+  for (const width of [390, 1024, 1440]) {
+    const { page } = await open({ width, height: 900 });
+    for (const tab of TABS) {
+      await page.click(`[data-tab="${tab}"]`);
+      if (tab === 'seamless' && width !== 1024) {
+        await page.selectOption('#seam-size', '512');
+        await page.selectOption('#seam-method', 'synthesis');
+        await page.click('#seam-run');
+        await page.waitForFunction(() => document.querySelector('#seam-repeat').classList.contains('shown'), null, { timeout: 120_000 });
+        await page.screenshot({ path: `out/a11y-seamless-${width}.png` });
+      }
+      const over = await page.evaluate(() => document.scrollingElement.scrollWidth - window.innerWidth);
+      assert.ok(over <= 0, `${tab} at ${width} px overflows by ${over} px`);
+    }
+  }
+});
+
+test('a refused tile takes the previous tile, its text and its download off the screen', async () => {
+  const { page } = await open();
+  await page.click('#make-tile');
+  await page.waitForFunction(() => document.querySelector('#tile-preview').classList.contains('shown'), null, { timeout: 30_000 });
+  assert.equal(await page.getAttribute('#tile-download', 'aria-disabled'), null);
+  // One stroke: no repeat to tile.
+  await page.evaluate(() => document.querySelector('#clear').click());
+  const box = await page.locator('#draw').boundingBox();
+  await page.mouse.move(box.x + 100, box.y + 100);
+  await page.mouse.down();
+  await page.mouse.move(box.x + 160, box.y + 140, { steps: 4 });
+  await page.mouse.up();
+  await page.click('#make-tile');
+  await page.waitForFunction(() => /No tile/.test(document.querySelector('#tile-info').textContent), null, { timeout: 30_000 });
+  assert.equal(await page.evaluate(() => document.querySelector('#tile-preview').classList.contains('shown')), false);
+  assert.equal(await page.getAttribute('#tile-download', 'aria-disabled'), 'true');
+  assert.equal(await page.getAttribute('#tile-download', 'href'), null);
+});
