@@ -7,6 +7,13 @@ export interface CallOptions {
   signal?: AbortSignal;
   /** Called with the fraction done, in [0, 1]. */
   onProgress?: (fraction: number) => void;
+  /** Only these fields of the result come back from the worker: a page that shows a
+   *  large stroke result by its SVG (or `preview`) need not receive its `strokes`.
+   *  `'svgBlob'` adds the SVG as a Blob made in the worker (no copy of the text). */
+  fields?: string[];
+  /** Stroke results: the strokes also drawn in the worker, fitted into `width x height`
+   *  pixels, as `result.preview` (an ImageBitmap; null without OffscreenCanvas). */
+  preview?: { width: number; height: number; background?: string };
 }
 
 export interface ClientOptions {

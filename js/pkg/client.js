@@ -68,10 +68,10 @@ export class PatternSynthClient {
     for (const job of pending) job.reject(abortError('The worker was terminated.'));
   }
 
-  run(method, args, { signal, onProgress } = {}) {
+  run(method, args, { signal, onProgress, fields, preview } = {}) {
     return new Promise((resolve, reject) => {
       if (signal?.aborted) return reject(abortError());
-      const job = { id: this.nextId++, method, args, resolve, reject, onProgress, signal };
+      const job = { id: this.nextId++, method, args, resolve, reject, onProgress, signal, shape: { fields, preview } };
       job.onAbort = () => this.abort(job);
       signal?.addEventListener('abort', job.onAbort, { once: true });
       this.queue.push(job);
@@ -109,7 +109,7 @@ export class PatternSynthClient {
     try {
       this.worker ??= this.start();
       if (this.size > 1 && BANDED.has(job.method)) return void this.runBanded(job);
-      this.worker.postMessage({ id: job.id, method: job.method, args: job.args });
+      this.worker.postMessage({ id: job.id, method: job.method, args: job.args, ...job.shape });
     } catch (e) {
       // e.g. a SecurityError for a worker script on another origin.
       this.finish(job, new Error(`The patternsynth worker could not start: ${e?.message ?? e}`, { cause: e }), true);
@@ -130,7 +130,7 @@ export class PatternSynthClient {
       return;
     }
     if (this.current !== job) return;
-    if (result === NOT_BANDED) this.worker.postMessage({ id: job.id, method: job.method, args: job.args });
+    if (result === NOT_BANDED) this.worker.postMessage({ id: job.id, method: job.method, args: job.args, ...job.shape });
     else this.finish(job, null, false, result);
   }
 

@@ -1,23 +1,49 @@
 // Web Worker that runs the wasm engines off the main thread. `PatternSynthClient`
 // (patternsynth/client) starts it; see the README for bundlers that need it passed in.
 //
-// Protocol: { id, method, args } in; { id, progress } ... then { id, result } or
-// { id, error, name } out. A synchronous wasm call cannot read messages, so cancelling
+// Protocol: { id, method, args, fields?, preview? } in; { id, progress } ... then
+// { id, result } or { id, error, name } out. `fields` keeps only those fields of the
+// result (a page showing a large stroke result need not receive its strokes: reading
+// 36,000 of them took the page's main thread 0.7 s), and `svgBlob` among them is the
+// SVG as a Blob; `preview` adds `result.preview`, the strokes drawn to an ImageBitmap
+// here (render.js). A synchronous wasm call cannot read messages, so cancelling
 // is done by the client terminating this worker. After a trap the engine replaces its
 // own instance (instance.js), so this worker stays usable.
 import init, * as api from './patternsynth.js';
 import { METHODS } from './api.js';
+import { renderStrokes } from './render.js';
 
 const ready = init();
 // The codecs load on first use only: browsers rarely need them.
 let codecs = null;
 
-// Pixel buffers go back by transfer, not by copy.
+// Pixel buffers and previews go back by transfer, not by copy.
 const transferables = (r) => {
   const image = r?.image ?? r;
   if (r instanceof Uint8Array) return [r.buffer];
-  return image?.data?.buffer instanceof ArrayBuffer ? [image.data.buffer] : [];
+  const list = image?.data?.buffer instanceof ArrayBuffer ? [image.data.buffer] : [];
+  if (typeof ImageBitmap === 'function' && r?.preview instanceof ImageBitmap) list.push(r.preview);
+  return list;
 };
+
+/** The result as the page asked for it: drawn (`preview`), then cut to `fields`. */
+function shape(result, args, { fields, preview }) {
+  if (!fields && !preview) return result;
+  if (result === null || typeof result !== 'object') throw new Error('fields and preview apply to results that are objects.');
+  let out = result;
+  if (fields) {
+    if (!Array.isArray(fields) || !fields.every((f) => typeof f === 'string')) throw new Error('fields must be an array of result field names.');
+    out = Object.fromEntries(fields.filter((f) => f in result).map((f) => [f, result[f]]));
+    // A large SVG as a Blob made here: the page gets a reference instead of copying and
+    // encoding the text on its own thread (25 MB took it 0.3 s).
+    if (fields.includes('svgBlob') && typeof result.svg === 'string') out.svgBlob = new Blob([result.svg], { type: 'image/svg+xml' });
+  }
+  if (preview) {
+    if (!Array.isArray(result.strokes)) throw new Error('preview applies to results with strokes.');
+    out.preview = renderStrokes(result.strokes, result.width ?? args[1]?.width, result.height ?? args[1]?.height, preview);
+  }
+  return out;
+}
 
 // Banded texture synthesis (bands.js): { id, bands: 'open' | 'run' | 'close', ... }.
 async function bandsMessage({ id, bands, handle, method, args, step, state, parent, from, to }) {
@@ -56,7 +82,7 @@ self.onmessage = async ({ data }) => {
       callArgs.length = spec.args;
       callArgs.push((fraction) => { self.postMessage({ id, progress: fraction }); });
     }
-    const result = api[method](...callArgs);
+    const result = shape(api[method](...callArgs), callArgs, data);
     self.postMessage({ id, result }, transferables(result));
   } catch (e) {
     self.postMessage({ id, error: e instanceof Error ? e.message : String(e), name: e?.name });

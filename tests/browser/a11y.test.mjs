@@ -160,3 +160,23 @@ test('a refused tile takes the previous tile, its text and its download off the 
   assert.equal(await page.getAttribute('#tile-download', 'aria-disabled'), 'true');
   assert.equal(await page.getAttribute('#tile-download', 'href'), null);
 });
+
+test('a result of 36,000 strokes is shown without a long task on the page (drawn in the worker)', async () => {
+  const { page } = await open();
+  await page.evaluate(() => {
+    window.longTasks = [];
+    new PerformanceObserver((l) => { for (const e of l.getEntries()) window.longTasks.push(Math.round(e.duration)); }).observe({ type: 'longtask' });
+  });
+  await page.fill('#out-width', '12000');
+  await page.fill('#out-height', '8000');
+  await page.click('#synthesize');
+  await page.waitForFunction(() => /^\d+ strokes, \d+ classes/.test(document.querySelector('#result-info').textContent), null, { timeout: 120_000 });
+  await page.waitForTimeout(1000);
+  const info = await page.textContent('#result-info');
+  assert.ok(Number(info.split(' ')[0]) > 20_000, info);
+  const long = await page.evaluate(() => window.longTasks);
+  assert.ok(long.every((ms) => ms <= 100), `long tasks ${long} ms while showing ${info}`);
+  assert.equal(await page.$$eval('#preview canvas', (cs) => cs.length), 1);
+  assert.equal(await page.getAttribute('#download', 'download'), 'pattern-12000x8000.svg');
+  await page.locator('#preview').screenshot({ path: 'out/a11y-large-result.png' });
+});

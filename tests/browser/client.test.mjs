@@ -37,3 +37,33 @@ test('the client recovers from a worker that fails to start and from bad input',
     await close();
   }
 });
+
+test('fields and preview: a large stroke result comes back as a Blob and an image drawn in the worker', async () => {
+  const { page, close } = await openPlayground();
+  try {
+    const out = await page.evaluate(async () => {
+      const { PatternSynthClient } = await import('./pkg/client.js');
+      const client = new PatternSynthClient('./pkg/worker.js');
+      const grid = Array.from({ length: 9 }, (_, i) => ({ points: [[10 + (i % 3) * 20, 10 + Math.floor(i / 3) * 20], [15 + (i % 3) * 20, 15 + Math.floor(i / 3) * 20]], width: 2, stroke: '#ff0000' }));
+      const full = await client.synthesizeStrokes(grid, { width: 300, height: 150, seed: 1 });
+      const r = await client.synthesizeStrokes(grid, { width: 300, height: 150, seed: 1 }, { fields: ['svgBlob', 'classes'], preview: { width: 200, height: 200, background: '#ffffff' } });
+      const c = new OffscreenCanvas(r.preview.width, r.preview.height).getContext('2d');
+      c.drawImage(r.preview, 0, 0);
+      const px = c.getImageData(0, 0, r.preview.width, r.preview.height).data;
+      let red = 0;
+      for (let i = 0; i < px.length; i += 4) red += px[i] > 200 && px[i + 1] < 80 && px[i + 2] < 80;
+      const bad = await client.synthesizeStrokes(grid, { width: 300, height: 150 }, { preview: { width: 0, height: 5 } }).then(() => 'resolved', (e) => e.message);
+      return {
+        keys: Object.keys(r).sort(), size: [r.preview.width, r.preview.height], red,
+        same: (await r.svgBlob.text()) === full.svg, type: r.svgBlob.type, classes: r.classes.length === full.strokes.length, bad,
+      };
+    });
+    assert.deepEqual(out.keys, ['classes', 'preview', 'svgBlob']);
+    assert.deepEqual(out.size, [200, 100], 'fitted, aspect kept');
+    assert.ok(out.red > 100, `${out.red} red pixels drawn`);
+    assert.ok(out.same && out.classes && out.type === 'image/svg+xml');
+    assert.match(out.bad, /preview: width and height must be from 1 to 8192/);
+  } finally {
+    await close();
+  }
+});

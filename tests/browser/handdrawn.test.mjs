@@ -207,7 +207,7 @@ test('a hand-drawn 3x3 grid of crosses synthesizes into a clean lattice of cross
   await page.click('#synthesize');
   await page.waitForFunction(() => /^(Done\.|.*error.*)$/i.test(document.querySelector('#messages').textContent) || document.querySelector('#messages .error'), null, { timeout: 120000 });
   assert.equal(await page.textContent('#messages'), 'Done.');
-  await page.waitForFunction(() => document.querySelector('#preview img')?.complete);
+  await page.waitForFunction(() => document.querySelector('#preview canvas, #preview img'));
   await page.screenshot({ path: 'out/handdrawn-crosses.png', fullPage: true });
   const info = await page.textContent('#result-info');
   t.diagnostic(`result: ${info}`);

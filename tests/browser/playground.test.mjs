@@ -54,7 +54,7 @@ test('draw, classify, synthesize, download a periodic SVG', async () => {
   await page.waitForFunction(() => document.querySelector('#messages').textContent === 'Done.', null, { timeout: 60000 });
   const [download] = await Promise.all([page.waitForEvent('download'), page.click('#download')]);
   const svg = readFileSync(await download.path(), 'utf8');
-  assert.equal(download.suggestedFilename(), 'pattern.svg');
+  assert.equal(download.suggestedFilename(), 'pattern-600x400.svg');
 
   // Valid SVG that our own importer reads back, with a plausible element count.
   const strokes = parseSvg(svg);

@@ -242,16 +242,30 @@ export function mountStrokes(root, client) {
     const t0 = performance.now();
     await runs.start('Synthesizing…', async (call) => {
       const opts = { width, height, variation: settings.variation, regularize: settings.regularize !== false, seed: Number(settings.seed) || 0, ...tolerances() };
-      const r = await client.synthesizeStrokes(drawing.strokes, opts, call);
+      // The worker draws the preview and keeps the strokes: reading tens of thousands of
+      // them, or parsing and painting their SVG, would freeze this page for most of a second.
+      const box = $('preview').clientWidth * devicePixelRatio || 800;
+      const fit = Math.min(1, 4096 / Math.max(width, height), box / width);
+      const preview = { width: Math.ceil(width * fit), height: Math.ceil(height * fit), background: '#ffffff' };
+      const r = await client.synthesizeStrokes(drawing.strokes, opts, { ...call, fields: ['svgBlob', 'classes', 'classification'], preview });
       const ms = performance.now() - t0;
       if (resultUrl) URL.revokeObjectURL(resultUrl);
-      resultUrl = URL.createObjectURL(new Blob([r.svg], { type: 'image/svg+xml' }));
-      const img = new Image();
-      img.src = resultUrl;
-      img.alt = 'Synthesized pattern';
-      $('preview').replaceChildren(img);
+      resultUrl = URL.createObjectURL(r.svgBlob);
+      let shown;
+      if (r.preview) {
+        shown = document.createElement('canvas');
+        [shown.width, shown.height] = [r.preview.width, r.preview.height];
+        shown.getContext('bitmaprenderer').transferFromImageBitmap(r.preview);
+      } else {
+        shown = new Image();
+        shown.src = resultUrl;
+      }
+      shown.setAttribute('role', 'img');
+      shown.setAttribute('aria-label', `Synthesized pattern, ${width} × ${height}`);
+      $('preview').replaceChildren(shown);
       offerDownload($('download'), resultUrl);
-      $('result-info').textContent = `${r.strokes.length} strokes, ${r.classification.count} classes, ${width}×${height}, ${ms.toFixed(0)} ms`;
+      $('download').download = `pattern-${width}x${height}.svg`;
+      $('result-info').textContent = `${r.classes.length} strokes, ${r.classification.count} classes, ${width}×${height}, ${ms.toFixed(0)} ms`;
       say('Done.');
     });
     scheduleClassify(0);

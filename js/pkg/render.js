@@ -1,0 +1,54 @@
+// Stroke results drawn to an image in the worker (OffscreenCanvas), so that a page can
+// show a result of tens of thousands of strokes without parsing and painting its SVG on
+// the main thread. Drawn as the SVG export draws them: round caps and joins, fill then
+// outline, subpaths at `breaks`, even-odd where the stroke says, opacities multiplied.
+
+/**
+ * `result.strokes` (in a `sceneWidth x sceneHeight` scene) scaled to fit `width x height`
+ * (the aspect kept), on `background` (CSS colour; transparent by default). Returns an
+ * ImageBitmap, or null where OffscreenCanvas is missing.
+ */
+export function renderStrokes(strokes, sceneWidth, sceneHeight, { width, height, background } = {}) {
+  if (typeof OffscreenCanvas !== 'function') return null;
+  if (!(sceneWidth > 0 && sceneHeight > 0)) throw new Error('preview: the result has no size to draw.');
+  if (!(width >= 1 && height >= 1 && width <= 8192 && height <= 8192)) {
+    throw new Error(`preview: width and height must be from 1 to 8192 pixels, got ${width} x ${height}.`);
+  }
+  const k = Math.min(width / sceneWidth, height / sceneHeight);
+  const canvas = new OffscreenCanvas(Math.max(1, Math.round(sceneWidth * k)), Math.max(1, Math.round(sceneHeight * k)));
+  const ctx = canvas.getContext('2d');
+  if (background) {
+    ctx.fillStyle = background;
+    ctx.fillRect(0, 0, canvas.width, canvas.height);
+  }
+  ctx.setTransform(k, 0, 0, k, 0, 0);
+  ctx.lineCap = 'round';
+  ctx.lineJoin = 'round';
+  for (const s of strokes) {
+    const path = new Path2D();
+    const breaks = [...(s.breaks ?? []), s.points.length];
+    let start = 0;
+    for (const end of breaks) {
+      for (let i = start; i < end; i++) {
+        const [x, y] = s.points[i];
+        if (i === start) path.moveTo(x, y);
+        else path.lineTo(x, y);
+      }
+      if (s.closed) path.closePath();
+      start = end;
+    }
+    const opacity = s.opacity ?? 1;
+    if (s.fill) {
+      ctx.globalAlpha = opacity * (s.fillOpacity ?? 1);
+      ctx.fillStyle = s.fill;
+      ctx.fill(path, s.fillRule === 'evenodd' ? 'evenodd' : 'nonzero');
+    }
+    if (s.stroke && s.width > 0) {
+      ctx.globalAlpha = opacity * (s.strokeOpacity ?? 1);
+      ctx.strokeStyle = s.stroke;
+      ctx.lineWidth = s.width;
+      ctx.stroke(path);
+    }
+  }
+  return canvas.transferToImageBitmap();
+}
