@@ -22,7 +22,10 @@ test('synthesizeStrokes returns strokes, classes and valid SVG', () => {
   assert.equal(r.classes.length, r.strokes.length);
   assert.equal(r.classification.count, 1);
   assert.match(r.svg, /^<svg xmlns="http:\/\/www.w3.org\/2000\/svg"/);
-  assert.equal((r.svg.match(/<path /g) || []).length, r.strokes.length);
+  // A path per stroke, or a use of one defined once (translated copies).
+  const body = r.svg.replace(/<defs>[\s\S]*<\/defs>/, '');
+  assert.equal((body.match(/<(path|use) /g) || []).length, r.strokes.length);
+  assert.ok(r.svg.length < 0.5 * r.strokes.length * 120, `${r.svg.length} bytes for ${r.strokes.length} strokes: copies are uses`);
   assert.equal(r.strokes[0].stroke, '#223344');
   assert.ok(seen.length > 3 && seen.at(-1) === 1, 'progress reported to 1');
   // The SVG reads back through our own importer.
