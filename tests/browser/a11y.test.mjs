@@ -180,3 +180,27 @@ test('a result of 36,000 strokes is shown without a long task on the page (drawn
   assert.equal(await page.getAttribute('#download', 'download'), 'pattern-12000x8000.svg');
   await page.locator('#preview').screenshot({ path: 'out/a11y-large-result.png' });
 });
+
+test('a tile offers its CSS (the SVG inline), a copy button, and a view offset by half a tile', async () => {
+  const { page } = await open();
+  await page.context().grantPermissions(['clipboard-read', 'clipboard-write']);
+  await page.click('#make-tile');
+  await page.waitForFunction(() => document.querySelector('#tile-preview').classList.contains('shown'), null, { timeout: 30_000 });
+  await page.click('#tile-copy');
+  const css = await page.inputValue('#tile-css');
+  assert.ok(await page.isVisible('#tile-css'));
+  const m = css.match(/^background-image: url\("data:image\/svg\+xml,([^"]+)"\);\nbackground-size: ([\d.]+)px ([\d.]+)px;\nbackground-repeat: repeat;$/);
+  assert.ok(m, css.slice(0, 200));
+  const svg = decodeURIComponent(m[1]);
+  const tileSvg = await page.evaluate(async () => (await fetch(document.querySelector('#tile-download').href)).text());
+  assert.equal(svg, tileSvg.replace(/\s*\n\s*/g, ''));
+  assert.match(svg, new RegExp(`viewBox="0 0 ${m[2]} ${m[3]}"`));
+  assert.equal(await page.evaluate(() => navigator.clipboard.readText()), css);
+  const position = () => page.evaluate(() => document.querySelector('#tile-preview').style.backgroundPosition);
+  assert.equal(await position(), '0px 0px');
+  await page.check('#tile-offset');
+  const [x, y] = (await position()).split(' ').map(parseFloat);
+  const size = await page.evaluate(() => document.querySelector('#tile-preview').style.backgroundSize.split(' ').map(parseFloat));
+  assert.ok(Math.abs(x - size[0] / 2) < 0.01 && Math.abs(y - size[1] / 2) < 0.01, `${x},${y} against ${size}`);
+  await page.locator('#tab-strokes .settings').screenshot({ path: 'out/a11y-tile-css.png' });
+});

@@ -124,7 +124,7 @@ test('a seamless tile of the drawn grid: one period of it, shown 3x3, downloadab
   await page.click('#make-tile');
   await page.waitForFunction(() => document.querySelector('#messages').textContent === 'Tile ready.', null, { timeout: 30000 });
   const [download] = await Promise.all([page.waitForEvent('download'), page.click('#tile-download')]);
-  assert.equal(download.suggestedFilename(), 'tile.svg');
+  assert.match(download.suggestedFilename(), /^tile-\d+x\d+\.svg$/);
   const svg = readFileSync(await download.path(), 'utf8');
   const [, w, h] = svg.match(/width="([\d.]+)" height="([\d.]+)"/).map(Number);
   // Two drawn spacings each way, within the hand-drawn jitter of the pointer.

@@ -257,6 +257,7 @@ export function mountBlend(root, client) {
       if (resultUrl) URL.revokeObjectURL(resultUrl);
       resultUrl = URL.createObjectURL(blob);
       offerDownload($('blend-download'), resultUrl);
+      $('blend-download').download = `${single ? 'texture' : 'blend'}-${out.width}x${out.height}.png`;
       $('blend-info').textContent = `${out.width}×${out.height}, ${single ? 'single exemplar' : settings.transition}, ${ms.toFixed(0)} ms${recurrence(out, single ? [slots.a.image] : [slots.a.image, slots.b.image])}`;
       say('Done.');
     });

@@ -1,8 +1,9 @@
 // Seamless tile tab: pick or drop an image, choose the method, make a tile in the
 // worker (progress, cancel), judge it repeated 3x3, download PNG.
-import { defaultOptions, imageKey, maxInputSide, methods, storageKey, textures } from '../shared/meta.js';
+import { defaultOptions, imageKey, maxInputSide, methodHelp, methods, storageKey, textures } from '../shared/meta.js';
 import { forget, load, store } from '../../../shared/storage.js';
-import { offerDownload, runControls, withdrawDownload } from '../../../shared/run.js';
+import { runControls } from '../../../shared/run.js';
+import { tilePanel } from '../../../shared/tile.js';
 import { builtinBitmap, fileBitmap, keepImage, keptImage, onDropFile, rgbaOf } from '../../../shared/images.js';
 
 export function mountSeamless(root, client) {
@@ -76,7 +77,11 @@ export function mountSeamless(root, client) {
     el.value = settings[key];
     el.addEventListener('input', () => { settings[key] = el.value; save(); showMethod(); });
   }
-  const showMethod = () => { $('seam-t0-row').hidden = settings.method === 'synthesis'; };
+  const showMethod = () => {
+    $('seam-t0-row').hidden = settings.method === 'synthesis';
+    $('seam-method-help').textContent = methodHelp[settings.method] ?? '';
+  };
+  const tile = tilePanel({ preview: $('seam-repeat'), download: $('seam-download'), css: $('seam-css'), copy: $('seam-copy'), offset: $('seam-offset') });
 
   // --- run ---
   const runs = runControls({ run: $('seam-run'), cancel: $('seam-cancel'), progress: $('seam-progress'), say });
@@ -87,9 +92,8 @@ export function mountSeamless(root, client) {
     if (settings.method !== 'synthesis') opts.maxCountDifference = Number(settings.maxCountDifference);
     const t0 = performance.now();
     // The previous tile goes: should this run fail, it must not look like its result.
-    $('seam-repeat').classList.remove('shown');
+    tile.clear();
     $('seam-info').textContent = 'Making the tile…';
-    withdrawDownload($('seam-download'));
     await runs.start('Making the tile…', async (call) => {
       const r = await client.seamlessTile(image, opts, call);
       const ms = performance.now() - t0;
@@ -104,10 +108,8 @@ export function mountSeamless(root, client) {
       // The 3x3 repeat, to judge the seams.
       // Whole pixels when the column has room, scaled down to fit it when it has not.
       const fit = Math.min(512, $('seam-repeat').parentElement.clientWidth - 16) / (3 * width);
-      const k = fit >= 1 ? Math.floor(fit) : fit;
-      Object.assign($('seam-repeat').style, { backgroundImage: `url("${resultUrl}")`, backgroundSize: `${k * width}px ${k * height}px`, width: `${3 * k * width}px`, height: `${3 * k * height}px` });
-      $('seam-repeat').classList.add('shown');
-      offerDownload($('seam-download'), resultUrl);
+      const scale = fit >= 1 ? Math.floor(fit) : fit;
+      tile.show({ url: resultUrl, file: `seamless-${settings.method}-${width}x${height}.png`, width, height, scale });
       $('seam-info').textContent = `${width}×${height}, restoration rate ${(100 * r.restorationRate).toFixed(1)}%, seam score ${r.seamScore.toFixed(2)} (about 1: no seam), ${ms.toFixed(0)} ms`;
       say(r.warnings.length ? r.warnings.join(' ') : 'Done.', r.warnings.length ? 'warn' : '');
     });

@@ -15,6 +15,13 @@ export const methods = [
   ['synthesis', 'Toroidal synthesis (ours: keeps structure)'],
 ];
 
+/** What each method does, in plain words. */
+export const methodHelp = {
+  etfmcm: 'Rebuilds the tile from how the image\'s colours sit next to one another, so the tile keeps the image\'s colours exactly; shapes larger than a few pixels can break up.',
+  tfmcm: 'The same idea without the fractal refinement: faster, rougher. For comparison.',
+  synthesis: 'Grows the tile pixel by pixel from the image\'s own neighbourhoods, wrapping round its edges: keeps structure (bricks, weave, wood grain).',
+};
+
 /** Built-in photographs (CC0, public domain or unrestricted; see tests/fixtures/textures/SOURCES.md). */
 export const textures = ['wood', 'brick', 'grass', 'gravel', 'fur', 'hubble', 'tissue', 'coins'];
 

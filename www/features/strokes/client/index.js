@@ -3,7 +3,8 @@ import { Drawing, fitStrokes } from './canvas.js';
 import { Autocomplete } from './autocomplete.js';
 import { classColors, defaultOptions, defaultPen, maxSide, storageKey, suggestCount } from '../shared/meta.js';
 import { load, store as save } from '../../../shared/storage.js';
-import { offerDownload, runControls, withdrawDownload } from '../../../shared/run.js';
+import { offerDownload, runControls } from '../../../shared/run.js';
+import { tilePanel } from '../../../shared/tile.js';
 
 const SETTINGS_KEY = 'patternsynth.strokes.settings.v1';
 
@@ -274,28 +275,21 @@ export function mountStrokes(root, client) {
 
   // --- seamless tile ---
   let tileUrl = null;
+  const tile = tilePanel({ preview: $('tile-preview'), download: $('tile-download'), css: $('tile-css'), copy: $('tile-copy'), offset: $('tile-offset') });
   $('make-tile').addEventListener('click', async () => {
     $('make-tile').disabled = true;
     // A refusal must not leave the previous tile on screen as if it were this one's.
-    $('tile-preview').classList.remove('shown');
+    tile.clear();
     $('tile-info').textContent = 'Making the tile…';
-    withdrawDownload($('tile-download'));
     try {
       const opts = { variation: settings.variation, seed: Number(settings.seed) || 0, repeats: Number(settings.tileRepeats) || 1, ...tolerances() };
       const t = await client.strokeTile(drawing.strokes, opts);
       if (tileUrl) URL.revokeObjectURL(tileUrl);
       tileUrl = URL.createObjectURL(new Blob([t.svg], { type: 'image/svg+xml' }));
       // Shown 3 x 3, scaled to the column (at most 4x); one tile outlined.
-      const preview = $('tile-preview');
-      const k = Math.min(4, (preview.parentElement.clientWidth - 24) / (3 * t.width));
-      const [w, h] = [t.width * k, t.height * k];
-      Object.assign(preview.style, { backgroundImage: `url("${tileUrl}")`, backgroundSize: `${w}px ${h}px`, width: `${3 * w}px`, height: `${3 * h}px` });
-      const one = document.createElement('div');
-      one.className = 'one';
-      Object.assign(one.style, { width: `${w}px`, height: `${h}px` });
-      preview.replaceChildren(one);
-      preview.classList.add('shown');
-      offerDownload($('tile-download'), tileUrl);
+      const scale = Math.min(4, ($('tile-preview').parentElement.clientWidth - 24) / (3 * t.width));
+      const size = `${Math.round(t.width)}x${Math.round(t.height)}`;
+      tile.show({ url: tileUrl, svg: t.svg, file: `tile-${size}.svg`, width: t.width, height: t.height, scale });
       $('tile-info').textContent = `${+t.width.toFixed(2)}×${+t.height.toFixed(2)} tile, ${t.sites} elements (${t.strokes.length} strokes with the edge copies), shown 3×3.`;
       say('Tile ready.');
     } catch (e) {
