@@ -3,6 +3,7 @@ import { PatternSynthClient } from './pkg/client.js';
 import { mountStrokes } from './features/strokes/client/index.js';
 import { mountBlend } from './features/blend/client/index.js';
 import { mountSeamless } from './features/seamless/client/index.js';
+import { exportSession, importSession } from './shared/session.js';
 
 const client = new PatternSynthClient(new URL('./pkg/worker.js', import.meta.url));
 window.patternsynth = client; // handy from the console and for tests
@@ -42,3 +43,22 @@ for (const button of document.querySelectorAll('.file-button')) {
 document.documentElement.classList.toggle('touch', matchMedia('(hover: none) and (pointer: coarse)').matches);
 
 client.version().then((v) => { document.getElementById('version').textContent = `v${v}`; });
+
+// The whole session in one file, and back.
+document.getElementById('session-export').addEventListener('click', async () => {
+  const blob = await exportSession({ 'strokes.session': window.playground?.drawing?.() });
+  const a = Object.assign(document.createElement('a'), { href: URL.createObjectURL(blob), download: `patternsynth-session-${new Date().toISOString().slice(0, 10)}.json` });
+  a.click();
+  setTimeout(() => URL.revokeObjectURL(a.href), 10_000);
+});
+document.getElementById('session-import').addEventListener('change', async (e) => {
+  const file = e.target.files[0];
+  e.target.value = '';
+  if (!file) return;
+  try {
+    await importSession(file);
+    location.reload();
+  } catch (err) {
+    alert(err.message);
+  }
+});

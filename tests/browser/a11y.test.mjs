@@ -204,3 +204,51 @@ test('a tile offers its CSS (the SVG inline), a copy button, and a view offset b
   assert.ok(Math.abs(x - size[0] / 2) < 0.01 && Math.abs(y - size[1] / 2) < 0.01, `${x},${y} against ${size}`);
   await page.locator('#tab-strokes .settings').screenshot({ path: 'out/a11y-tile-css.png' });
 });
+
+/** Draws a short stroke at canvas point (x, y). */
+async function stroke(page, x, y) {
+  const box = await page.locator('#draw').boundingBox();
+  await page.mouse.move(box.x + x, box.y + y);
+  await page.mouse.down();
+  await page.mouse.move(box.x + x + 30, box.y + y + 20, { steps: 4 });
+  await page.mouse.up();
+}
+
+test('nothing lost: the drawing and its undo history survive a reload, and a session file restores all', async () => {
+  const { page } = await open();
+  await page.click('#clear');
+  for (const [x, y] of [[50, 50], [150, 50], [250, 50]]) await stroke(page, x, y);
+  await page.click('#undo');
+  assert.equal(await strokeCount(page), 2);
+  await page.waitForTimeout(600); // the write follows the change by 250 ms
+  await page.reload();
+  await page.waitForFunction(() => /^2 strokes/.test(document.querySelector('#stroke-count').textContent));
+  await page.click('#redo');
+  assert.equal(await strokeCount(page), 3, 'redo after a reload');
+  await page.click('#undo');
+  await page.click('#undo');
+  assert.equal(await strokeCount(page), 1, 'undo after a reload');
+  await page.click('#redo');
+  const drawn = await page.evaluate(() => window.playground.drawing().strokes);
+
+  const [download] = await Promise.all([page.waitForEvent('download'), page.click('#session-export')]);
+  assert.match(download.suggestedFilename(), /^patternsynth-session-\d{4}-\d\d-\d\d\.json$/);
+  const file = await download.path();
+  const fresh = await open();
+  assert.notEqual(await strokeCount(fresh.page), 2);
+  await fresh.page.setInputFiles('#session-import', file);
+  await fresh.page.waitForFunction(() => /^2 strokes/.test(document.querySelector('#stroke-count').textContent));
+  assert.deepEqual(await fresh.page.evaluate(() => window.playground.drawing().strokes), drawn);
+  await fresh.page.click('#undo');
+  assert.equal(await strokeCount(fresh.page), 1, 'the history came with the file');
+});
+
+test('when the browser will not keep the drawing, the page says so', async () => {
+  const server = await open();
+  const { page } = server;
+  await page.evaluate(() => {
+    IDBObjectStore.prototype.put = function () { throw new DOMException('The quota has been exceeded.', 'QuotaExceededError'); };
+  });
+  await stroke(page, 60, 300);
+  await page.waitForFunction(() => /would not keep the drawing.*Export session/.test(document.querySelector('#messages').textContent), null, { timeout: 5000 });
+});

@@ -36,7 +36,7 @@ async function cross(x, y, k = 0) {
 }
 
 const count = async () => Number((await page.textContent('#stroke-count')).split(' ')[0]);
-const strokes = () => page.evaluate(() => JSON.parse(localStorage.getItem('patternsynth.strokes.v1')));
+const strokes = () => page.evaluate(() => window.playground.drawing().strokes);
 /** Waits until the suggestion for the drawing as it is now has arrived. */
 const settled = () => page.waitForFunction(() => document.querySelector('#suggest-status').getAttribute('aria-busy') === 'false', null, { timeout: 15000 });
 const waitGhosts = () => page.waitForFunction(() => !document.querySelector('#accept-ghosts').disabled, null, { timeout: 15000 });

@@ -151,5 +151,5 @@ test('an opened texture and the painted mask survive a reload', async () => {
   // Picking a built-in again forgets the kept file.
   await page.selectOption('#slot-b select', 'grass');
   await page.waitForFunction(() => document.querySelector('#slot-b canvas').width === 128);
-  assert.equal(await page.evaluate(() => localStorage.getItem('patternsynth.blend.exemplar.v1.b')), null);
+  await page.waitForFunction(async () => (await (await import('./shared/store.js')).get('patternsynth.blend.exemplar.v1.b')) === undefined);
 });

@@ -197,7 +197,7 @@ test('a hand-drawn 3x3 grid of crosses synthesizes into a clean lattice of cross
   await page.waitForFunction((n) => [...document.querySelectorAll('#legend .chip')].reduce((sum, c) => sum + Number(c.textContent.split(': ')[1]), 0) === n, DRAWN, { timeout: 15000 });
   const status = await page.textContent('#suggest-status');
   const legend = (await page.$$eval('#legend .chip', (cs) => cs.map((c) => c.textContent))).join(', ');
-  const drawn = await page.evaluate(() => JSON.parse(localStorage.getItem('patternsynth.strokes.v1')));
+  const drawn = await page.evaluate(() => window.playground.drawing().strokes);
   t.diagnostic(`drawn: ${drawn.length} strokes, ${median(drawn.map((s) => s.points.length))} points each (median); classes: ${legend.trim()}`);
   t.diagnostic(`autocomplete: most ghosts seen while drawing ${ghostsSeen}; after the last stroke: "${status}"`);
   assert.equal(await count(), DRAWN, 'no ghost was accepted');

@@ -1,6 +1,7 @@
 // Image input for the raster tabs: built-in photographs, opened or dropped files, and
-// keeping what the person opened across reloads (as a PNG data URL).
-import { forget, load, store } from './storage.js';
+// keeping what the person opened across reloads (a PNG Blob in IndexedDB).
+import { forget, load } from './storage.js';
+import { del, get, set } from './store.js';
 
 /** RGBA pixels of a bitmap, scaled down uniformly when a side exceeds `maxSide`;
  *  `scaledFrom` is the original size when it was. */
@@ -33,21 +34,41 @@ export async function fileBitmap(file) {
   }
 }
 
-/** Keeps `canvas`'s picture under `key`; false when storage is full. */
-export function keepImage(key, name, canvas) {
-  return store(key, { name, url: canvas.toDataURL('image/png') });
+/** Keeps `canvas`'s picture under `key` (a PNG Blob in IndexedDB); false when the
+ *  browser will not keep it. */
+export async function keepImage(key, name, canvas) {
+  try {
+    const blob = await new Promise((ok, fail) => canvas.toBlob((b) => (b ? ok(b) : fail(new Error('no PNG'))), 'image/png'));
+    await set(key, { name, blob });
+    forget(key);
+    return true;
+  } catch {
+    return false;
+  }
 }
 
-/** The picture kept under `key` as `{ name, bitmap }`, or null. */
+/** The picture kept under `key` as `{ name, bitmap }`, or null (one an older page kept
+ *  in localStorage as a data URL moves to IndexedDB). */
 export async function keptImage(key) {
-  const kept = load(key, null);
-  if (!kept) return null;
   try {
-    return { name: kept.name, bitmap: await createImageBitmap(await (await fetch(kept.url)).blob()) };
+    let kept = await get(key).catch(() => undefined);
+    if (!kept) {
+      const legacy = load(key, null);
+      if (!legacy) return null;
+      kept = { name: legacy.name, blob: await (await fetch(legacy.url)).blob() };
+      await set(key, kept).then(() => forget(key), () => {});
+    }
+    return { name: kept.name, bitmap: await createImageBitmap(kept.blob) };
   } catch {
-    forget(key);
+    await forgetImage(key);
     return null;
   }
+}
+
+/** Forgets the picture kept under `key`. */
+export async function forgetImage(key) {
+  forget(key);
+  await del(key).catch(() => {});
 }
 
 /** Drag-and-drop of one file onto `zone`. */

@@ -1,9 +1,9 @@
 // Blend tab: two exemplars (built-in photographs, files, drag and drop), a transition or
 // a painted mask, synthesis in the worker with progress and cancel, PNG download.
 import { defaultOptions, exemplarKey, maskKey, maxExemplarSide, maxOutputSide, storageKey, textures } from '../shared/meta.js';
-import { forget, load, store } from '../../../shared/storage.js';
+import { load, store } from '../../../shared/storage.js';
 import { offerDownload, runControls } from '../../../shared/run.js';
-import { builtinBitmap, fileBitmap, keepImage, keptImage, onDropFile, rgbaOf } from '../../../shared/images.js';
+import { builtinBitmap, fileBitmap, forgetImage, keepImage, keptImage, onDropFile, rgbaOf } from '../../../shared/images.js';
 
 /** The coefficient transfers, as the engine defines them (mu of A in [0, 1]). */
 const TRANSFER = {
@@ -64,7 +64,7 @@ export function mountBlend(root, client) {
       if (!slot.select.value) return;
       settings[key] = slot.select.value;
       save();
-      forget(`${exemplarKey}.${key}`);
+      forgetImage(`${exemplarKey}.${key}`);
       await loadBuiltin(key, slot.select.value);
     });
     fig.querySelector('input[type=file]').addEventListener('change', async (e) => {
@@ -108,9 +108,9 @@ export function mountBlend(root, client) {
     settings[key] = '';
     save();
     // Kept across reloads like everything else the person made.
-    const kept = keepImage(`${exemplarKey}.${key}`, file.name, slots[key].canvas);
+    const kept = await keepImage(`${exemplarKey}.${key}`, file.name, slots[key].canvas);
     // The scaling note stays in the message: it is what the person most needs to know.
-    say(`Loaded ${file.name} as texture ${key.toUpperCase()}.${note ? ` ${note}` : ''}${kept ? '' : ' (Browser storage is full: it will not survive a reload.)'}`, kept && !note ? '' : 'warn');
+    say(`Loaded ${file.name} as texture ${key.toUpperCase()}.${note ? ` ${note}` : ''}${kept ? '' : ' (This browser would not keep it: it will not survive a reload.)'}`, kept && !note ? '' : 'warn');
   }
 
   /** A texture kept from an earlier visit; false when there is none. */

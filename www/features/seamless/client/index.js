@@ -1,10 +1,10 @@
 // Seamless tile tab: pick or drop an image, choose the method, make a tile in the
 // worker (progress, cancel), judge it repeated 3x3, download PNG.
 import { defaultOptions, imageKey, maxInputSide, methodHelp, methods, storageKey, textures } from '../shared/meta.js';
-import { forget, load, store } from '../../../shared/storage.js';
+import { load, store } from '../../../shared/storage.js';
 import { runControls } from '../../../shared/run.js';
 import { tilePanel } from '../../../shared/tile.js';
-import { builtinBitmap, fileBitmap, keepImage, keptImage, onDropFile, rgbaOf } from '../../../shared/images.js';
+import { builtinBitmap, fileBitmap, forgetImage, keepImage, keptImage, onDropFile, rgbaOf } from '../../../shared/images.js';
 
 export function mountSeamless(root, client) {
   const $ = (id) => root.querySelector(`#${id}`);
@@ -53,14 +53,14 @@ export function mountSeamless(root, client) {
     select.value = '';
     settings.texture = '';
     save();
-    const kept = keepImage(imageKey, file.name, $('seam-source'));
-    say(`Loaded ${file.name}.${note ? ` ${note}` : ''}${kept ? '' : ' (Browser storage is full: it will not survive a reload.)'}`, kept && !note ? '' : 'warn');
+    const kept = await keepImage(imageKey, file.name, $('seam-source'));
+    say(`Loaded ${file.name}.${note ? ` ${note}` : ''}${kept ? '' : ' (This browser would not keep it: it will not survive a reload.)'}`, kept && !note ? '' : 'warn');
   }
   select.addEventListener('change', () => {
     if (!select.value) return;
     settings.texture = select.value;
     save();
-    forget(imageKey);
+    forgetImage(imageKey);
     loadBuiltin(select.value);
   });
   $('seam-file').addEventListener('change', async (e) => {

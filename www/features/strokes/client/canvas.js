@@ -113,6 +113,18 @@ export class Drawing {
     this.onChange?.(this.strokes);
   }
 
+  /** The drawing with its undo and redo history (to keep across a reload). */
+  get session() {
+    return { strokes: this.strokes, past: this.past, future: this.future };
+  }
+
+  /** Restores a kept `session` (without recording a step). */
+  restore({ strokes = [], past = [], future = [] }) {
+    this.past = past;
+    this.future = future;
+    this.set(strokes, { record: false });
+  }
+
   showClasses(classes, colors) {
     this.classes = classes;
     this.colors = colors;

@@ -1,8 +1,9 @@
 // Vector strokes tab: draw or import, see classes, synthesize in the worker, download.
 import { Drawing, fitStrokes } from './canvas.js';
 import { Autocomplete } from './autocomplete.js';
-import { classColors, defaultOptions, defaultPen, maxSide, storageKey, suggestCount } from '../shared/meta.js';
-import { load, store as save } from '../../../shared/storage.js';
+import { classColors, defaultOptions, defaultPen, maxSide, sessionKey, storageKey, suggestCount } from '../shared/meta.js';
+import { forget, load, store as save } from '../../../shared/storage.js';
+import { get, saver } from '../../../shared/store.js';
 import { offerDownload, runControls } from '../../../shared/run.js';
 import { tilePanel } from '../../../shared/tile.js';
 
@@ -74,12 +75,19 @@ export function mountStrokes(root, client) {
     input.addEventListener('input', update);
   }
 
-  // --- the drawing ---
+  // --- the drawing, kept with its undo history in IndexedDB ---
   let autocomplete = null;
+  const kept = saver(sessionKey, () => drawing.session, {
+    onError: (e) => say(`This browser would not keep the drawing (${e?.message ?? e}): use "Export session" to keep it in a file.`, 'warn'),
+    onSaved: () => say('The drawing is kept again.'),
+  });
+  addEventListener('pagehide', () => kept.flush());
+  document.addEventListener('visibilitychange', () => { if (document.hidden) kept.flush(); });
+  window.playground = { ...window.playground, drawing: () => drawing.session };
   const drawing = new Drawing(canvas, {
     getPen: () => ({ width: Number(penWidth.value), stroke: settings.stroke, strokeOn: settings.strokeOn, fill: settings.fill, fillOn: settings.fillOn }),
     onChange: (strokes) => {
-      save(storageKey, strokes);
+      kept.save();
       $('stroke-count').textContent = `${strokes.length} stroke${strokes.length === 1 ? '' : 's'}`;
       scheduleClassify();
       autocomplete?.update();
@@ -300,10 +308,17 @@ export function mountStrokes(root, client) {
     }
   });
 
-  // --- start: the saved drawing, or an example so the page does something at once ---
-  const saved = load(storageKey, null);
-  if (Array.isArray(saved) && saved.length) drawing.set(saved, { record: false });
-  else loadExamples().then((list) => {
+  // --- start: the kept drawing (or one kept by an older page, in localStorage), or an
+  // example so the page does something at once ---
+  const legacy = load(storageKey, null);
+  get(sessionKey).catch(() => undefined).then(async (session) => {
+    if (session && (session.strokes?.length || session.past?.length)) return drawing.restore(session);
+    if (Array.isArray(legacy) && legacy.length) {
+      drawing.set(legacy, { record: false });
+      await kept.flush();
+      return forget(storageKey);
+    }
+    const list = await loadExamples();
     const ex = list.find((x) => x.name === 'classes-by-shape') ?? list[0];
     if (ex && !drawing.strokes.length) drawing.set(fitStrokes(ex.strokes, drawing.logical.w, drawing.logical.h, 60), { record: false });
   });

@@ -29,4 +29,7 @@ export const maxSide = 20000;
 /** Class colours for the class view. */
 export const classColors = ['#e6194b', '#3cb44b', '#4363d8', '#f58231', '#911eb4', '#42d4f4', '#f032e6', '#9a6324', '#469990', '#808000'];
 
+/** Where an older page kept the drawing (localStorage; moved to IndexedDB on load). */
 export const storageKey = 'patternsynth.strokes.v1';
+/** The drawing and its undo history, in IndexedDB (shared/store.js). */
+export const sessionKey = 'strokes.session';

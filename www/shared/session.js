@@ -1,0 +1,46 @@
+// The whole session as one file: the drawing with its undo history, the images opened,
+// and every tab's settings. Export writes it; import puts it back and reloads the page.
+import { get, keys, set } from './store.js';
+
+const FORMAT = 'patternsynth-session';
+
+const dataUrl = (blob) => new Promise((ok, fail) => {
+  const r = new FileReader();
+  r.onload = () => ok(r.result);
+  r.onerror = () => fail(r.error);
+  r.readAsDataURL(blob);
+});
+
+/** The session as a JSON Blob. `current`: values newer than what is kept (the drawing). */
+export async function exportSession(current = {}) {
+  const kept = {};
+  for (const key of await keys().catch(() => [])) {
+    const value = await get(key);
+    kept[key] = value?.blob instanceof Blob ? { ...value, blob: await dataUrl(value.blob) } : value;
+  }
+  Object.assign(kept, current);
+  const settings = {};
+  for (let i = 0; i < localStorage.length; i++) {
+    const k = localStorage.key(i);
+    if (k.startsWith('patternsynth.')) settings[k] = localStorage.getItem(k);
+  }
+  return new Blob([JSON.stringify({ format: FORMAT, version: 1, saved: new Date().toISOString(), kept, settings })], { type: 'application/json' });
+}
+
+/** Puts a session file's contents back (the page then reloads to show them). */
+export async function importSession(file) {
+  let session;
+  try {
+    session = JSON.parse(await file.text());
+  } catch {
+    throw new Error(`${file.name} is not a patternsynth session (not JSON).`);
+  }
+  if (session?.format !== FORMAT) throw new Error(`${file.name} is not a patternsynth session.`);
+  for (const [key, value] of Object.entries(session.kept ?? {})) {
+    const blob = typeof value?.blob === 'string' ? await (await fetch(value.blob)).blob() : null;
+    await set(key, blob ? { ...value, blob } : value);
+  }
+  for (const [key, value] of Object.entries(session.settings ?? {})) {
+    if (key.startsWith('patternsynth.') && typeof value === 'string') localStorage.setItem(key, value);
+  }
+}

@@ -1,0 +1,89 @@
+// What the person made, kept in IndexedDB: drawings with their undo history, opened
+// images as Blobs (not data URLs: a photograph as a data URL took 3.26 M characters
+// of localStorage's 5 MB). Values are structured clones, so strokes shared between
+// undo steps are stored once. Every call is async and throws when the browser will not
+// keep the value (storage full, private mode); the caller says so on the page.
+
+const DB = 'patternsynth';
+const STORE = 'kept';
+let opening = null;
+
+function db() {
+  opening ??= new Promise((resolve, reject) => {
+    if (typeof indexedDB === 'undefined') return reject(new Error('this browser has no IndexedDB'));
+    const request = indexedDB.open(DB, 1);
+    request.onupgradeneeded = () => request.result.createObjectStore(STORE);
+    request.onsuccess = () => resolve(request.result);
+    request.onerror = () => reject(request.error);
+    request.onblocked = () => reject(new Error('the page is open in another tab with an older version'));
+  }).catch((e) => {
+    opening = null;
+    throw e;
+  });
+  return opening;
+}
+
+/** One request in its own transaction; resolves when the transaction has committed. */
+async function run(mode, act) {
+  const tx = (await db()).transaction(STORE, mode);
+  const request = act(tx.objectStore(STORE));
+  return new Promise((resolve, reject) => {
+    tx.oncomplete = () => resolve(request.result);
+    tx.onerror = () => reject(tx.error ?? request.error);
+    tx.onabort = () => reject(tx.error ?? new Error('the browser refused to keep it'));
+  });
+}
+
+/** The value kept under `key`, or undefined. */
+export const get = (key) => run('readonly', (s) => s.get(key));
+/** Keeps `value` under `key`. */
+export const set = (key, value) => run('readwrite', (s) => s.put(value, key));
+/** Forgets `key`. */
+export const del = (key) => run('readwrite', (s) => s.delete(key));
+/** Every key kept. */
+export const keys = () => run('readonly', (s) => s.getAllKeys());
+
+/**
+ * Writes that follow changes, at most one at a time and the latest one last: `save()`
+ * after every change; `write()` makes the value. `onError(e)` hears of a failure once
+ * per run of failures, and `onSaved()` of the next success.
+ */
+export function saver(key, write, { delay = 250, onError, onSaved } = {}) {
+  let timer = null;
+  let busy = false;
+  let again = false;
+  let failing = false;
+  const flush = async () => {
+    timer = null;
+    if (busy) return void (again = true);
+    busy = true;
+    try {
+      await set(key, write());
+      if (failing) onSaved?.();
+      failing = false;
+    } catch (e) {
+      if (!failing) onError?.(e);
+      failing = true;
+    } finally {
+      busy = false;
+      if (again) {
+        again = false;
+        flush();
+      }
+    }
+  };
+  return {
+    save() {
+      clearTimeout(timer);
+      timer = setTimeout(flush, delay);
+    },
+    /** Writes now (before the page is hidden). */
+    flush() {
+      if (timer) {
+        clearTimeout(timer);
+        return flush();
+      }
+      return Promise.resolve();
+    },
+  };
+}
