@@ -12,11 +12,12 @@ export const BANDED = new Set(['synthesizeTexture', 'blendTextures']);
 export const NOT_BANDED = Symbol('not banded');
 
 /**
- * `pool`: one `{ request(message, onProgress?) => Promise }` per worker.
- * Returns the RGBA image, or NOT_BANDED.
+ * `pool`: one `{ request(message, onProgress?) => Promise }` per worker; `first`: the
+ * plan the first worker already opened, if it did. Returns the RGBA image, or NOT_BANDED.
  */
-export async function runBands(pool, method, args, onProgress) {
-  const plans = await Promise.all(pool.map((w) => w.request({ bands: 'open', method, args })));
+export async function runBands(pool, method, args, onProgress, first) {
+  const open = (w) => w.request({ bands: 'open', method, args });
+  const plans = await Promise.all(pool.map((w, k) => (k === 0 && first ? first : open(w))));
   const plan = plans[0];
   if (!plan) return NOT_BANDED;
   try {

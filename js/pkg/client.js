@@ -6,8 +6,8 @@
 //     { signal: controller.signal, onProgress: (f) => bar.value = f });
 //
 // Calls run one at a time in a module worker. Large texture syntheses and blends (from
-// 512 x 512 pixels) also use helper workers, up to `navigator.hardwareConcurrency` in
-// all (bands.js); the image is the same for any number. Aborting the running call
+// 512 x 512 pixels) also use helper workers, started on the first such call, up to
+// `navigator.hardwareConcurrency` in all (bands.js); the image is the same for any number. Aborting the running call
 // terminates its workers (a synchronous wasm call cannot be interrupted any other way)
 // and the next call starts fresh ones; aborting a queued call just drops it. A worker
 // that fails to start or dies rejects the running call with the cause, and the next
@@ -116,15 +116,20 @@ export class PatternSynthClient {
     }
   }
 
-  /** Runs a texture call's bands on the main worker and helpers (bands.js). */
+  /** Runs a texture call's bands on the main worker and helpers (bands.js). The job is
+   *  opened on the main worker first: helpers start only for a call that has bands
+   *  (from 512 x 512), not for every texture call. */
   async runBanded(job) {
     let result;
     try {
-      while (this.helpers.length < this.size - 1) this.helpers.push(this.start());
-      const pool = [this.worker, ...this.helpers].map((worker) => ({
+      const pool = () => [this.worker, ...this.helpers].map((worker) => ({
         request: (message, onProgress) => this.request(worker, message, onProgress),
       }));
-      result = await runBands(pool, job.method, job.args, job.onProgress);
+      const first = await pool()[0].request({ bands: 'open', method: job.method, args: job.args });
+      if (first) {
+        while (this.helpers.length < this.size - 1) this.helpers.push(this.start());
+      }
+      result = first ? await runBands(pool(), job.method, job.args, job.onProgress, first) : NOT_BANDED;
     } catch (e) {
       if (this.current === job) this.finish(job, e, false);
       return;
