@@ -25,6 +25,7 @@ module vector vector
 module texture texture
 module codec codec
 cp -r js/pkg/* LICENSE-MIT LICENSE-APACHE pkg/
+node scripts/cts-types.mjs pkg
 rm -f pkg/.gitignore
 rm -rf www/pkg && cp -r pkg www/pkg
 # The playground's built-in textures: the CC0 photographs the tests use.

@@ -132,11 +132,19 @@ export interface StrokeResult {
   growingPoints: number; skippedFull: number; passedOver: number;
 }
 
+/** Bytes of a .wasm file (DOM's BufferSource, spelt without the DOM library, so that
+ *  Node-only TypeScript reads these types). */
+export type WasmBytes = ArrayBuffer | ArrayBufferView;
+/** A compiled module: `WebAssembly.Module` where the environment's types declare it. */
+export type WasmModule = typeof globalThis extends { WebAssembly: { Module: abstract new (...args: any) => infer M } } ? M : object;
+/** `fetch`'s Request and Response where the environment's types declare them. */
+type FetchRequest = typeof globalThis extends { Request: abstract new (...args: any) => infer R } ? R : never;
+type FetchResponse = typeof globalThis extends { Response: abstract new (...args: any) => infer R } ? R : never;
 /** Where the .wasm comes from: a URL (default: beside the module), a Response, bytes or a compiled module. */
-export type InitInput = string | URL | Request | Response | Promise<Response> | BufferSource | WebAssembly.Module;
+export type InitInput = string | URL | FetchRequest | FetchResponse | Promise<FetchResponse> | WasmBytes | WasmModule;
 /** Fetches and instantiates an entry's wasm module; call (and await) once before anything
  *  else (Node entries are ready at import). */
 export type Init = (input?: InitInput | { module_or_path: InitInput }) => Promise<void>;
 /** Instantiates synchronously from bytes or a compiled module (Node, workers). */
-export type InitSync = (input: BufferSource | WebAssembly.Module | { module: BufferSource | WebAssembly.Module }) => void;
+export type InitSync = (input: WasmBytes | WasmModule | { module: WasmBytes | WasmModule }) => void;
 

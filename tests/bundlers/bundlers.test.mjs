@@ -100,6 +100,16 @@ test('a TypeScript consumer type-checks with tsc --strict against the shipped ty
     '--lib', 'es2022,dom', join(work, 'site/consumer.ts')], { stdio: 'pipe' });
 });
 
+test('Node-only TypeScript (no DOM library) and CommonJS TypeScript (module node16) type-check; the CommonJS output runs', () => {
+  for (const f of ['node-only.ts', 'commonjs.cts']) cpSync(join(import.meta.dirname, 'site', f), join(work, 'site', f));
+  const tsc = (...args) => execFileSync(bin('tsc'), ['--strict', '--target', 'es2022', '--module', 'node16', '--moduleResolution', 'node16',
+    '--lib', 'es2022', '--types', 'node', '--typeRoots', join(root, 'node_modules/@types'), ...args], { stdio: 'pipe', cwd: join(work, 'site') });
+  tsc('--noEmit', join(work, 'site/node-only.ts'));
+  tsc('--outDir', join(work, 'site/out'), join(work, 'site/commonjs.cts'));
+  const printed = execFileSync(process.execPath, [join(work, 'site/out/commonjs.cjs')], { encoding: 'utf8', cwd: join(work, 'site') });
+  assert.match(printed, /^0\.1\.0 \d+ function$/m);
+});
+
 test('Vite dev server: the same site works unbuilt', async () => {
   const { createServer } = await import('vite');
   const server = await createServer({ root: join(work, 'site'), logLevel: 'warn', server: { port: 0, host: '127.0.0.1' } });

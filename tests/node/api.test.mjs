@@ -178,3 +178,24 @@ test('the option types declare exactly the options the engine reads', () => {
   // Blend options: the texture options (read by serde) and three read by hand.
   assert.deepEqual(keys('BlendOptions'), [...known((o) => ps.blendTextures(img, img, { width: 9, height: 9, ...o })), ...blendOwn].sort());
 });
+
+test('the packed package holds every file its modules import or fetch', async () => {
+  const { execFileSync } = await import('node:child_process');
+  const { readFileSync } = await import('node:fs');
+  const { dirname, join, normalize } = await import('node:path');
+  const pkg = new URL('../../pkg/', import.meta.url).pathname;
+  const [{ files }] = JSON.parse(execFileSync('npm', ['pack', pkg, '--dry-run', '--json'], { encoding: 'utf8' }));
+  const shipped = new Set(files.map((f) => f.path));
+  const missing = [];
+  for (const file of shipped) {
+    if (!/\.(js|d\.ts|d\.cts)$/.test(file)) continue;
+    const text = readFileSync(join(pkg, file), 'utf8');
+    const refs = [...text.matchAll(/(?:from\s+|import\(\s*|new URL\(\s*)['"`](\.{1,2}\/[^'"`$]+)['"`]/g)].map((m) => m[1]);
+    for (const ref of refs) {
+      let target = normalize(join(dirname(file), ref));
+      if (/\.d\.c?ts$/.test(file)) target = target.replace(/\.js$/, '.d.ts').replace(/\.cjs$/, '.d.cts');
+      if (!shipped.has(target)) missing.push(`${file} -> ${ref}`);
+    }
+  }
+  assert.deepEqual(missing, []);
+});
