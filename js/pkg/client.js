@@ -29,11 +29,15 @@ export class PatternSynthClient {
   constructor(worker, { workers } = {}) {
     let size = workers ?? defaultWorkers();
     if (!(Number.isInteger(size) && size >= 1)) throw new TypeError(`workers must be a whole number from 1, got ${workers}.`);
+    /** The worker script's URL, where the client knows it (for messages). */
+    this.workerUrl = null;
     if (worker === undefined) {
+      this.workerUrl = new URL('./worker.js', import.meta.url).href;
       this.makeWorker = () => new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
     } else if (typeof worker === 'function') {
       this.makeWorker = worker;
     } else if (typeof worker === 'string' || worker instanceof URL) {
+      this.workerUrl = String(worker);
       this.makeWorker = () => new Worker(worker, { type: 'module' });
     } else if (worker && typeof worker.postMessage === 'function') {
       // A given Worker is used until it is terminated; then no fresh one can be made.
@@ -112,7 +116,7 @@ export class PatternSynthClient {
       this.worker.postMessage({ id: job.id, method: job.method, args: job.args, ...job.shape });
     } catch (e) {
       // e.g. a SecurityError for a worker script on another origin.
-      this.finish(job, new Error(`The patternsynth worker could not start: ${e?.message ?? e}`, { cause: e }), true);
+      this.finish(job, new Error(`The patternsynth worker could not start: ${e?.message ?? e}${this.crossOrigin()}`, { cause: e }), true);
     }
   }
 
@@ -171,12 +175,25 @@ export class PatternSynthClient {
     }
   }
 
+  /** A hint when the worker's script is on another origin (a CDN), which browsers do not
+   *  start as a worker: the README's recipe starts it from a same-origin blob: module. */
+  crossOrigin() {
+    let url;
+    try {
+      url = this.workerUrl && new URL(this.workerUrl, globalThis.location?.href);
+    } catch {
+      return '';
+    }
+    if (!url || !globalThis.location || url.origin === globalThis.location.origin || url.protocol === 'blob:') return '';
+    return ` The worker script ${url.href} is on another origin than the page (${globalThis.location.origin}), and browsers start workers only from the page's origin: start it from a same-origin blob: module that imports it (the package README, "From another origin").`;
+  }
+
   /** The worker failed to load or died: the running call fails with the cause. */
   dead(worker, event) {
     if (worker !== this.worker && !this.helpers.includes(worker)) return;
     const where = event?.filename ? ` (${event.filename}${event.lineno ? `:${event.lineno}` : ''})` : '';
     const cause = event?.message || 'its script, or a module it imports, could not be loaded or evaluated; see the browser console';
-    const error = new Error(`The patternsynth worker failed: ${cause}${where}.`);
+    const error = new Error(`The patternsynth worker failed: ${cause}${where}.${this.crossOrigin()}`);
     if (this.current) this.finish(this.current, error, true);
     else this.stopWorkers();
   }

@@ -4,6 +4,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { openPlayground } from './harness.mjs';
+import { serve } from '../../scripts/static-server.mjs';
 
 test('the client recovers from a worker that fails to start and from bad input', async () => {
   const { page, close } = await openPlayground();
@@ -64,6 +65,22 @@ test('fields and preview: a large stroke result comes back as a Blob and an imag
     assert.ok(out.same && out.classes && out.type === 'image/svg+xml');
     assert.match(out.bad, /preview: width and height must be from 1 to 8192/);
   } finally {
+    await close();
+  }
+});
+
+test('a worker script on another origin (a CDN) fails with its URL and the way round', async () => {
+  const { page, close } = await openPlayground();
+  const other = await serve('www', 0);
+  try {
+    const message = await page.evaluate(async (url) => {
+      const { PatternSynthClient } = await import('./pkg/client.js');
+      return new PatternSynthClient(url).version().then(() => 'resolved', (e) => e.message);
+    }, `http://localhost:${other.address().port}/pkg/worker.js`);
+    assert.match(message, /worker script http:\/\/localhost:\d+\/pkg\/worker\.js is on another origin than the page/);
+    assert.match(message, /same-origin blob: module.*From another origin/);
+  } finally {
+    other.close();
     await close();
   }
 });
