@@ -12,8 +12,9 @@ export interface CallOptions {
    *  `'svgBlob'` adds the SVG as a Blob made in the worker (no copy of the text). */
   fields?: string[];
   /** Stroke results: the strokes also drawn in the worker, fitted into `width x height`
-   *  pixels, as `result.preview` (an ImageBitmap; null without OffscreenCanvas). */
-  preview?: { width: number; height: number; background?: string };
+   *  pixels (at most 8192), as `result.preview`: an ImageBitmap, or with
+   *  `type: 'image/png'` a PNG Blob encoded in the worker; null without OffscreenCanvas. */
+  preview?: { width: number; height: number; background?: string; type?: 'image/png' };
 }
 
 export interface ClientOptions {

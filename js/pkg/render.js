@@ -6,11 +6,13 @@
 /**
  * `result.strokes` (in a `sceneWidth x sceneHeight` scene) scaled to fit `width x height`
  * (the aspect kept), on `background` (CSS colour; transparent by default). Returns an
- * ImageBitmap, or null where OffscreenCanvas is missing.
+ * ImageBitmap, or with `type: 'image/png'` a promise of a PNG Blob (encoded here, off
+ * the page's thread); null where OffscreenCanvas is missing.
  */
-export function renderStrokes(strokes, sceneWidth, sceneHeight, { width, height, background } = {}) {
+export function renderStrokes(strokes, sceneWidth, sceneHeight, { width, height, background, type } = {}) {
   if (typeof OffscreenCanvas !== 'function') return null;
   if (!(sceneWidth > 0 && sceneHeight > 0)) throw new Error('preview: the result has no size to draw.');
+  if (type !== undefined && type !== 'image/png') throw new Error(`preview: type may be 'image/png' (or left out for an ImageBitmap), got ${type}.`);
   if (!(width >= 1 && height >= 1 && width <= 8192 && height <= 8192)) {
     throw new Error(`preview: width and height must be from 1 to 8192 pixels, got ${width} x ${height}.`);
   }
@@ -50,5 +52,5 @@ export function renderStrokes(strokes, sceneWidth, sceneHeight, { width, height,
       ctx.stroke(path);
     }
   }
-  return canvas.transferToImageBitmap();
+  return type ? canvas.convertToBlob({ type }) : canvas.transferToImageBitmap();
 }

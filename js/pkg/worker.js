@@ -27,7 +27,7 @@ const transferables = (r) => {
 };
 
 /** The result as the page asked for it: drawn (`preview`), then cut to `fields`. */
-function shape(result, args, { fields, preview }) {
+async function shape(result, args, { fields, preview }) {
   if (!fields && !preview) return result;
   if (result === null || typeof result !== 'object') throw new Error('fields and preview apply to results that are objects.');
   let out = result;
@@ -40,7 +40,7 @@ function shape(result, args, { fields, preview }) {
   }
   if (preview) {
     if (!Array.isArray(result.strokes)) throw new Error('preview applies to results with strokes.');
-    out.preview = renderStrokes(result.strokes, result.width ?? args[1]?.width, result.height ?? args[1]?.height, preview);
+    out.preview = await renderStrokes(result.strokes, result.width ?? args[1]?.width, result.height ?? args[1]?.height, preview);
   }
   return out;
 }
@@ -82,7 +82,7 @@ self.onmessage = async ({ data }) => {
       callArgs.length = spec.args;
       callArgs.push((fraction) => { self.postMessage({ id, progress: fraction }); });
     }
-    const result = shape(api[method](...callArgs), callArgs, data);
+    const result = await shape(api[method](...callArgs), callArgs, data);
     self.postMessage({ id, result }, transferables(result));
   } catch (e) {
     self.postMessage({ id, error: e instanceof Error ? e.message : String(e), name: e?.name });

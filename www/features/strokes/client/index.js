@@ -256,7 +256,10 @@ export function mountStrokes(root, client) {
       const box = $('preview').clientWidth * devicePixelRatio || 800;
       const fit = Math.min(1, 4096 / Math.max(width, height), box / width);
       const preview = { width: Math.ceil(width * fit), height: Math.ceil(height * fit), background: '#ffffff' };
-      const r = await client.synthesizeStrokes(drawing.strokes, opts, { ...call, fields: ['svgBlob', 'classes', 'classification'], preview });
+      const strokes = drawing.strokes;
+      const r = await client.synthesizeStrokes(strokes, opts, { ...call, fields: ['svgBlob', 'classes', 'classification'], preview });
+      shownResult = { strokes, opts };
+      $('download-png').disabled = false;
       const ms = performance.now() - t0;
       if (resultUrl) URL.revokeObjectURL(resultUrl);
       resultUrl = URL.createObjectURL(r.svgBlob);
@@ -279,6 +282,32 @@ export function mountStrokes(root, client) {
     });
     scheduleClassify(0);
     autocomplete.update();
+  });
+
+  // A PNG of the result shown, at a chosen width: the same call again (same strokes,
+  // options and seed give the same pattern), drawn and encoded in the worker.
+  let shownResult = null;
+  $('download-png').addEventListener('click', async () => {
+    if (!shownResult) return;
+    const { strokes, opts } = shownResult;
+    const width = Math.round(Number($('png-width').value));
+    if (!(width >= 16 && width <= 8192)) return say('The PNG width must be from 16 to 8192 pixels.', 'error');
+    const height = Math.max(1, Math.round((width * opts.height) / opts.width));
+    if (height > 8192) return say(`At ${width} pixels wide the PNG would be ${height} tall; the most is 8192.`, 'error');
+    $('download-png').disabled = true;
+    try {
+      say(`Drawing a ${width}×${height} PNG…`);
+      const r = await client.synthesizeStrokes(strokes, opts, { fields: [], preview: { width, height, background: '#ffffff', type: 'image/png' } });
+      if (!r.preview) throw new Error('This browser cannot draw in a worker (no OffscreenCanvas); download the SVG instead.');
+      const a = Object.assign(document.createElement('a'), { href: URL.createObjectURL(r.preview), download: `pattern-${opts.width}x${opts.height}-${width}px.png` });
+      a.click();
+      setTimeout(() => URL.revokeObjectURL(a.href), 10_000);
+      say(`PNG ready: ${width}×${height}.`);
+    } catch (e) {
+      say(e.message, 'error');
+    } finally {
+      $('download-png').disabled = false;
+    }
   });
 
   // --- seamless tile ---
