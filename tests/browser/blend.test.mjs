@@ -138,6 +138,8 @@ test('an opened texture and the painted mask survive a reload', async () => {
   const png = Buffer.from(encodePng({ width: 40, height: 30, data }));
   await page.setInputFiles('#slot-b input[type=file]', { name: 'halves.png', mimeType: 'image/png', buffer: png });
   await page.waitForFunction(() => document.querySelector('#slot-b canvas').width === 40);
+  // The page says it loaded the file once the file is kept (IndexedDB is asynchronous).
+  await page.waitForFunction(() => /Loaded halves\.png as texture B/.test(document.querySelector('#blend-messages').textContent));
   await page.reload();
   await page.click('[data-tab="blend"]');
   await page.waitForFunction(() => document.querySelector('#slot-b canvas').width === 40 && document.querySelector('#slot-a canvas').width === 128);
