@@ -225,7 +225,7 @@ test('nothing lost: the drawing and its undo history survive a reload, and a ses
   for (const [x, y] of [[50, 50], [150, 50], [250, 50]]) await stroke(page, x, y);
   await page.click('#undo');
   assert.equal(await strokeCount(page), 2);
-  await page.waitForTimeout(600); // the write follows the change by 250 ms
+  await page.waitForTimeout(300); // the write starts with the change; let it commit
   await page.reload();
   await page.waitForFunction(() => /^2 strokes/.test(document.querySelector('#stroke-count').textContent));
   await page.click('#redo');

@@ -45,10 +45,12 @@ export const keys = () => run('readonly', (s) => s.getAllKeys());
 
 /**
  * Writes that follow changes, at most one at a time and the latest one last: `save()`
- * after every change; `write()` makes the value. `onError(e)` hears of a failure once
- * per run of failures, and `onSaved()` of the next success.
+ * after every change starts a write at once (a reload right after a stroke must find
+ * it), and changes made while one is under way are written together after it.
+ * `write()` makes the value. `onError(e)` hears of a failure once per run of failures,
+ * and `onSaved()` of the next success.
  */
-export function saver(key, write, { delay = 250, onError, onSaved } = {}) {
+export function saver(key, write, { delay = 0, onError, onSaved } = {}) {
   let timer = null;
   let busy = false;
   let again = false;
