@@ -274,3 +274,28 @@ test('the vector pattern downloads as a PNG of a chosen width, drawn in the work
   await page.click('#download-png');
   await page.waitForFunction(() => /from 16 to 8192/.test(document.querySelector('#messages').textContent));
 });
+
+test('axe and the accessibility tree stay clean with results shown: a pattern, ghosts, a tile and its CSS, a blend, a seamless tile', async () => {
+  const { page } = await open();
+  const clean = async (state) => {
+    assert.deepEqual(await axe(page), [], `axe with ${state}`);
+    assert.deepEqual(await unnamed(page), [], `unnamed controls with ${state}`);
+  };
+  await page.waitForFunction(() => !document.querySelector('#accept-ghosts').disabled, null, { timeout: 15_000 });
+  await clean('ghosts shown');
+  await page.click('#synthesize');
+  await page.waitForFunction(() => document.querySelector('#messages').textContent === 'Done.', null, { timeout: 60_000 });
+  await page.click('#make-tile');
+  await page.waitForFunction(() => document.querySelector('#tile-preview').classList.contains('shown'), null, { timeout: 30_000 });
+  await page.click('#tile-copy');
+  await clean('a pattern, a tile and its CSS shown');
+  await page.click('[data-tab="blend"]');
+  await page.click('#blend-run');
+  await page.waitForFunction(() => /^\d+×\d+/.test(document.querySelector('#blend-info').textContent), null, { timeout: 120_000 });
+  await clean('a blend shown');
+  await page.click('[data-tab="seamless"]');
+  await page.click('#seam-run');
+  await page.waitForFunction(() => document.querySelector('#seam-repeat').classList.contains('shown'), null, { timeout: 120_000 });
+  await page.click('#seam-copy');
+  await clean('a seamless tile and its CSS shown');
+});
