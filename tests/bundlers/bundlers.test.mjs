@@ -85,7 +85,13 @@ test('webpack 5 production build: the worker client works with no configuration'
 test('esbuild bundle: the package files served beside it, the worker passed by URL', async () => {
   const out = join(work, 'dist-esbuild');
   execFileSync(bin('esbuild'), [join(work, 'site/main.js'), '--bundle', '--format=esm', `--outfile=${join(out, 'main.js')}`, '--log-level=warning']);
-  cpSync(join(work, 'site/node_modules/patternsynth'), join(out, 'patternsynth'), { recursive: true });
+  // Exactly the files the package README's copy command copies.
+  const from = join(work, 'site/node_modules/patternsynth');
+  for (const f of ['worker.js', 'patternsynth.js', 'api.js', 'render.js', 'instance.js', 'codec.js',
+    'wasm/full.js', 'wasm/full_bg.wasm', 'wasm/codec.js', 'wasm/codec_bg.wasm', 'wasm/vector_bg.wasm']) {
+    mkdirSync(join(out, 'patternsynth/wasm'), { recursive: true });
+    cpSync(join(from, f), join(out, 'patternsynth', f));
+  }
   // The recipe: init() with the wasm's URL, the client with the worker's URL.
   writeFileSync(join(out, 'index.html'), `<!doctype html><meta charset="utf-8">
     <script>globalThis.wasmUrl = new URL('./patternsynth/wasm/vector_bg.wasm', location.href);
