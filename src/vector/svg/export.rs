@@ -179,19 +179,26 @@ fn recurring(strokes: &[Stroke]) -> (Vec<u32>, Vec<u32>) {
         let micro = |v: f64| if v.is_finite() { (v * 1e6).round().clamp(-9e15, 9e15) as i64 } else { 0 };
         s.points.iter().map(move |p| (micro(p[0] - ox), micro(p[1] - oy)))
     }
+    // The paint as written (`paint` formats it): colours, and numbers in thousandths.
+    fn paint_key(s: &Stroke) -> impl Hash + Eq {
+        let milli = |v: f64| if v.is_finite() { (v * 1000.0).round() as i64 } else { 0 };
+        let fill = s.fill.map(|c| (c.0, milli(s.fill_opacity.min(1.0)), s.fill_rule == FillRule::Evenodd));
+        let stroke = s.stroke.map(|c| (c.0, milli(s.width), milli(s.stroke_opacity.min(1.0))));
+        (fill, stroke, milli(s.opacity.min(1.0)))
+    }
     let alike = |a: &Stroke, b: &Stroke| {
         a.points.len() == b.points.len()
             && a.closed == b.closed
             && a.breaks == b.breaks
+            && paint_key(a) == paint_key(b)
             && relative(a).eq(relative(b))
-            && paint(a) == paint(b)
     };
     let mut by_hash: HashMap<u64, Vec<u32>> = HashMap::new();
     let (mut group, mut count, mut first) = (Vec::with_capacity(strokes.len()), Vec::new(), Vec::new());
     for (i, s) in strokes.iter().enumerate() {
         let mut h = std::collections::hash_map::DefaultHasher::new();
         relative(s).for_each(|p| p.hash(&mut h));
-        (s.closed, &s.breaks, paint(s)).hash(&mut h);
+        (s.closed, &s.breaks, paint_key(s)).hash(&mut h);
         let candidates = by_hash.entry(h.finish()).or_default();
         let g = match candidates.iter().find(|&&g| alike(&strokes[first[g as usize]], s)) {
             Some(&g) => g,
