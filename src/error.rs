@@ -37,3 +37,10 @@ pub type Result<T> = std::result::Result<T, Error>;
 pub(crate) fn invalid<T>(msg: impl Into<String>) -> Result<T> {
     Err(Error::InvalidInput(msg.into()))
 }
+
+/// A byte count for a message, in megabytes (2^20 bytes) to one decimal, so that a
+/// size just over a limit does not read as the limit itself ("32.4 MB; the limit is
+/// 32.0 MB") and every message uses one unit.
+pub fn megabytes(bytes: u64) -> String {
+    format!("{:.1} MB", bytes as f64 / (1u64 << 20) as f64)
+}

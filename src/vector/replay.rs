@@ -19,6 +19,9 @@ pub struct Replay {
     pub shown: usize,
     /// Shown proposals that are not among the strokes still to draw.
     pub wrong: usize,
+    /// Of the wrong ones, those on a stroke of their class already drawn (or accepted):
+    /// a copy proposed again beside itself.
+    pub stacked: usize,
     /// Strokes drawn by hand before the first acceptance.
     pub before_first: usize,
     /// Slowest and median call, in milliseconds (native).
@@ -79,6 +82,10 @@ pub fn replay(truth: &[Stroke], classes: &[u32], region: Rect, tol: f64) -> Repl
                 Some((g, _)) => matched.push((g, k)),
                 None => {
                     r.wrong += 1;
+                    r.stacked += usize::from(
+                        (0..truth.len())
+                            .any(|g| done[g] && classes[g] == class && truth[g].reference_point().distance(p) < tol),
+                    );
                     if debug {
                         let near = (0..truth.len())
                             .map(|g| (truth[g].reference_point().distance(p), done[g], classes[g]))

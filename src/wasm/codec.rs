@@ -16,21 +16,23 @@ pub fn decode_image(bytes: JsValue) -> Result<JsValue, JsValue> {
     if read::detached(&bytes) {
         return Err(read::detached_error("image file"));
     }
-    let array = if let Some(a) = bytes.dyn_ref::<js_sys::Uint8Array>() {
+    let array = if let Some(a) = read::view::<js_sys::Uint8Array>(&bytes) {
         a.clone()
-    } else if let Some(b) = bytes.dyn_ref::<js_sys::ArrayBuffer>() {
-        js_sys::Uint8Array::new(b)
+    } else if let Some(b) = read::buffer(&bytes) {
+        js_sys::Uint8Array::new(&b)
     } else {
+        let posing = bytes.is_instance_of::<js_sys::Uint8Array>() || bytes.is_instance_of::<js_sys::ArrayBuffer>();
         return Err(error(&format!(
-            "decodeImage needs the file's bytes as a Uint8Array or ArrayBuffer, got {}.",
-            type_name(&bytes)
+            "decodeImage needs the file's bytes as a Uint8Array or ArrayBuffer, got {}{}.",
+            type_name(&bytes),
+            if posing { " that only inherits from one (a Proxy?): pass the bytes themselves" } else { "" }
         )));
     };
     if array.length() > MAX_ENCODED_BYTES {
         return Err(error(&format!(
-            "The image file is {} MB; the limit is {} MB.",
-            array.length() >> 20,
-            MAX_ENCODED_BYTES >> 20
+            "The image file is {}; the limit is {}.",
+            crate::error::megabytes(array.length() as u64),
+            crate::error::megabytes(MAX_ENCODED_BYTES as u64)
         )));
     }
     let d = raster::codec::decode_image(&array.to_vec()).map_err(js_error)?;

@@ -29,6 +29,13 @@ extern "C" {
     #[cfg(any(feature = "texture", feature = "codec"))]
     #[wasm_bindgen(catch, constructor, js_class = "Uint8Array")]
     fn new(buffer: &JsValue) -> Result<ByteView, JsValue>;
+    /// `Reflect.get(target, key, receiver)`: a getter of `target` run on `receiver`.
+    #[cfg(any(feature = "texture", feature = "codec"))]
+    #[wasm_bindgen(catch, js_namespace = Reflect, js_name = get)]
+    fn get_on(target: &JsValue, key: &JsValue, receiver: &JsValue) -> Result<JsValue, JsValue>;
+    #[cfg(any(feature = "texture", feature = "codec"))]
+    #[wasm_bindgen(thread_local_v2, js_namespace = ArrayBuffer, js_name = prototype)]
+    static ARRAY_BUFFER_PROTOTYPE: JsValue;
 }
 
 /// The most strokes any call reads (synthesis outputs hold up to 2,000,000 elements).
@@ -99,6 +106,29 @@ pub fn detached(v: &JsValue) -> bool {
             empty && ByteView::new(&buffer).is_err()
         }
     }
+}
+
+/// `v` as a typed array of kind `T` when it is one (a Proxy of one is not: its
+/// `length` and elements throw when read through the typed array's own methods, which
+/// do not catch; `ArrayBuffer.isView` looks at the value itself and runs no page code).
+#[cfg(any(feature = "texture", feature = "codec"))]
+pub fn view<T: JsCast>(v: &JsValue) -> Option<&T> {
+    if js_sys::ArrayBuffer::is_view(v) {
+        v.dyn_ref::<T>()
+    } else {
+        None
+    }
+}
+
+/// `v` as an ArrayBuffer when it is one: its `byteLength` getter, run on `v` itself,
+/// throws (caught) for a Proxy of one or anything else that only inherits from it.
+#[cfg(any(feature = "texture", feature = "codec"))]
+pub fn buffer(v: &JsValue) -> Option<js_sys::ArrayBuffer> {
+    if !v.is_instance_of::<js_sys::ArrayBuffer>() {
+        return None;
+    }
+    ARRAY_BUFFER_PROTOTYPE.with(|p| get_on(p, &"byteLength".into(), v)).ok()?;
+    Some(v.clone().unchecked_into())
 }
 
 /// The error for bytes whose buffer was transferred (to a worker, by postMessage).
@@ -268,7 +298,45 @@ pub fn options<T: serde::de::DeserializeOwned + Default>(
         }
     }
     missing(&|k| js_sys::Reflect::has(&defined, &JsValue::from_str(k)).unwrap_or(false))?;
-    serde_wasm_bindgen::from_value(defined.into()).map_err(|e| error(&format!("Invalid {what}: {e}")))
+    serde_wasm_bindgen::from_value::<T>(defined.clone().into()).map_err(|e| {
+        // serde names the expected type, not the option: try each alone to name it.
+        let culprit = known.iter().find(|&&key| {
+            let Ok(value) = js_sys::Reflect::get(&defined, &JsValue::from_str(key)) else { return false };
+            if value.is_undefined() {
+                return false;
+            }
+            let alone = js_sys::Object::new();
+            js_sys::Reflect::set(&alone, &JsValue::from_str(key), &value).is_ok()
+                && serde_wasm_bindgen::from_value::<T>(alone.into()).is_err()
+        });
+        let text = plain_types(&e.to_string());
+        let text = text.strip_prefix("Error: ").unwrap_or(&text);
+        match culprit {
+            Some(key) => error(&format!("Invalid {what}: option `{key}`: {text}.")),
+            None => error(&format!("Invalid {what}: {text}.")),
+        }
+    })
+}
+
+/// serde's message with the expected Rust type said in words ("expected f64" reads
+/// "expected a number").
+fn plain_types(text: &str) -> String {
+    let words = [
+        ("f64", "a number"),
+        ("f32", "a number"),
+        ("u64", "a whole number"),
+        ("u32", "a whole number"),
+        ("usize", "a whole number"),
+        ("i64", "a whole number"),
+        ("i32", "a whole number"),
+        ("bool", "true or false"),
+        ("a boolean", "true or false"),
+    ];
+    let mut out = text.to_string();
+    for (rust, said) in words {
+        out = out.replace(&format!("expected {rust}"), &format!("expected {said}"));
+    }
+    out
 }
 
 #[cfg(feature = "vector")]

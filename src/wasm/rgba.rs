@@ -29,9 +29,9 @@ pub fn rgba_from_js(v: &JsValue, what: &str) -> Result<(usize, usize, Vec<u8>), 
     if read::detached(&data) {
         return Err(read::detached_error(&format!("{what}'s data")));
     }
-    let length = if let Some(a) = data.dyn_ref::<js_sys::Uint8ClampedArray>() {
+    let length = if let Some(a) = read::view::<js_sys::Uint8ClampedArray>(&data) {
         a.length()
-    } else if let Some(a) = data.dyn_ref::<js_sys::Uint8Array>() {
+    } else if let Some(a) = read::view::<js_sys::Uint8Array>(&data) {
         a.length()
     } else {
         return Err(error(&format!(
@@ -42,7 +42,7 @@ pub fn rgba_from_js(v: &JsValue, what: &str) -> Result<(usize, usize, Vec<u8>), 
     if length as usize != w * h * 4 {
         return Err(error(&format!("The {what}'s data holds {length} bytes; {w} x {h} RGBA needs {}.", w * h * 4)));
     }
-    let bytes = match data.dyn_ref::<js_sys::Uint8ClampedArray>() {
+    let bytes = match read::view::<js_sys::Uint8ClampedArray>(&data) {
         Some(a) => a.to_vec(),
         None => data.unchecked_ref::<js_sys::Uint8Array>().to_vec(),
     };

@@ -5,11 +5,6 @@ use super::fit::Fit;
 use super::SuggestOptions;
 use crate::vector::element::Element;
 use kurbo::Rect;
-use std::f64::consts::SQRT_2;
-
-/// A site nearer the region's edge than this many of its standard errors (in either
-/// coordinate) may be outside it.
-const EDGE: f64 = 2.0;
 
 impl Fit {
     fn at(&self, i: usize) -> (i64, i64) {
@@ -24,16 +19,9 @@ impl Fit {
         opts: &SuggestOptions,
         max_cells: usize,
     ) -> Vec<(usize, (i64, i64), usize)> {
-        // Near the region's edge, a site off by its error may be outside: the copy the
-        // hand would draw there may not be on the canvas (fill goes to the edge).
-        let margin = |m: usize, c: (i64, i64)| if opts.fill { 0.0 } else { EDGE * self.error_at(m, c) / SQRT_2 };
-        let inside = |m: usize, c: (i64, i64)| {
-            region.is_none_or(|r| {
-                let p = self.site(m, c);
-                let d = margin(m, c);
-                r.contains(p) && p.x - r.x0 >= d && r.x1 - p.x >= d && p.y - r.y0 >= d && r.y1 - p.y >= d
-            })
-        };
+        // A copy is proposed when its site is on the region (the canvas): the hand draws
+        // copies up to the edge, and one whose site is off it belongs to no canvas.
+        let inside = |m: usize, c: (i64, i64)| region.is_none_or(|r| r.contains(self.site(m, c)));
         let mut drawn = self.cell.clone();
         drawn.sort_unstable();
         let mut occupied: Vec<(i64, i64)> = self.cell.iter().map(|c| c.1).collect();
@@ -47,6 +35,7 @@ impl Fit {
         let previous = (0..elems.len()).rev().map(|i| self.at(i)).find(|&c| c != latest);
         let rhythm = previous.map_or((1, 0), |p| (latest.0 - p.0, latest.1 - p.1));
 
+        let occupied_cells = occupied.len();
         let mut cells: Vec<((i64, i64), usize)> = occupied.iter().map(|&c| (c, 0)).collect();
         let mut taken = Cells(occupied);
         if opts.fill {
@@ -96,11 +85,21 @@ impl Fit {
                 last = next;
             }
         }
+        // A motif position missing from most drawn cells is not a part the copies leave
+        // out by mistake (a stroke the fit reads as its own position, two pairs drawn a
+        // little apart): old cells are completed only with positions most of them hold.
+        let mut held = vec![0usize; self.motif.len()];
+        let mut seen = drawn.clone();
+        seen.dedup();
+        for &(m, _) in &seen {
+            held[m] += 1;
+        }
         let mut out = Vec::new();
         for (c, steps) in cells {
             // Motif positions drawn once are not yet part of the repetition.
-            for m in 0..self.motif.len() {
-                if self.motif[m].members.len() >= 2 && drawn.binary_search(&(m, c)).is_err() && inside(m, c) {
+            for (m, (motif, &held)) in self.motif.iter().zip(&held).enumerate() {
+                let usual = steps > 0 || c == latest || 2 * held >= occupied_cells;
+                if usual && motif.members.len() >= 2 && drawn.binary_search(&(m, c)).is_err() && inside(m, c) {
                     out.push((m, c, steps));
                 }
             }

@@ -42,7 +42,9 @@ mod lattice;
 
 use self::certainty::hand_scatter;
 use self::fit::Fit;
+use super::classify::median;
 use super::reference::Spread;
+use super::spatial::Grid;
 use super::stroke::Stroke;
 use super::synthesize::classify_drawing;
 use crate::error::{invalid, Result};
@@ -219,16 +221,33 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
     // A copy drawn where the lattice (fitted to hand-drawn copies) no longer puts it is
     // still drawn: nothing is proposed on a stroke of its class.
     let tol = TOLERANCE * spread.spacing;
+    // Strokes before the latest `MAX_STROKES` are only looked up where a copy would go
+    // (a fill of the region over 50,000 of them scanned every one per copy: 10 s).
+    let earlier_index = (!earlier.is_empty()).then(|| {
+        let points: Vec<Point> = earlier.iter().map(Stroke::reference_point).collect();
+        let bounds = points.iter().fold(Rect::from_points(points[0], points[0]), |r, &p| r.union_pt(p));
+        let mut grid = Grid::new(bounds, tol, 2 * points.len() + 16);
+        for (i, &p) in points.iter().enumerate() {
+            grid.insert(i as u32, p);
+        }
+        (grid, points)
+    });
     let drawn_at = |class: u32, p: Point, size: f64| {
         let mut hit = false;
         spread.grid.for_each_near(p, tol, |j| {
             let o = &elems[j as usize];
             hit |= o.class == class && o.pos.distance(p) < tol;
         });
-        hit || earlier.iter().any(|e| {
-            e.reference_point().distance(p) < tol && (e.bounds().size().to_vec2().hypot() - size).abs() <= 0.25 * size
-        })
+        if let Some((grid, points)) = &earlier_index {
+            grid.for_each_near(p, tol, |j| {
+                let e = &earlier[j as usize];
+                hit |= points[j as usize].distance(p) < tol
+                    && (e.bounds().size().to_vec2().hypot() - size).abs() <= 0.25 * size;
+            });
+        }
+        hit
     };
+    let stacked = Stacked::new(strokes, &classification.classes, &accepted);
     let mut uncertain = 0;
     for (m, cell, steps) in wanted {
         // Not so far ahead of the hand-drawn copies that the site is likely off by more
@@ -255,6 +274,12 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
             continue;
         }
         let shift = target - motifs.centre[pick];
+        if motifs.instances[pick].iter().any(|&s| {
+            let s = s as usize;
+            stacked.on(classification.classes[s], strokes[s].reference_point() + shift)
+        }) {
+            continue;
+        }
         for &s in &motifs.instances[pick] {
             let part = motifs.part[s as usize];
             let named = motifs.instances[source].iter().copied().find(|&t| motifs.part[t as usize] == part);
@@ -272,4 +297,42 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
         });
     }
     Ok(out)
+}
+
+/// Where a proposed stroke would stack on a drawn one: a stroke of its class within
+/// half the distance at which the hand puts two strokes of that class (the median of
+/// each hand-drawn stroke's nearest of its class). Whatever lattice a fit reads, two
+/// copies of one part are never that close; a refit that moves the lattice's origin
+/// (after the hand contradicts an accepted copy) must not propose the drawn copies
+/// again beside themselves.
+struct Stacked<'a> {
+    strokes: &'a [Stroke],
+    classes: &'a [u32],
+    radius: Vec<f64>,
+}
+
+impl<'a> Stacked<'a> {
+    fn new(strokes: &'a [Stroke], classes: &'a [u32], accepted: &[bool]) -> Self {
+        let count = classes.iter().map(|&c| c as usize + 1).max().unwrap_or(0);
+        let points: Vec<Point> = strokes.iter().map(Stroke::reference_point).collect();
+        let mut nearest = vec![Vec::new(); count];
+        for i in (0..strokes.len()).filter(|&i| !accepted[i]) {
+            let d = (0..strokes.len())
+                .filter(|&j| j != i && classes[j] == classes[i])
+                .map(|j| points[i].distance(points[j]))
+                .filter(|&d| d > 0.0)
+                .fold(f64::INFINITY, f64::min);
+            if d.is_finite() {
+                nearest[classes[i] as usize].push(d);
+            }
+        }
+        let radius = nearest.iter_mut().map(|d| if d.is_empty() { 0.0 } else { 0.5 * median(d) }).collect();
+        Stacked { strokes, classes, radius }
+    }
+
+    fn on(&self, class: u32, p: Point) -> bool {
+        let r = self.radius.get(class as usize).copied().unwrap_or(0.0);
+        r > 0.0
+            && self.strokes.iter().zip(self.classes).any(|(s, &c)| c == class && s.reference_point().distance(p) < r)
+    }
 }

@@ -14,6 +14,7 @@
 //! - **Entities.** References to internal entities expand into the parsed text
 //!   (`entities`): a few of them nested are gigabytes.
 
+use crate::error::megabytes;
 use crate::error::{Error, Result};
 use roxmltree::{Document, Node};
 use std::collections::HashMap;
@@ -66,12 +67,12 @@ pub fn check_source(svg: &str) -> Result<()> {
     if let (total, Some(e)) = super::entities::expansion(svg) {
         if total > MAX_ENTITY_TEXT {
             return Err(Error::TooLarge(format!(
-                "The SVG's entities expand to {} MB of text (`&{};`, {} KB, is used {} times); the limit is {} MB.",
-                total >> 20,
+                "The SVG's entities expand to {} of text (`&{};`, {}, is used {} times); the limit is {}.",
+                megabytes(total),
                 e.name,
-                e.bytes >> 10,
+                megabytes(e.bytes),
                 e.references,
-                MAX_ENTITY_TEXT >> 20
+                megabytes(MAX_ENTITY_TEXT)
             )));
         }
     }

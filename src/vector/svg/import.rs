@@ -57,9 +57,9 @@ const GREY: Rgb = Rgb([128, 128, 128]);
 pub fn parse_svg(svg: &str, opts: &ImportOptions) -> Result<Import> {
     if svg.len() > MAX_SVG_BYTES {
         return Err(Error::TooLarge(format!(
-            "The SVG is {} MB; the limit is {} MB.",
-            svg.len() >> 20,
-            MAX_SVG_BYTES >> 20
+            "The SVG is {}; the limit is {}.",
+            crate::error::megabytes(svg.len() as u64),
+            crate::error::megabytes(MAX_SVG_BYTES as u64)
         )));
     }
     if !(opts.tolerance.is_finite() && opts.tolerance > 0.0) {
