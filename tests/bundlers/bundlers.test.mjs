@@ -28,6 +28,15 @@ function site() {
   return work;
 }
 
+// A step that never settles (a worker that never answers, a response body Chromium never
+// hands over) must fail the test, not hold CI until its limit: once a run of this file
+// sat 30 minutes in one of them.
+function within(ms, promise, what) {
+  let timer;
+  const late = new Promise((_, reject) => { timer = setTimeout(() => reject(new Error(`${what}: no answer in ${ms / 1000} s`)), ms); });
+  return Promise.race([promise, late]).finally(() => clearTimeout(timer));
+}
+
 async function open(dir) {
   const server = await serve(dir, 0);
   const browser = await chromium.launch(CHROMIUM);
@@ -42,9 +51,9 @@ async function open(dir) {
     const bySize = new Map(readdirSync(join(root, 'pkg/wasm')).filter((f) => f.endsWith('.wasm')).map((f) => [statSync(join(root, 'pkg/wasm', f)).size, f]));
     const bodies = [];
     context.on('response', (r) => { if (/\.wasm$/.test(r.url())) bodies.push(r.body().then((b) => wasm.add(bySize.get(b.length) ?? r.url()), () => {})); });
-    await page.goto(`http://127.0.0.1:${server.address().port}/`);
-    const result = await page.evaluate(() => window.result);
-    await Promise.all(bodies);
+    await page.goto(`http://127.0.0.1:${server.address().port}/`, { timeout: 60_000 });
+    const result = await within(120_000, page.evaluate(() => window.result), 'the site\'s result');
+    await within(30_000, Promise.all(bodies), 'the wasm responses\' bodies');
     return { result, errors, wasm: [...wasm].sort() };
   } finally {
     await browser.close();
@@ -125,8 +134,8 @@ test('Vite dev server: the same site works unbuilt', async () => {
     const page = await browser.newPage();
     const errors = [];
     page.on('pageerror', (e) => errors.push(e.message));
-    await page.goto(`http://127.0.0.1:${server.httpServer.address().port}/`);
-    const result = await page.evaluate(() => window.result);
+    await page.goto(`http://127.0.0.1:${server.httpServer.address().port}/`, { timeout: 60_000 });
+    const result = await within(120_000, page.evaluate(() => window.result), 'the site\'s result');
     check({ result, errors });
   } finally {
     await browser.close();
