@@ -30,6 +30,8 @@ const FULL_SUPPORT: f64 = 0.97;
 const ANCHORS: usize = 6;
 /// Elements a candidate is screened on before it is verified on all of them.
 const SAMPLE: usize = 400;
+/// The most candidate displacements tried as periods.
+const MAX_CANDIDATES: usize = 8_192;
 /// Matching radius as a fraction of the median nearest-neighbour distance.
 const TOLERANCE: f64 = 0.2;
 
@@ -171,7 +173,11 @@ pub fn find(elems: &[Element], grid: &Grid, spacing: f64) -> Option<Periods> {
             }
         }
     }
-    let candidates = order::sorted(&candidates, |v| v.hypot2());
+    let mut candidates = order::sorted(&candidates, |v| v.hypot2());
+    // A period is among the shortest displacements of its rarest classes (the test
+    // corpora find theirs within the first 1,800); an irregular scatter of 50,000
+    // strokes made 300,000 candidates, each tried on 400 elements (4.8 s natively).
+    candidates.truncate(MAX_CANDIDATES);
 
     let step = n.div_ceil(SAMPLE).max(1);
     let sample: Vec<usize> = (0..n).step_by(step).collect();

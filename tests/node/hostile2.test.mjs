@@ -38,6 +38,7 @@ const NORMAL = [{ points: [[0, 0], [4, 4]], width: 1 }, { points: [[20, 0], [24,
 // times them; a test must not.
 const BENCH_ONLY = new Set([
   'synthesizeStrokes: 50,000 distinct squares on a 3-unit grid to 2000 x 2000',
+  'synthesizeStrokes: 50,000 overlapping squares scattered at random to 2000 x 2000',
   'suggestStrokes fill of [0, 0, 1e6, 1e6] after 50,000 strokes',
 ]);
 
