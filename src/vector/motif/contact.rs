@@ -41,6 +41,7 @@ const SAMPLES: usize = 32;
 pub fn instances(
     strokes: &[Stroke],
     classes: &[u32],
+    across: impl Fn(&[Vec<u32>]) -> bool,
     touching: impl FnOnce() -> Option<Vec<Vec<u32>>>,
 ) -> Option<Vec<Vec<u32>>> {
     let n = strokes.len();
@@ -86,7 +87,7 @@ pub fn instances(
         }
     }
     edges.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)).then(a.2.cmp(&b.2)));
-    let cut = |edges: &[(f64, u32, u32)]| best_cut(n, edges, &boxes, reach, FLOOR * size);
+    let cut = |edges: &[(f64, u32, u32)]| best_cut(n, edges, &boxes, reach, FLOOR * size, &across);
     // Copies that touch their neighbours (eaves that meet, arms that join): first as
     // `touching` reads them (the lattice's cells), else they touch them where a part
     // meets the same part of the next copy, and without joins between strokes of one
@@ -109,8 +110,16 @@ pub fn instances(
 }
 
 /// The grouping the minimum spanning forest of `edges` (sorted by gap) gives at its
-/// best cut, if any.
-fn best_cut(n: usize, edges: &[(f64, u32, u32)], boxes: &[Rect], reach: f64, floor: f64) -> Option<Vec<Vec<u32>>> {
+/// best cut, if any; a grouping `across` the drawing's repetition (a group holding a
+/// part and its copy one period on: a row of crosses whose arms meet) is none.
+fn best_cut(
+    n: usize,
+    edges: &[(f64, u32, u32)],
+    boxes: &[Rect],
+    reach: f64,
+    floor: f64,
+    across: &dyn Fn(&[Vec<u32>]) -> bool,
+) -> Option<Vec<Vec<u32>>> {
     // Kruskal: the joins of the minimum spanning forest, in order.
     let mut sets = Sets::new(n);
     let joins: Vec<(f64, u32, u32)> = edges.iter().copied().filter(|&(_, i, j)| sets.union(i, j)).collect();
@@ -123,7 +132,7 @@ fn best_cut(n: usize, edges: &[(f64, u32, u32)], boxes: &[Rect], reach: f64, flo
     // clearest.
     let mut best: Option<(usize, Vec<Vec<u32>>)> = None;
     for cut in cuts(&lengths, reach, floor) {
-        if let Some(g) = grouped(n, &joins, cut, boxes) {
+        if let Some(g) = grouped(n, &joins, cut, boxes).filter(|g| !across(g)) {
             let held = g.iter().filter(|i| i.len() >= 2).map(Vec::len).sum::<usize>();
             if best.as_ref().is_none_or(|b| held > b.0) {
                 best = Some((held, g));
@@ -361,10 +370,10 @@ mod tests {
             }
         }
         let bars: Vec<u32> = (0..crosses.len() as u32).map(|i| i % 2).collect();
-        let got = instances(&crosses, &bars, || None).expect("crosses group");
+        let got = instances(&crosses, &bars, |_| false, || None).expect("crosses group");
         assert_eq!(got.len(), 9);
         assert!(got.iter().all(|g| g.len() == 2 && g[1] == g[0] + 1), "{got:?}");
-        assert!(instances(&dashes, &vec![0; dashes.len()], || None).is_none());
+        assert!(instances(&dashes, &vec![0; dashes.len()], |_| false, || None).is_none());
     }
 
     #[test]
@@ -379,7 +388,7 @@ mod tests {
             }
         }
         let bars: Vec<u32> = (0..crosses.len() as u32).map(|i| i % 2).collect();
-        let got = instances(&crosses, &bars, || None).expect("crosses group");
+        let got = instances(&crosses, &bars, |_| false, || None).expect("crosses group");
         assert_eq!(got.len(), 9, "{got:?}");
         assert!(got.iter().all(|g| g.len() == 2 && g[1] == g[0] + 1), "{got:?}");
     }
@@ -393,7 +402,7 @@ mod tests {
                 mesh.push(Stroke::new(vec![[x, y], [x + 20.0, y], [x, y + 20.0]], 1.0, Some(Rgb([0, 0, 0]))));
             }
         }
-        assert!(instances(&mesh, &vec![0; mesh.len()], || None).is_none());
+        assert!(instances(&mesh, &vec![0; mesh.len()], |_| false, || None).is_none());
     }
 
     #[test]

@@ -86,7 +86,17 @@ pub fn group(
     }
     // Copies drawn against their neighbours have no gap to cut at: the repetition of the
     // strokes one by one, if there is one, shows them.
-    let groups = contact::instances(strokes, classes, || lattice(classes).and_then(|p| cells::instances(strokes, &p)));
+    // The strokes' own lattice, read once and only when needed.
+    let read = std::cell::OnceCell::new();
+    let lattice = || read.get_or_init(|| lattice(classes));
+    let across = |groups: &[Vec<u32>]| {
+        let same_class_twice = groups.iter().any(|g| {
+            g.iter().enumerate().any(|(k, &i)| g[k + 1..].iter().any(|&j| classes[i as usize] == classes[j as usize]))
+        });
+        same_class_twice && lattice().as_ref().is_some_and(|p| holds_a_period(strokes, classes, groups, p))
+    };
+    let groups =
+        contact::instances(strokes, classes, across, || lattice().as_ref().and_then(|p| cells::instances(strokes, p)));
     let Some(groups) = groups else {
         return Grouping { motifs: Motifs::single(strokes, classes), classes: None };
     };
@@ -101,6 +111,30 @@ pub fn group(
     }
     let motifs = Motifs { instances: groups, kind: k.kind, centre, part: k.part, copies: None };
     Grouping { motifs, classes: Some(k.classes) }
+}
+
+/// Whether a group holds a stroke and a stroke of its class about one period (or a sum
+/// or difference of the two) on: then it is several copies joined (crosses whose arms
+/// meet along a row of a hexagonal lattice), not one.
+fn holds_a_period(strokes: &[Stroke], classes: &[u32], groups: &[Vec<u32>], p: &Periods) -> bool {
+    let (a, b) = (p.a, p.b);
+    let det = a.cross(b);
+    if det.abs() < 1e-12 {
+        return false;
+    }
+    let tolerance = 0.25 * a.hypot().min(b.hypot());
+    groups.iter().any(|g| {
+        g.iter().enumerate().any(|(k, &i)| {
+            g[k + 1..].iter().any(|&j| {
+                if classes[i as usize] != classes[j as usize] {
+                    return false;
+                }
+                let d = strokes[j as usize].reference_point() - strokes[i as usize].reference_point();
+                let (u, w) = ((d.cross(b) / det).round(), (a.cross(d) / det).round());
+                (u != 0.0 || w != 0.0) && (d - a * u - b * w).hypot() < tolerance
+            })
+        })
+    })
 }
 
 /// An instance's centre: the mean of its strokes' reference points. Each point is the
