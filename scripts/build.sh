@@ -25,6 +25,8 @@ module vector vector
 module texture texture
 module codec codec
 cp -r js/pkg/* LICENSE-MIT LICENSE-APACHE pkg/
+# The Node entries carry their modules in JS (bundled servers have no .wasm beside them).
+node scripts/embed-wasm.mjs pkg
 node scripts/cts-types.mjs pkg
 rm -f pkg/.gitignore
 rm -rf www/pkg && cp -r pkg www/pkg

@@ -16,6 +16,9 @@
 // callback) is refused: it would run on the running call's stack, and a trap in it
 // would replace the instance under the outer call.
 
+/** Where a page whose bundler does not emit the package's wasm finds the way round. */
+const RECIPE = ' If your bundler does not emit the package\'s .wasm files, copy them beside your bundle and pass their URL to init(): see "With a bundler" in the package README.';
+
 /** Memory an instance may keep above its starting size after a call. */
 export const SPARE_BYTES = 64 << 20;
 /** JS reference slots an instance may keep above its starting count after a call. */
@@ -53,16 +56,27 @@ export function engine(glue, defaultUrl, name, hint = '`await init()` first (or 
   async function compile(input) {
     if (input instanceof WebAssembly.Module) return input;
     if (typeof input === 'string' || input instanceof URL || (typeof Request === 'function' && input instanceof Request)) {
-      input = fetch(input);
+      const url = String(input.url ?? input);
+      input = fetch(input).catch((e) => {
+        throw new Error(`patternsynth: could not fetch ${name}'s wasm from ${url} (${e.message}).${RECIPE}`, { cause: e });
+      });
     }
     input = await input;
     if (typeof Response === 'function' && input instanceof Response) {
-      if (!input.ok) throw new Error(`patternsynth: could not fetch ${name}'s wasm from ${input.url}: HTTP ${input.status}.`);
+      if (!input.ok) throw new Error(`patternsynth: could not fetch ${name}'s wasm from ${input.url}: HTTP ${input.status}.${RECIPE}`);
       if (typeof WebAssembly.compileStreaming === 'function' && input.headers.get('Content-Type')?.startsWith('application/wasm')) {
         return WebAssembly.compileStreaming(input);
       }
-      // A server that does not send application/wasm: slower, but it works.
+      // A server that does not send application/wasm: slower, but it works, unless what
+      // came back is not wasm at all (a single-page app's fallback answers every
+      // missing file with its index.html).
+      const url = input.url;
       input = await input.arrayBuffer();
+      const head = new Uint8Array(input, 0, Math.min(4, input.byteLength));
+      if (!(head[0] === 0 && head[1] === 0x61 && head[2] === 0x73 && head[3] === 0x6d)) {
+        const text = new TextDecoder().decode(head);
+        throw new Error(`patternsynth: ${url} is not ${name}'s wasm (it starts with ${JSON.stringify(text)}${text.startsWith('<') ? ': a web page, probably a fallback page for a missing file' : ''}).${RECIPE}`);
+      }
     }
     return WebAssembly.compile(input);
   }

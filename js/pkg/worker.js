@@ -9,13 +9,25 @@
 // here (render.js). A synchronous wasm call cannot read messages, so cancelling
 // is done by the client terminating this worker. After a trap the engine replaces its
 // own instance (instance.js), so this worker stays usable.
-import init, * as api from './patternsynth.js';
+import * as vector from './vector.js';
+import * as texture from './texture.js';
+import * as codec from './codec.js';
 import { METHODS } from './api.js';
 import { renderStrokes } from './render.js';
 
-const ready = init();
-// The codecs load on first use only: browsers rarely need them.
-let codecs = null;
+// Each call loads only the module that has it: a worker that makes textures never
+// fetches the vector engine (or the codecs), and one that draws strokes never fetches
+// the texture engine. Bundlers emit each module's wasm as its own asset.
+const MODULES = { vector, texture, codec };
+const loading = {};
+/** The entry of `name` once its wasm is instantiated (fetched on first use only). */
+function engine(name) {
+  loading[name] ??= MODULES[name].default().then(() => MODULES[name], (e) => {
+    loading[name] = null;
+    throw e;
+  });
+  return loading[name];
+}
 
 // Pixel buffers and previews go back by transfer, not by copy.
 const transferables = (r) => {
@@ -47,7 +59,7 @@ async function shape(result, args, { fields, preview }) {
 
 // Banded texture synthesis (bands.js): { id, bands: 'open' | 'run' | 'close', ... }.
 async function bandsMessage({ id, bands, handle, method, args, step, state, parent, from, to }) {
-  await ready;
+  const api = await engine('texture');
   // A band is a small part of the call: a report every 100 ms is plenty, and spares
   // the page thousands of messages.
   let last = 0;
@@ -75,8 +87,8 @@ self.onmessage = async ({ data }) => {
     }
     const spec = Object.hasOwn(METHODS, method) ? METHODS[method] : null;
     if (!spec) throw new Error(`Unknown method '${method}'.`);
-    if (spec.module === 'codec') await (codecs ??= api.initCodecs().catch((e) => { codecs = null; throw e; }));
-    else await ready;
+    // `version` is in every module: the one already loaded, else the smallest.
+    const api = await engine(spec.module ?? (loading.vector ? 'vector' : 'texture'));
     const callArgs = args.slice(0, spec.args);
     if (spec.progress) {
       callArgs.length = spec.args;

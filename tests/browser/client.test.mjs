@@ -84,3 +84,52 @@ test('a worker script on another origin (a CDN) fails with its URL and the way r
     await close();
   }
 });
+
+test('a worker fetches the wasm of the call it runs, and nothing else', async () => {
+  const { chromium } = await import('playwright-core');
+  const { CHROMIUM } = await import('./chromium.mjs');
+  const { mkdtempSync, writeFileSync, cpSync, readdirSync, statSync } = await import('node:fs');
+  const { tmpdir } = await import('node:os');
+  const { join } = await import('node:path');
+  // A page with nothing but the package: the playground's own worker would add its
+  // modules to the count.
+  const dir = mkdtempSync(join(tmpdir(), 'patternsynth-fetch-'));
+  cpSync('www/pkg', join(dir, 'pkg'), { recursive: true });
+  writeFileSync(join(dir, 'index.html'), '<!doctype html><meta charset="utf-8"><title>fetch</title>');
+  const names = new Map(readdirSync('www/pkg/wasm').filter((f) => f.endsWith('.wasm')).map((f) => [statSync(join('www/pkg/wasm', f)).size, f]));
+  const server = await serve(dir, 0);
+  const browser = await chromium.launch(CHROMIUM);
+  // One fresh page per call type: which .wasm files it fetched, and their bytes.
+  const fetched = async (call) => {
+    const context = await browser.newContext();
+    const bodies = [];
+    context.on('response', (r) => { if (/\.wasm$/.test(r.url())) bodies.push(r.body().then((b) => b.length)); });
+    const page = await context.newPage();
+    await page.goto(`http://127.0.0.1:${server.address().port}/index.html`);
+    const result = await page.evaluate(call);
+    const sizes = await Promise.all(bodies);
+    await context.close();
+    return { result, files: sizes.map((s) => names.get(s) ?? s).sort(), bytes: sizes.reduce((a, b) => a + b, 0) };
+  };
+  try {
+    const texture = await fetched(async () => {
+      const { PatternSynthClient } = await import('./pkg/client.js');
+      const data = new Uint8ClampedArray(64 * 64 * 4).map((_, i) => (i % 4 === 3 ? 255 : (i * 37) % 251));
+      const out = await new PatternSynthClient('./pkg/worker.js').synthesizeTexture({ width: 64, height: 64, data }, { width: 256, height: 256, seed: 1 });
+      return [out.width, out.height];
+    });
+    const vector = await fetched(async () => {
+      const { PatternSynthClient } = await import('./pkg/client.js');
+      const row = Array.from({ length: 4 }, (_, i) => ({ points: [[10 + 20 * i, 10], [15 + 20 * i, 20]], width: 1 }));
+      return (await new PatternSynthClient('./pkg/worker.js').synthesizeStrokes(row, { width: 200, height: 100 })).strokes.length > 4;
+    });
+    console.log(`one 256x256 texture call fetched ${texture.files.join(', ')} (${texture.bytes} bytes); one stroke call ${vector.files.join(', ')} (${vector.bytes} bytes)`);
+    assert.deepEqual(texture.result, [256, 256]);
+    assert.deepEqual(texture.files, ['texture_bg.wasm']);
+    assert.equal(vector.result, true);
+    assert.deepEqual(vector.files, ['vector_bg.wasm']);
+  } finally {
+    await browser.close();
+    server.close();
+  }
+});

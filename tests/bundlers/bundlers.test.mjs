@@ -70,12 +70,13 @@ function check({ result, errors, wasm }) {
   assert.equal(result.aborted, 'AbortError');
   assert.deepEqual(result.after, [48, 40]);
   assert.deepEqual(result.decoded, [8, 6]);
-  // The page's own module is the vector one; the worker loads the full one, then the
+  // The page's own module is the vector one; the worker loads the texture one for the
+  // texture calls (never the full or vector module), then the
   // codecs when first asked (names as the bundler emitted them, hashes aside).
   if (!wasm) return;
   console.log(`wasm loaded: ${wasm.join(', ')}`);
   assert.equal(wasm.length, 3, wasm.join(', '));
-  for (const name of ['vector', 'full', 'codec']) assert.ok(wasm.some((w) => w.includes(name)), `${name}: ${wasm.join(', ')}`);
+  for (const name of ['vector', 'texture', 'codec']) assert.ok(wasm.some((w) => w.includes(name)), `${name}: ${wasm.join(', ')}`);
 }
 
 const work = site();
@@ -96,8 +97,8 @@ test('esbuild bundle: the package files served beside it, the worker passed by U
   execFileSync(bin('esbuild'), [join(work, 'site/main.js'), '--bundle', '--format=esm', `--outfile=${join(out, 'main.js')}`, '--log-level=warning']);
   // Exactly the files the package README's copy command copies.
   const from = join(work, 'site/node_modules/patternsynth');
-  for (const f of ['worker.js', 'patternsynth.js', 'api.js', 'render.js', 'instance.js', 'codec.js',
-    'wasm/full.js', 'wasm/full_bg.wasm', 'wasm/codec.js', 'wasm/codec_bg.wasm', 'wasm/vector_bg.wasm']) {
+  for (const f of ['worker.js', 'vector.js', 'texture.js', 'codec.js', 'api.js', 'render.js', 'instance.js',
+    ...['vector', 'texture', 'codec'].flatMap((m) => [`wasm/${m}.js`, `wasm/${m}_bg.wasm`])]) {
     mkdirSync(join(out, 'patternsynth/wasm'), { recursive: true });
     cpSync(join(from, f), join(out, 'patternsynth', f));
   }

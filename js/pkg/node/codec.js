@@ -1,8 +1,9 @@
 // Node entry of patternsynth/codec: ready at import.
 import { initSync } from '../codec.js';
+import wasm from './embedded/codec.js';
 import { load } from './load.js';
 
-load(initSync, 'codec');
+load(initSync, wasm);
 
 export * from '../codec.js';
 export { default } from '../codec.js';

@@ -1,8 +1,9 @@
 // Node entry of patternsynth/texture: ready at import.
 import { initSync } from '../texture.js';
+import wasm from './embedded/texture.js';
 import { load } from './load.js';
 
-load(initSync, 'texture');
+load(initSync, wasm);
 
 export * from '../texture.js';
 export { default } from '../texture.js';
