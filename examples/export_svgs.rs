@@ -23,7 +23,7 @@ fn main() -> std::io::Result<()> {
         if let Ok(t) = stroke_tile(&strokes, &TileOptions { repeats: 2, ..Default::default() }) {
             std::fs::write(format!("out/{name}-tile.svg"), &t.svg)?;
         }
-        std::fs::write(format!("out/{name}-example.svg"), to_svg(&strokes, 480.0, 400.0))?;
+        std::fs::write(format!("out/{name}-example.svg"), to_svg(&strokes, &[], 480.0, 400.0))?;
     }
     Ok(())
 }

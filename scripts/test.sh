@@ -28,3 +28,6 @@ node --test --test-timeout=300000 tests/browser/
 
 echo "== the packed package in Vite, webpack and esbuild production builds, and tsc --strict"
 node --test --test-timeout=300000 tests/bundlers/
+
+echo "== the packed package in Next.js 16 (Turbopack), SvelteKit (adapter-node) and Rollup"
+node --test --test-timeout=900000 tests/frameworks/

@@ -172,7 +172,7 @@ fn round_trip_through_our_own_export() {
     a.fill_opacity = 0.5;
     a.closed = true;
     let b = Stroke::new(vec![[10.0, 10.0], [20.0, 15.0]], 3.0, Some(Rgb([0, 0, 0])));
-    let svg = to_svg(&[a.clone(), b.clone()], 50.0, 40.0);
+    let svg = to_svg(&[a.clone(), b.clone()], &[], 50.0, 40.0);
     let back = parse_svg(&svg, &ImportOptions::default()).unwrap();
     assert_eq!((back.width, back.height), (50.0, 40.0));
     assert_eq!(back.strokes.len(), 2);
@@ -225,7 +225,7 @@ fn holes_stay_with_their_outline_and_the_report_says_so() {
     assert!(r.warnings.iter().any(|w| w.starts_with("3 shape(s) with holes")), "{:?}", r.warnings);
     assert!(r.warnings.iter().any(|w| w.starts_with("1 compound path(s) were split")), "{:?}", r.warnings);
     // The export keeps each as one path with its fill rule.
-    let svg = patternsynth::vector::svg::to_svg(&r.strokes, r.width, r.height);
+    let svg = patternsynth::vector::svg::to_svg(&r.strokes, &[], r.width, r.height);
     assert_eq!(svg.matches("<path").count(), 4);
     assert_eq!(svg.matches("fill-rule=\"evenodd\"").count(), 1);
 }

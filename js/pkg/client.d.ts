@@ -14,7 +14,20 @@ export interface CallOptions {
   /** Stroke results: the strokes also drawn in the worker, fitted into `width x height`
    *  pixels (at most 8192), as `result.preview`: an ImageBitmap, or with
    *  `type: 'image/png'` a PNG Blob encoded in the worker; null without OffscreenCanvas. */
-  preview?: { width: number; height: number; background?: string; type?: 'image/png' };
+  preview?: { width: number; height: number; background?: string; type?: 'image/png'; opacity?: number };
+  /** Stroke results (synthesizeStrokes, strokeTile): the worker keeps this result for
+   *  `restyle` (one result: the last kept). */
+  keep?: boolean;
+}
+
+/** A kept stroke result's style (see `PatternSynthClient.restyle`). */
+export interface StrokeStyle {
+  /** Per class: its new colour (`#rrggbb`) for outline and fill, or null to keep it. */
+  colors?: (string | null)[];
+  /** `#rrggbb` under the pattern, or null (transparent). */
+  background?: string | null;
+  /** The whole pattern's opacity, 0 to 1 (default 1). */
+  opacity?: number;
 }
 
 export interface ClientOptions {
@@ -40,6 +53,10 @@ export class PatternSynthClient {
   decodeImage(bytes: Uint8Array | ArrayBuffer, options?: CallOptions): Promise<RgbaImage>;
   encodePng(image: Rgba, options?: CallOptions): Promise<Uint8Array<ArrayBuffer>>;
   version(options?: CallOptions): Promise<string>;
+  /** The last result kept with `{ keep: true }` in another style, without synthesizing it
+   *  again: its SVG (classes recoloured, a background rectangle, an opacity group) and,
+   *  with `preview`, drawn in the worker. */
+  restyle(style: StrokeStyle, preview?: CallOptions['preview'], options?: CallOptions): Promise<{ svgBlob: Blob; preview?: ImageBitmap | Blob | null }>;
   /** Stops the worker; pending calls are rejected with an AbortError. */
   terminate(): void;
 }

@@ -72,10 +72,21 @@ export class PatternSynthClient {
     for (const job of pending) job.reject(abortError('The worker was terminated.'));
   }
 
-  run(method, args, { signal, onProgress, fields, preview } = {}) {
+  /**
+   * The stroke result last kept (`{ keep: true }` in a synthesizeStrokes or strokeTile
+   * call's options) in another style, without synthesizing it again: `style` is
+   * `{ colors, background, opacity }` (`colors[k]`: `#rrggbb` for class k, or null to
+   * keep it; background `#rrggbb` or null; opacity 0 to 1). Resolves to `{ svgBlob,
+   * preview? }` (`preview`: as in the call options, drawn in the worker).
+   */
+  restyle(style, preview, options = {}) {
+    return this.run('restyle', [style, preview], options);
+  }
+
+  run(method, args, { signal, onProgress, fields, preview, keep } = {}) {
     return new Promise((resolve, reject) => {
       if (signal?.aborted) return reject(abortError());
-      const job = { id: this.nextId++, method, args, resolve, reject, onProgress, signal, shape: { fields, preview } };
+      const job = { id: this.nextId++, method, args, resolve, reject, onProgress, signal, shape: { fields, preview, keep } };
       job.onAbort = () => this.abort(job);
       signal?.addEventListener('abort', job.onAbort, { once: true });
       this.queue.push(job);

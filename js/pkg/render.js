@@ -9,20 +9,25 @@
  * ImageBitmap, or with `type: 'image/png'` a promise of a PNG Blob (encoded here, off
  * the page's thread); null where OffscreenCanvas is missing.
  */
-export function renderStrokes(strokes, sceneWidth, sceneHeight, { width, height, background, type } = {}) {
+export function renderStrokes(strokes, sceneWidth, sceneHeight, { width, height, background, type, opacity = 1 } = {}) {
   if (typeof OffscreenCanvas !== 'function') return null;
   if (!(sceneWidth > 0 && sceneHeight > 0)) throw new Error('preview: the result has no size to draw.');
   if (type !== undefined && type !== 'image/png') throw new Error(`preview: type may be 'image/png' (or left out for an ImageBitmap), got ${type}.`);
   if (!(width >= 1 && height >= 1 && width <= 8192 && height <= 8192)) {
     throw new Error(`preview: width and height must be from 1 to 8192 pixels, got ${width} x ${height}.`);
   }
+  if (!(typeof opacity === 'number' && opacity >= 0 && opacity <= 1)) throw new Error(`preview: opacity must be from 0 to 1, got ${opacity}.`);
   const k = Math.min(width / sceneWidth, height / sceneHeight);
   const canvas = new OffscreenCanvas(Math.max(1, Math.round(sceneWidth * k)), Math.max(1, Math.round(sceneHeight * k)));
-  const ctx = canvas.getContext('2d');
+  const page = canvas.getContext('2d');
   if (background) {
-    ctx.fillStyle = background;
-    ctx.fillRect(0, 0, canvas.width, canvas.height);
+    page.fillStyle = background;
+    page.fillRect(0, 0, canvas.width, canvas.height);
   }
+  // A pattern's opacity applies to the picture as a whole (as an SVG group's does), so
+  // it is drawn on a layer of its own first.
+  const layer = opacity < 1 ? new OffscreenCanvas(canvas.width, canvas.height) : canvas;
+  const ctx = layer.getContext('2d');
   ctx.setTransform(k, 0, 0, k, 0, 0);
   ctx.lineCap = 'round';
   ctx.lineJoin = 'round';
@@ -39,18 +44,22 @@ export function renderStrokes(strokes, sceneWidth, sceneHeight, { width, height,
       if (s.closed) path.closePath();
       start = end;
     }
-    const opacity = s.opacity ?? 1;
+    const alpha = s.opacity ?? 1;
     if (s.fill) {
-      ctx.globalAlpha = opacity * (s.fillOpacity ?? 1);
+      ctx.globalAlpha = alpha * (s.fillOpacity ?? 1);
       ctx.fillStyle = s.fill;
       ctx.fill(path, s.fillRule === 'evenodd' ? 'evenodd' : 'nonzero');
     }
     if (s.stroke && s.width > 0) {
-      ctx.globalAlpha = opacity * (s.strokeOpacity ?? 1);
+      ctx.globalAlpha = alpha * (s.strokeOpacity ?? 1);
       ctx.strokeStyle = s.stroke;
       ctx.lineWidth = s.width;
       ctx.stroke(path);
     }
+  }
+  if (layer !== canvas) {
+    page.globalAlpha = opacity;
+    page.drawImage(layer, 0, 0);
   }
   return type ? canvas.convertToBlob({ type }) : canvas.transferToImageBitmap();
 }

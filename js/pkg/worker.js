@@ -14,6 +14,7 @@ import * as texture from './texture.js';
 import * as codec from './codec.js';
 import { METHODS } from './api.js';
 import { renderStrokes } from './render.js';
+import { checkStyle, restyleStrokes, restyleSvg } from './restyle.js';
 
 // Each call loads only the module that has it: a worker that makes textures never
 // fetches the vector engine (or the codecs), and one that draws strokes never fetches
@@ -27,6 +28,23 @@ function engine(name) {
     throw e;
   });
   return loading[name];
+}
+
+// The last stroke result a call asked to keep (`keep: true`), for `restyle`: a page
+// recolours a result of tens of thousands of strokes without synthesizing it again,
+// and without holding its strokes.
+let kept = null;
+
+/** The kept result in `style` (restyle.js): the SVG as a Blob, and drawn (`preview`). */
+async function restyle([style, preview]) {
+  if (!kept) throw new Error('Nothing to restyle: this worker keeps no stroke result (call synthesizeStrokes or strokeTile with { keep: true } first; an aborted call starts a fresh worker).');
+  const s = checkStyle(style);
+  const out = { svgBlob: new Blob([restyleSvg(kept.svg, s)], { type: 'image/svg+xml' }) };
+  if (preview) {
+    const strokes = restyleStrokes(kept.strokes, kept.classes, s);
+    out.preview = await renderStrokes(strokes, kept.width, kept.height, { ...preview, background: s.background ?? undefined, opacity: s.opacity });
+  }
+  return out;
 }
 
 // Pixel buffers and previews go back by transfer, not by copy.
@@ -85,6 +103,10 @@ self.onmessage = async ({ data }) => {
       const buffer = result?.data?.buffer ?? result?.buffer;
       return void self.postMessage({ id, result }, buffer instanceof ArrayBuffer ? [buffer] : []);
     }
+    if (method === 'restyle') {
+      const result = await restyle(args);
+      return void self.postMessage({ id, result }, transferables(result));
+    }
     const spec = Object.hasOwn(METHODS, method) ? METHODS[method] : null;
     if (!spec) throw new Error(`Unknown method '${method}'.`);
     // `version` is in every module: the one already loaded, else the smallest.
@@ -94,7 +116,12 @@ self.onmessage = async ({ data }) => {
       callArgs.length = spec.args;
       callArgs.push((fraction) => { self.postMessage({ id, progress: fraction }); });
     }
-    const result = await shape(api[method](...callArgs), callArgs, data);
+    const full = api[method](...callArgs);
+    if (data.keep) {
+      if (!Array.isArray(full?.strokes) || typeof full.svg !== 'string') throw new Error('keep applies to stroke results (synthesizeStrokes, strokeTile).');
+      kept = { strokes: full.strokes, classes: full.classes, svg: full.svg, width: full.width ?? callArgs[1]?.width, height: full.height ?? callArgs[1]?.height };
+    }
+    const result = await shape(full, callArgs, data);
     self.postMessage({ id, result }, transferables(result));
   } catch (e) {
     self.postMessage({ id, error: e instanceof Error ? e.message : String(e), name: e?.name });

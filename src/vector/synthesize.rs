@@ -229,7 +229,7 @@ pub fn synthesize_strokes(
             motifs.dress(strokes, &classification.classes, &placed, &orbit, opts.variation.then_some(opts.seed), area);
         (out, classes, sources, stats)
     };
-    let svg = to_svg(&out, opts.width, opts.height);
+    let svg = to_svg(&out, &classes, opts.width, opts.height);
     Throttle::new(progress).tick(1.0)?;
     Ok(StrokeResult {
         strokes: out,

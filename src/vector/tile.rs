@@ -238,7 +238,7 @@ pub fn stroke_tile(strokes: &[Stroke], opts: &TileOptions) -> Result<TileResult>
     // Layering follows the example's drawing order.
     placed.sort_by_key(|(first, part, _, _)| (*first, *part));
     let (strokes, classes): (Vec<Stroke>, Vec<u32>) = placed.into_iter().map(|(_, _, s, c)| (s, c)).unzip();
-    let svg = to_svg(&strokes, width, height);
+    let svg = to_svg(&strokes, &classes, width, height);
     Ok(TileResult {
         strokes,
         classes,

@@ -123,15 +123,19 @@ fn paint(s: &Stroke) -> String {
 /// recur (translated, to the thousandth the document is written in) is defined once in
 /// `<defs>`, relative to its first point, and each copy is a `<use>` there; the picture
 /// is the same as with a `<path>` per stroke. (117 copies of a hand-drawn flower: a
-/// tenth of the size.)
-pub fn to_svg(strokes: &[Stroke], width: f64, height: f64) -> String {
+/// tenth of the size.) With `classes` (one per stroke; empty: none), each definition and
+/// path carries `class="c<k>"`, its stroke's class, so that a page or a tool can restyle
+/// a class (`.c0 { stroke: teal }`) without knowing the layout.
+pub fn to_svg(strokes: &[Stroke], classes: &[u32], width: f64, height: f64) -> String {
+    let class = |i: usize| classes.get(i).map_or(String::new(), |k| format!(" class=\"c{k}\""));
     let (group, count) = recurring(strokes);
     let mut ids: HashMap<u32, usize> = HashMap::new();
     let mut defs = String::new();
-    for (s, &g) in strokes.iter().zip(&group) {
+    for (i, (s, &g)) in strokes.iter().zip(&group).enumerate() {
         if count[g as usize] > 1 && !ids.contains_key(&g) {
             let id = ids.len();
-            let _ = writeln!(defs, "<path id=\"s{id}\" d=\"{}\"{}/>", path_data_from(s, origin(s)), paint(s));
+            let (d, paint) = (path_data_from(s, origin(s)), paint(s));
+            let _ = writeln!(defs, "<path id=\"s{id}\"{} d=\"{d}\"{paint}/>", class(i));
             ids.insert(g, id);
         }
     }
@@ -145,7 +149,7 @@ pub fn to_svg(strokes: &[Stroke], width: f64, height: f64) -> String {
     if !defs.is_empty() {
         let _ = write!(out, "<defs>\n{defs}</defs>\n");
     }
-    for (s, g) in strokes.iter().zip(&group) {
+    for (i, (s, g)) in strokes.iter().zip(&group).enumerate() {
         match ids.get(g) {
             Some(id) => {
                 let [x, y] = origin(s);
@@ -155,7 +159,9 @@ pub fn to_svg(strokes: &[Stroke], width: f64, height: f64) -> String {
                 push_num(&mut out, y);
                 out.push_str("\"/>");
             }
-            None => out.push_str(&path_element(s)),
+            None => {
+                let _ = write!(out, "<path{} d=\"{}\"{}/>", class(i), path_data(s), paint(s));
+            }
         }
         out.push('\n');
     }
@@ -253,7 +259,7 @@ mod tests {
         };
         let mut strokes: Vec<Stroke> = (0..30).map(|i| bar(10.0 * i as f64 + 0.1, 3.3 * i as f64)).collect();
         strokes.push(Stroke::new(vec![[0.0, 0.0], [5.0, 5.0]], 1.0, Some(Rgb([9, 9, 9]))));
-        let svg = to_svg(&strokes, 300.0, 100.0);
+        let svg = to_svg(&strokes, &[], 300.0, 100.0);
         assert_eq!(svg.matches("<use ").count(), 30);
         assert_eq!(svg.matches("<path ").count(), 2, "one definition and the stroke that does not recur");
         // The same coordinates as a path per stroke, once the uses are resolved.
@@ -266,6 +272,18 @@ mod tests {
         }
         // A different paint is another definition.
         strokes[0].width = 3.0;
-        assert_eq!(to_svg(&strokes, 300.0, 100.0).matches("<path ").count(), 3);
+        assert_eq!(to_svg(&strokes, &[], 300.0, 100.0).matches("<path ").count(), 3);
+    }
+
+    #[test]
+    fn classes_are_written_on_definitions_and_paths() {
+        let bar = |x: f64| Stroke::new(vec![[x, 0.0], [x + 4.0, 2.0]], 2.0, Some(Rgb([1, 2, 3])));
+        let strokes = vec![bar(0.0), bar(10.0), Stroke::new(vec![[0.0, 9.0], [5.0, 5.0]], 1.0, Some(Rgb([9, 9, 9])))];
+        let svg = to_svg(&strokes, &[0, 0, 1], 30.0, 10.0);
+        assert!(svg.contains("<path id=\"s0\" class=\"c0\" d="), "{svg}");
+        assert!(svg.contains("<path class=\"c1\" d="), "{svg}");
+        assert_eq!(svg.matches("class=").count(), 2, "the uses inherit their definition's");
+        // Read back as the same strokes, the classes ignored.
+        assert_eq!(crate::vector::parse_svg(&svg, &Default::default()).unwrap().strokes.len(), 3);
     }
 }

@@ -1,7 +1,7 @@
 // Vector strokes tab: draw or import, see classes, synthesize in the worker, download.
 import { Drawing, fitStrokes } from './canvas.js';
 import { Autocomplete } from './autocomplete.js';
-import { classColors, defaultOptions, defaultPen, maxSide, sessionKey, storageKey, suggestCount } from '../shared/meta.js';
+import { classColors, defaultOptions, defaultPen, defaultStyle, maxSide, palettes, sessionKey, storageKey, suggestCount } from '../shared/meta.js';
 import { forget, load, store as save } from '../../../shared/storage.js';
 import { get, saver } from '../../../shared/store.js';
 import { offerDownload, runControls } from '../../../shared/run.js';
@@ -15,7 +15,7 @@ export function mountStrokes(root, client) {
   const messages = $('messages');
   // The pen's width is `penWidth` in the settings: `width` is the output's.
   const { width: _penWidth, ...pen } = defaultPen;
-  let settings = { ...defaultOptions, ...pen, ...load(SETTINGS_KEY, {}) };
+  let settings = { ...defaultOptions, ...pen, ...defaultStyle, ...load(SETTINGS_KEY, {}) };
   // Settings saved by an earlier version could hold the pen's width as the output's.
   for (const k of ['width', 'height']) if (!(Number(settings[k]) >= 10)) settings[k] = defaultOptions[k];
   let classifyAbort = null;
@@ -255,28 +255,19 @@ export function mountStrokes(root, client) {
       // them, or parsing and painting their SVG, would freeze this page for most of a second.
       const box = $('preview').clientWidth * devicePixelRatio || 800;
       const fit = Math.min(1, 4096 / Math.max(width, height), box / width);
-      const preview = { width: Math.ceil(width * fit), height: Math.ceil(height * fit), background: '#ffffff' };
+      const { background, opacity } = currentStyle();
+      const preview = { width: Math.ceil(width * fit), height: Math.ceil(height * fit), background: background ?? undefined, opacity };
       const strokes = drawing.strokes;
-      const r = await client.synthesizeStrokes(strokes, opts, { ...call, fields: ['svgBlob', 'classes', 'classification'], preview });
-      shownResult = { strokes, opts };
+      const r = await client.synthesizeStrokes(strokes, opts, { ...call, fields: ['svgBlob', 'classes', 'classification'], preview, keep: true });
+      shownResult = { strokes, opts, preview, classification: r.classification };
       $('download-png').disabled = false;
       const ms = performance.now() - t0;
-      if (resultUrl) URL.revokeObjectURL(resultUrl);
-      resultUrl = URL.createObjectURL(r.svgBlob);
-      let shown;
-      if (r.preview) {
-        shown = document.createElement('canvas');
-        [shown.width, shown.height] = [r.preview.width, r.preview.height];
-        shown.getContext('bitmaprenderer').transferFromImageBitmap(r.preview);
-      } else {
-        shown = new Image();
-        shown.src = resultUrl;
-      }
-      shown.setAttribute('role', 'img');
-      shown.setAttribute('aria-label', `Synthesized pattern, ${width} × ${height}`);
-      $('preview').replaceChildren(shown);
-      offerDownload($('download'), resultUrl);
-      $('download').download = `pattern-${width}x${height}.svg`;
+      showResult(r, width, height);
+      classColorInputs(strokes, r.classification);
+      $('style').disabled = false;
+      // A style chosen before (a palette, a background) applies to the new result too
+      // (the preview was drawn with its background and opacity, not the SVG).
+      if (styleChanged()) await restyle();
       $('result-info').textContent = `${r.classes.length} strokes, ${r.classification.count} classes, ${width}×${height}, ${ms.toFixed(0)} ms`;
       say('Done.');
     });
@@ -284,12 +275,114 @@ export function mountStrokes(root, client) {
     autocomplete.update();
   });
 
-  // A PNG of the result shown, at a chosen width: the same call again (same strokes,
-  // options and seed give the same pattern), drawn and encoded in the worker.
+  // --- the result shown, restyled in the worker (colours, background, opacity) ---
   let shownResult = null;
+  /** Shows a result's (or restyled result's) preview and offers its SVG. */
+  function showResult(r, width, height) {
+    if (resultUrl) URL.revokeObjectURL(resultUrl);
+    resultUrl = URL.createObjectURL(r.svgBlob);
+    let shown;
+    if (r.preview) {
+      shown = document.createElement('canvas');
+      [shown.width, shown.height] = [r.preview.width, r.preview.height];
+      shown.getContext('bitmaprenderer').transferFromImageBitmap(r.preview);
+    } else {
+      shown = new Image();
+      shown.src = resultUrl;
+    }
+    shown.setAttribute('role', 'img');
+    shown.setAttribute('aria-label', `Synthesized pattern, ${width} × ${height}`);
+    $('preview').replaceChildren(shown);
+    offerDownload($('download'), resultUrl);
+    $('download').download = `pattern-${width}x${height}.svg`;
+  }
+  const palette = $('palette');
+  palette.append(...Object.keys(palettes).map((name) => new Option(name, name)));
+  palette.value = settings.palette in palettes ? settings.palette : defaultStyle.palette;
+  $('bg-on').checked = settings.backgroundOn !== false;
+  $('bg-color').value = settings.background;
+  $('opacity').value = settings.opacity;
+  $('opacity-out').value = `${Math.round(settings.opacity * 100)}%`;
+  /** Each class's colour: chosen by hand (`picked`), else the palette's, else as drawn. */
+  let drawnColors = [];
+  let picked = [];
+  function classColorInputs(strokes, classification) {
+    drawnColors = [];
+    classification.classes.forEach((k, i) => { drawnColors[k] ??= strokes[i].stroke ?? strokes[i].fill ?? '#000000'; });
+    picked = [];
+    // The twelve first classes get a swatch each; a palette colours them all.
+    $('class-colors').replaceChildren(...drawnColors.slice(0, 12).map((_, k) => {
+      const input = Object.assign(document.createElement('input'), { type: 'color', value: colorOf(k) });
+      input.setAttribute('aria-label', `Colour of class ${k + 1}`);
+      input.title = `Class ${k + 1}`;
+      input.addEventListener('input', () => { picked[k] = input.value; scheduleRestyle(); });
+      return input;
+    }));
+  }
+  function colorOf(k) {
+    const p = palettes[palette.value] ?? [];
+    return picked[k] ?? (p.length ? p[k % p.length] : drawnColors[k]);
+  }
+  const currentStyle = () => ({
+    colors: drawnColors.map((drawn, k) => (colorOf(k) === drawn ? null : colorOf(k))),
+    background: $('bg-on').checked ? $('bg-color').value : null,
+    opacity: Number($('opacity').value),
+  });
+  const styleChanged = () => {
+    const st = currentStyle();
+    return st.colors.some(Boolean) || st.background !== null || st.opacity !== 1;
+  };
+  /** The kept result in the current style; a worker that lost it (an aborted call
+   *  starts a fresh one) makes it again with the same options and seed. */
+  async function styled(preview) {
+    try {
+      return await client.restyle(currentStyle(), preview);
+    } catch (e) {
+      if (!/Nothing to restyle/.test(e.message)) throw e;
+      await client.synthesizeStrokes(shownResult.strokes, shownResult.opts, { fields: [], keep: true });
+      return client.restyle(currentStyle(), preview);
+    }
+  }
+  let restyleTimer = 0;
+  let restyling = Promise.resolve();
+  function scheduleRestyle() {
+    settings.palette = palette.value;
+    settings.backgroundOn = $('bg-on').checked;
+    settings.background = $('bg-color').value;
+    settings.opacity = Number($('opacity').value);
+    $('opacity-out').value = `${Math.round(settings.opacity * 100)}%`;
+    save(SETTINGS_KEY, settings);
+    for (const [k, input] of [...$('class-colors').children].entries()) input.value = colorOf(k);
+    clearTimeout(restyleTimer);
+    if (shownResult) restyleTimer = setTimeout(() => { restyling = restyle(); }, 60);
+  }
+  async function restyle() {
+    if (!shownResult) return;
+    const { opts, preview } = shownResult;
+    try {
+      const r = await styled(preview);
+      showResult(r, opts.width, opts.height);
+    } catch (e) {
+      say(e.message, 'error');
+    }
+  }
+  palette.addEventListener('change', () => { picked = []; scheduleRestyle(); });
+  for (const id of ['bg-on', 'bg-color', 'opacity']) $(id).addEventListener('input', scheduleRestyle);
+  $('style-reset').addEventListener('click', () => {
+    picked = [];
+    palette.value = defaultStyle.palette;
+    $('bg-on').checked = defaultStyle.backgroundOn;
+    $('bg-color').value = defaultStyle.background;
+    $('opacity').value = defaultStyle.opacity;
+    scheduleRestyle();
+  });
+  window.playground = { ...window.playground, restyled: () => restyling };
+
+  // A PNG of the result shown, in its style, at a chosen width: drawn and encoded in the
+  // worker from the kept result (nothing synthesized again).
   $('download-png').addEventListener('click', async () => {
     if (!shownResult) return;
-    const { strokes, opts } = shownResult;
+    const { opts } = shownResult;
     const width = Math.round(Number($('png-width').value));
     if (!(width >= 16 && width <= 8192)) return say('The PNG width must be from 16 to 8192 pixels.', 'error');
     const height = Math.max(1, Math.round((width * opts.height) / opts.width));
@@ -297,7 +390,7 @@ export function mountStrokes(root, client) {
     $('download-png').disabled = true;
     try {
       say(`Drawing a ${width}×${height} PNG…`);
-      const r = await client.synthesizeStrokes(strokes, opts, { fields: [], preview: { width, height, background: '#ffffff', type: 'image/png' } });
+      const r = await styled({ width, height, type: 'image/png' });
       if (!r.preview) throw new Error('This browser cannot draw in a worker (no OffscreenCanvas); download the SVG instead.');
       const a = Object.assign(document.createElement('a'), { href: URL.createObjectURL(r.preview), download: `pattern-${opts.width}x${opts.height}-${width}px.png` });
       a.click();

@@ -1,0 +1,107 @@
+// Recolouring a vector result without synthesizing it again (issue 29): the default
+// example synthesized once, then a palette, one class's colour picked by hand, a
+// background and an opacity, each seen in the preview the worker draws, in the SVG
+// download and in the PNG download; the worker is never asked to synthesize again.
+// Screenshots: out/style-*.png.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { mkdirSync, readFileSync } from 'node:fs';
+import { openPlayground } from './harness.mjs';
+import { parseSvg } from '../../pkg/node/index.js';
+
+/** Share of the preview's opaque pixels near `hex`, and the colour at its corner. */
+const previewColours = (page, hex) => page.evaluate((hex) => {
+  const c = document.querySelector('#preview canvas');
+  const o = new OffscreenCanvas(c.width, c.height).getContext('2d'); // the canvas is a bitmap renderer's
+  o.drawImage(c, 0, 0);
+  const px = o.getImageData(0, 0, c.width, c.height).data;
+  const [r, g, b] = [1, 3, 5].map((i) => parseInt(hex.slice(i, i + 2), 16));
+  let painted = 0, near = 0;
+  for (let i = 0; i < px.length; i += 4) {
+    if (px[i + 3] < 200) continue;
+    painted++;
+    if (Math.abs(px[i] - r) + Math.abs(px[i + 1] - g) + Math.abs(px[i + 2] - b) < 40) near++;
+  }
+  return { painted, near: near / Math.max(1, painted), corner: [...px.slice(0, 4)] };
+}, hex);
+
+test('a result is recoloured, given a background and an opacity, without a second synthesis', async () => {
+  mkdirSync('out', { recursive: true });
+  const { page, close } = await openPlayground({ height: 1100 });
+  try {
+    await page.waitForFunction(() => /[1-9]\d* strokes/.test(document.querySelector('#stroke-count').textContent));
+    // Every call the page makes, by method.
+    await page.evaluate(() => {
+      window.calls = [];
+      const run = window.patternsynth.run.bind(window.patternsynth);
+      window.patternsynth.run = (method, ...rest) => { window.calls.push(method); return run(method, ...rest); };
+    });
+    assert.equal(await page.$eval('#style', (f) => f.disabled), true, 'no colours before a result');
+    await page.fill('#out-width', '600');
+    await page.fill('#out-height', '400');
+    await page.click('#synthesize');
+    await page.waitForFunction(() => document.querySelector('#messages').textContent === 'Done.', null, { timeout: 60000 });
+    assert.equal(await page.$eval('#style', (f) => f.disabled), false);
+    const swatches = await page.$$eval('#class-colors input', (l) => l.map((i) => i.value));
+    assert.ok(swatches.length >= 2, `one swatch per class: ${swatches}`);
+    const asDrawn = await previewColours(page, '#1f2a44');
+    assert.deepEqual(asDrawn.corner.slice(3), [0], 'no background by default (transparent, as the SVG)');
+    await page.screenshot({ path: 'out/style-drawn.png' });
+
+    // A palette of one colour: every class inked alike.
+    await page.selectOption('#palette', 'ink');
+    await page.evaluate(() => window.playground.restyled());
+    await page.waitForFunction(() => [...document.querySelectorAll('#class-colors input')].every((i) => i.value === '#1f2a44'));
+    await page.waitForTimeout(200);
+    await page.evaluate(() => window.playground.restyled());
+    const inked = await previewColours(page, '#1f2a44');
+    assert.ok(inked.near > 0.9, `inked: ${inked.near.toFixed(2)} of ${inked.painted} painted pixels near the ink`);
+
+    // One class by hand, a background, half opacity.
+    await page.$eval('#class-colors input', (i) => { i.value = '#ff0000'; i.dispatchEvent(new Event('input', { bubbles: true })); });
+    await page.check('#bg-on');
+    await page.$eval('#bg-color', (i) => { i.value = '#ffeecc'; i.dispatchEvent(new Event('input', { bubbles: true })); });
+    await page.$eval('#opacity', (i) => { i.value = '0.5'; i.dispatchEvent(new Event('input', { bubbles: true })); });
+    await page.waitForTimeout(200);
+    await page.evaluate(() => window.playground.restyled());
+    const styled = await previewColours(page, '#ffeecc');
+    assert.deepEqual(styled.corner, [255, 238, 204, 255], 'the background under the pattern');
+    const red = await page.evaluate(() => {
+      const c = document.querySelector('#preview canvas');
+      const o = new OffscreenCanvas(c.width, c.height).getContext('2d');
+      o.drawImage(c, 0, 0);
+      const px = o.getImageData(0, 0, c.width, c.height).data;
+      let n = 0;
+      // Red at half opacity over the cream background: about (255, 119, 102).
+      for (let i = 0; i < px.length; i += 4) n += px[i] > 230 && px[i + 1] > 90 && px[i + 1] < 150 && px[i + 2] > 70 && px[i + 2] < 130;
+      return n;
+    });
+    assert.ok(red > 50, `${red} pixels of class 1 in red at half opacity`);
+    await page.screenshot({ path: 'out/style-restyled.png' });
+
+    const [download] = await Promise.all([page.waitForEvent('download'), page.click('#download')]);
+    const svg = readFileSync(await download.path(), 'utf8');
+    assert.match(svg, /<rect width="100%" height="100%" fill="#ffeecc"\/>\n<g opacity="0.5">/);
+    assert.match(svg, /class="c0"[^>]*stroke="#ff0000"/);
+    assert.doesNotMatch(svg, /class="c1"[^>]*(stroke|fill)="#(?!1f2a44)[0-9a-f]{6}"/, 'class 2 inked');
+    assert.ok(parseSvg(svg).length > 100, 'the restyled SVG reads back');
+
+    await page.fill('#png-width', '300');
+    const [png] = await Promise.all([page.waitForEvent('download'), page.click('#download-png')]);
+    const bytes = readFileSync(await png.path());
+    assert.equal(bytes.readUInt32BE(16), 300);
+    assert.equal(bytes.readUInt32BE(20), 200);
+
+    const calls = await page.evaluate(() => window.calls);
+    assert.equal(calls.filter((c) => c === 'synthesizeStrokes').length, 1, `calls: ${calls.join(', ')}`);
+    assert.ok(calls.filter((c) => c === 'restyle').length >= 3, `calls: ${calls.join(', ')}`);
+
+    // Reset: the drawn colours, no background, opaque; kept across a reload.
+    await page.click('#style-reset');
+    await page.waitForTimeout(200);
+    await page.evaluate(() => window.playground.restyled());
+    assert.deepEqual((await previewColours(page, '#1f2a44')).corner.slice(3), [0]);
+  } finally {
+    await close();
+  }
+});
