@@ -154,6 +154,30 @@ fn odd_sizes_are_cropped_and_scaled_with_a_message() {
 }
 
 #[test]
+fn synthesis_tiles_take_any_width_and_height() {
+    // 96 x 40: neither square nor a power of two; the wrap seamless both ways.
+    let img = crop(&fixture("grass"), 64, 64);
+    let o =
+        SeamlessOptions { method: Method::Synthesis, width: Some(96), height: Some(40), seed: 3, ..Default::default() };
+    let r = seamless_tile(&img, &o, &mut Silent).unwrap();
+    assert_eq!((r.image.width, r.image.height), (96, 40));
+    assert_eq!(r.image.data.len(), 96 * 40 * 4);
+    println!("96x40 synthesis tile: seam {:.2}, restoration {:.3}", r.seam_score, r.restoration_rate);
+    assert!(r.seam_score < 1.3, "seam {}", r.seam_score);
+    // One of the two: a square of that side.
+    let r = seamless_tile(&img, &SeamlessOptions { width: Some(72), ..o.clone() }, &mut Silent);
+    assert_eq!(r.map(|r| (r.image.width, r.image.height)).ok(), Some((72, 40)));
+    let r = seamless_tile(&img, &SeamlessOptions { width: None, height: Some(24), ..o.clone() }, &mut Silent).unwrap();
+    assert_eq!((r.image.width, r.image.height), (24, 24));
+    let err = |o: SeamlessOptions| seamless_tile(&img, &o, &mut Silent).unwrap_err().to_string();
+    assert!(err(SeamlessOptions { method: Method::Etfmcm, ..o.clone() })
+        .contains("method 'synthesis' for a tile of any width"));
+    assert!(err(SeamlessOptions { size: Some(64), ..o.clone() }).contains("not both"));
+    assert!(err(SeamlessOptions { width: Some(5000), ..o.clone() }).contains("width must be from 8 to 2048"));
+    assert!(err(SeamlessOptions { height: Some(4), ..o }).contains("height must be from 8 to 2048"));
+}
+
+#[test]
 fn bad_input_is_a_clear_error() {
     let img = crop(&fixture("grass"), 64, 64);
     let err = |o: SeamlessOptions, i: &Rgba| seamless_tile(i, &o, &mut Silent).unwrap_err().to_string();

@@ -55,10 +55,15 @@ document.getElementById('session-import').addEventListener('change', async (e) =
   const file = e.target.files[0];
   e.target.value = '';
   if (!file) return;
+  // Said beside the buttons (a live region), not in a dialog that stops the page.
+  const status = document.getElementById('session-status');
+  status.className = 'session-status';
+  status.textContent = `Reading ${file.name}…`;
   try {
     await importSession(file);
     location.reload();
   } catch (err) {
-    alert(err.message);
+    status.className = 'session-status error';
+    status.textContent = err.message;
   }
 });

@@ -32,6 +32,11 @@ pub struct SeamlessOptions {
     /// Side of the tile, a power of two from 8 to `MAX_TILE`; by default the largest
     /// that fits the image.
     pub size: Option<usize>,
+    /// Width and height of the tile, any from 8 to `MAX_SYNTHESIS_TILE` (toroidal
+    /// synthesis only: E-TFMCM's fractal halves a square, power-of-two tile at each
+    /// step); one alone makes a square tile. They take the place of `size`.
+    pub width: Option<usize>,
+    pub height: Option<usize>,
     pub seed: u64,
     /// T0 of the density conversion (the paper recommends at most 50 for 128 x 128).
     pub max_count_difference: f64,
@@ -39,7 +44,14 @@ pub struct SeamlessOptions {
 
 impl Default for SeamlessOptions {
     fn default() -> Self {
-        SeamlessOptions { method: Method::Etfmcm, size: None, seed: 1, max_count_difference: 50.0 }
+        SeamlessOptions {
+            method: Method::Etfmcm,
+            size: None,
+            width: None,
+            height: None,
+            seed: 1,
+            max_count_difference: 50.0,
+        }
     }
 }
 
@@ -61,6 +73,9 @@ pub struct SeamlessResult {
 
 /// Largest tile side (E-TFMCM's indexes grow with the exemplar's pixel count).
 pub const MAX_TILE: usize = 512;
+/// Largest side of a tile made by toroidal synthesis with `width` and `height` (its
+/// exemplar is at most `MAX_TILE` on a side; the output's cost is linear in its pixels).
+pub const MAX_SYNTHESIS_TILE: usize = 2048;
 const MIN_TILE: usize = 8;
 
 /// A seamless tile from `input` (RGBA).
@@ -69,7 +84,8 @@ pub fn seamless_tile(input: &Rgba, opts: &SeamlessOptions, progress: &mut dyn Pr
     // Synthesis makes a tile of any size from the image at its own scale; E-TFMCM's
     // tile is its exemplar's size, so the image is scaled to it.
     let synthesis = opts.method == Method::Synthesis;
-    let (ex_side, side, rgb) = prepare(input, opts.size, !synthesis, &mut warnings)?;
+    let (width, height) = tile_size(opts, input)?;
+    let (ex_side, side, rgb) = prepare(input, width.max(height), !synthesis, &mut warnings)?;
     if !(opts.max_count_difference.is_finite() && opts.max_count_difference >= 0.0) {
         return invalid("maxCountDifference must be a number of at least 0.");
     }
@@ -78,7 +94,7 @@ pub fn seamless_tile(input: &Rgba, opts: &SeamlessOptions, progress: &mut dyn Pr
         Method::Synthesis => {
             let img =
                 Image { width: ex_side, height: ex_side, data: rgb.iter().map(|p| p.map(|v| v as f32)).collect() };
-            let o = TextureOptions { width: side, height: side, seed: opts.seed, tileable: true, ..Default::default() };
+            let o = TextureOptions { width, height, seed: opts.seed, tileable: true, ..Default::default() };
             let out = synthesize_texture(&img, &o, &mut |f| progress.tick(f).is_ok())?;
             (out.rgb(), None, None, None)
         }
@@ -102,10 +118,11 @@ pub fn seamless_tile(input: &Rgba, opts: &SeamlessOptions, progress: &mut dyn Pr
     };
     progress.tick(1.0)?;
     let restoration_rate = restoration_rgb(&rgb, &out);
-    let seam_score = seam_score(&out, side, side);
+    let (width, height) = if synthesis { (width, height) } else { (side, side) };
+    let seam_score = seam_score(&out, width, height);
     let data = out.iter().flat_map(|p| [p[0], p[1], p[2], 255]).collect();
     Ok(SeamlessResult {
-        image: Rgba { width: side, height: side, data },
+        image: Rgba { width, height, data },
         restoration_rate,
         seam_score,
         warnings,
@@ -115,12 +132,48 @@ pub fn seamless_tile(input: &Rgba, opts: &SeamlessOptions, progress: &mut dyn Pr
     })
 }
 
-/// Crops `input` to a centred square and scales it to the tile's power-of-two side,
-/// saying so; without `enlarge`, a tile larger than the image keeps the image at its
-/// own size. Returns the exemplar's side, the tile's side and the exemplar.
+/// The tile's width and height from the options: `width`/`height` (synthesis only, any
+/// size) or `size` (a power of two), by default the largest power of two the image
+/// allows, at most `MAX_TILE`.
+fn tile_size(opts: &SeamlessOptions, input: &Rgba) -> Result<(usize, usize)> {
+    let short = input.width.min(input.height);
+    match (opts.width.or(opts.height), opts.size) {
+        (Some(_), Some(_)) => invalid("Give the tile's `size` or its `width` and `height`, not both."),
+        (Some(one), None) => {
+            if opts.method != Method::Synthesis {
+                return invalid(
+                    "E-TFMCM and TFMCM tiles are square, a power of two on a side (the fractal halves the tile at each step): give `size`, or method 'synthesis' for a tile of any width and height.",
+                );
+            }
+            let (w, h) = (opts.width.unwrap_or(one), opts.height.unwrap_or(one));
+            for (name, v) in [("width", w), ("height", h)] {
+                if !(MIN_TILE..=MAX_SYNTHESIS_TILE).contains(&v) {
+                    return invalid(format!(
+                        "The tile's {name} must be from {MIN_TILE} to {MAX_SYNTHESIS_TILE} pixels (got {v})."
+                    ));
+                }
+            }
+            Ok((w, h))
+        }
+        (None, Some(s)) if !(s.is_power_of_two() && (MIN_TILE..=MAX_TILE).contains(&s)) => invalid(format!(
+            "The tile size must be a power of two from {MIN_TILE} to {MAX_TILE} (got {s}); method 'synthesis' takes any `width` and `height`."
+        )),
+        (None, Some(s)) => Ok((s, s)),
+        (None, None) => {
+            // `prepare` refuses images under MIN_TILE; `max(1)` keeps ilog2 defined first.
+            let s = (1usize << short.max(1).ilog2()).min(MAX_TILE);
+            Ok((s, s))
+        }
+    }
+}
+
+/// Crops `input` to a centred square and scales it to the tile's side `side` (its longer
+/// one), saying so; without `enlarge`, a tile larger than the image keeps the image at
+/// its own size, and the exemplar is at most `MAX_TILE` on a side. Returns the
+/// exemplar's side, the tile's side and the exemplar.
 fn prepare(
     input: &Rgba,
-    size: Option<usize>,
+    side: usize,
     enlarge: bool,
     warnings: &mut Vec<String>,
 ) -> Result<(usize, usize, Vec<[u8; 3]>)> {
@@ -133,27 +186,26 @@ fn prepare(
     if short < MIN_TILE {
         return invalid(format!("The image is {w}x{h}; a seamless tile needs at least {MIN_TILE} pixels on a side."));
     }
-    let side = match size {
-        Some(s) if !(s.is_power_of_two() && (MIN_TILE..=MAX_TILE).contains(&s)) => {
-            return invalid(format!("The tile size must be a power of two from {MIN_TILE} to {MAX_TILE} (got {s})."));
-        }
-        Some(s) => s,
-        None => (1usize << short.ilog2()).min(MAX_TILE),
-    };
     let (x0, y0) = ((w - short) / 2, (h - short) / 2);
     if w != h {
         warnings.push(format!("Cropped the {w}x{h} image to its centre {short}x{short} (tiles are square)."));
     }
-    let ex_side = if enlarge { side } else { side.min(short) };
-    if ex_side < side {
-        warnings
-            .push(format!("The {side}x{side} tile is synthesized from the {short}x{short} image at its own scale."));
+    let ex_side = if enlarge { side } else { side.min(short).min(MAX_TILE) };
+    if ex_side < side && ex_side == short {
+        warnings.push(format!(
+            "The tile is larger than the image: synthesized from the {short}x{short} image at its own scale."
+        ));
     }
     if short != ex_side {
-        warnings.push(format!(
-            "Scaled {short}x{short} to {ex_side}x{ex_side} (tiles are a power of two on a side{}).",
-            if short > MAX_TILE { format!(", at most {MAX_TILE}") } else { String::new() }
-        ));
+        let why = if enlarge {
+            format!(
+                "tiles are a power of two on a side{}",
+                if short > MAX_TILE { format!(", at most {MAX_TILE}") } else { String::new() }
+            )
+        } else {
+            format!("the exemplar of a synthesized tile is at most {MAX_TILE} on a side, and at most the tile's")
+        };
+        warnings.push(format!("Scaled {short}x{short} to {ex_side}x{ex_side} ({why})."));
     }
     // Box filter over each output pixel's footprint (bilinear-like when enlarging).
     let scale = short as f64 / ex_side as f64;

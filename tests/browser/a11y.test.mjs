@@ -246,6 +246,16 @@ test('nothing lost: the drawing and its undo history survive a reload, and a ses
   assert.deepEqual(await fresh.page.evaluate(() => window.playground.drawing().strokes), drawn);
   await fresh.page.click('#undo');
   assert.equal(await strokeCount(fresh.page), 1, 'the history came with the file');
+
+  // A file that is not a session: said beside the buttons (no dialog), nothing changed.
+  let dialogs = 0;
+  fresh.page.on('dialog', (d) => { dialogs += 1; d.dismiss(); });
+  await fresh.page.setInputFiles('#session-import', { name: 'notes.json', mimeType: 'application/json', buffer: Buffer.from('{"hello": 1}') });
+  await fresh.page.waitForFunction(() => /notes\.json is not a patternsynth session.*nothing was changed/.test(document.querySelector('#session-status').textContent));
+  await fresh.page.setInputFiles('#session-import', { name: 'photo.json', mimeType: 'application/json', buffer: Buffer.from('\x89PNG') });
+  await fresh.page.waitForFunction(() => /photo\.json is not a patternsynth session \(not JSON\)/.test(document.querySelector('#session-status').textContent));
+  assert.equal(dialogs, 0);
+  assert.equal(await strokeCount(fresh.page), 1);
 });
 
 test('when the browser will not keep the drawing, the page says so', async () => {

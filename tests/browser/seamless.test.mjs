@@ -55,6 +55,29 @@ test('toroidal synthesis at 64 also wraps', async () => {
   assert.match(await page.textContent('#seam-messages'), /Scaled 128x128 to 64x64/);
 });
 
+test('toroidal synthesis makes a tile of any width and height, previewed repeated', async () => {
+  await page.selectOption('#seam-method', 'etfmcm');
+  await page.selectOption('#seam-size', 'custom');
+  assert.equal(await page.isVisible('#seam-width'), true);
+  await page.fill('#seam-width', '150');
+  await page.fill('#seam-height', '90');
+  await page.click('#seam-run');
+  await page.waitForFunction(() => /toroidal synthesis/.test(document.querySelector('#seam-messages').textContent));
+  await page.selectOption('#seam-method', 'synthesis');
+  await run();
+  assert.match(await page.textContent('#seam-info'), /^150×90/);
+  const [download] = await Promise.all([page.waitForEvent('download'), page.click('#seam-download')]);
+  assert.equal(download.suggestedFilename(), 'seamless-synthesis-150x90.png');
+  assert.equal(await page.isVisible('#seam-t0'), false, 'T0 is E-TFMCM\'s');
+  const img = decodeImage(readFileSync(await download.path()));
+  assert.deepEqual([img.width, img.height], [150, 90]);
+  const s = seam(img);
+  assert.ok(s < 1.3, `seam ${s}`);
+  await page.screenshot({ path: 'out/seamless-any-size.png', fullPage: true });
+  await page.selectOption('#seam-size', '');
+  assert.equal(await page.isVisible('#seam-width'), false);
+});
+
 test('a long run can be cancelled', async () => {
   await page.selectOption('#seam-size', '512');
   await page.click('#seam-run');

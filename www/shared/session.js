@@ -33,9 +33,9 @@ export async function importSession(file) {
   try {
     session = JSON.parse(await file.text());
   } catch {
-    throw new Error(`${file.name} is not a patternsynth session (not JSON).`);
+    throw new Error(`${file.name} is not a patternsynth session (not JSON); nothing was changed.`);
   }
-  if (session?.format !== FORMAT) throw new Error(`${file.name} is not a patternsynth session.`);
+  if (session?.format !== FORMAT) throw new Error(`${file.name} is not a patternsynth session (no "format": "${FORMAT}"); nothing was changed.`);
   for (const [key, value] of Object.entries(session.kept ?? {})) {
     const blob = typeof value?.blob === 'string' ? await (await fetch(value.blob)).blob() : null;
     await set(key, blob ? { ...value, blob } : value);

@@ -72,13 +72,14 @@ export function mountSeamless(root, client) {
   // --- settings ---
   const method = $('seam-method');
   method.append(...methods.map(([v, l]) => new Option(l, v)));
-  for (const [id, key] of [['seam-method', 'method'], ['seam-size', 'size'], ['seam-seed', 'seed'], ['seam-t0', 'maxCountDifference']]) {
+  for (const [id, key] of [['seam-method', 'method'], ['seam-size', 'size'], ['seam-seed', 'seed'], ['seam-t0', 'maxCountDifference'], ['seam-width', 'width'], ['seam-height', 'height']]) {
     const el = $(id);
     el.value = settings[key];
     el.addEventListener('input', () => { settings[key] = el.value; save(); showMethod(); });
   }
   const showMethod = () => {
     $('seam-t0-row').hidden = settings.method === 'synthesis';
+    $('seam-custom').hidden = settings.size !== 'custom';
     $('seam-method-help').textContent = methodHelp[settings.method] ?? '';
   };
   const tile = tilePanel({ preview: $('seam-repeat'), download: $('seam-download'), css: $('seam-css'), copy: $('seam-copy'), offset: $('seam-offset') });
@@ -88,7 +89,11 @@ export function mountSeamless(root, client) {
   $('seam-run').addEventListener('click', async () => {
     if (!image) return say('Load an image first.', 'error');
     const opts = { method: settings.method, seed: Number(settings.seed) || 0 };
-    if (settings.size) opts.size = Number(settings.size);
+    if (settings.size === 'custom') {
+      // Any size is toroidal synthesis's: E-TFMCM's fractal makes square powers of two.
+      if (settings.method !== 'synthesis') return say('Tiles of any width and height are made by toroidal synthesis: choose it as the method, or a power-of-two size.', 'error');
+      [opts.width, opts.height] = [Number(settings.width), Number(settings.height)];
+    } else if (settings.size) opts.size = Number(settings.size);
     if (settings.method !== 'synthesis') opts.maxCountDifference = Number(settings.maxCountDifference);
     const t0 = performance.now();
     // The previous tile goes: should this run fail, it must not look like its result.

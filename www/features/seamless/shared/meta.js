@@ -3,7 +3,9 @@ export const label = 'Seamless tile';
 
 export const defaultOptions = {
   method: 'etfmcm', // 'tfmcm' | 'synthesis'
-  size: '', // '' = the largest power of two the image allows
+  size: '', // '' = the largest power of two the image allows; 'custom' = width x height
+  width: 300, // a custom tile's (toroidal synthesis only)
+  height: 200,
   seed: 1,
   maxCountDifference: 50,
   texture: 'gravel',
