@@ -105,3 +105,53 @@ test('a result is recoloured, given a background and an opacity, without a secon
     await close();
   }
 });
+
+test('the result zooms and pans with the buttons, the keys, Ctrl + wheel and a drag', async () => {
+  const { page, close } = await openPlayground({ height: 1100 });
+  try {
+    await page.waitForFunction(() => /[1-9]\d* strokes/.test(document.querySelector('#stroke-count').textContent));
+    assert.equal(await page.isDisabled('#zoom-in'), true, 'nothing to zoom before a result');
+    await page.click('#synthesize');
+    await page.waitForFunction(() => document.querySelector('#messages').textContent === 'Done.', null, { timeout: 60000 });
+    const transform = () => page.$eval('#preview canvas', (c) => c.style.transform);
+    assert.equal(await transform(), '');
+    await page.click('#zoom-in');
+    await page.click('#zoom-in');
+    assert.equal(await page.textContent('#zoom-level'), '225%');
+    assert.match(await transform(), /scale\(2\.25\)/);
+    // A drag pans; it cannot leave the picture's edge inside the view.
+    const box = await page.locator('#preview').boundingBox();
+    await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+    await page.mouse.down();
+    await page.mouse.move(box.x + box.width / 2 + 60, box.y + box.height / 2 + 30, { steps: 4 });
+    await page.mouse.up();
+    const [tx, ty] = (await transform()).match(/translate\(([-\d.]+)px, ([-\d.]+)px\)/).slice(1).map(Number);
+    assert.ok(tx <= 0 && ty <= 0 && tx >= box.width * (1 - 2.25) - 1, `translate ${tx}, ${ty}`);
+    // Settled, the picture is drawn again at the zoom: sharp, not a stretched bitmap.
+    const base = await page.$eval('#preview', (v) => v.clientWidth);
+    await page.waitForFunction((base) => document.querySelector('#preview canvas').width >= Math.floor(2.25 * base) - 2, base, { timeout: 10000 }).catch(() => {});
+    const drawnWidth = await page.$eval('#preview canvas', (c) => c.width);
+    assert.ok(drawnWidth >= 2 * base, `drawn ${drawnWidth} px wide for a ${base} px view at 225%`);
+    await page.screenshot({ path: 'out/zoom.png' });
+    // A recolour keeps the zoom; the keys: 0 fits, + zooms in, arrows pan.
+    await page.selectOption('#palette', 'ocean');
+    await page.evaluate(() => new Promise((ok) => setTimeout(ok, 150)).then(() => window.playground.restyled()));
+    assert.match(await transform(), /scale\(2\.25\)/);
+    await page.focus('#preview');
+    await page.keyboard.press('0');
+    assert.equal(await transform(), '');
+    await page.keyboard.press('+');
+    await page.keyboard.press('ArrowLeft');
+    assert.match(await transform(), /scale\(1\.5\)/);
+    // Ctrl + wheel about the pointer.
+    await page.mouse.move(box.x + 20, box.y + 20);
+    await page.keyboard.down('Control');
+    await page.mouse.wheel(0, -300);
+    await page.keyboard.up('Control');
+    assert.ok(await page.evaluate(() => window.playground.zoom()) > 1.5);
+    await page.click('#zoom-fit');
+    assert.equal(await page.textContent('#zoom-level'), '100%');
+  } finally {
+    await close();
+  }
+});

@@ -6,6 +6,7 @@ import { forget, load, store as save } from '../../../shared/storage.js';
 import { get, saver } from '../../../shared/store.js';
 import { offerDownload, runControls } from '../../../shared/run.js';
 import { tilePanel } from '../../../shared/tile.js';
+import { zoomable } from '../../../shared/zoom.js';
 
 const SETTINGS_KEY = 'patternsynth.strokes.settings.v1';
 
@@ -262,6 +263,7 @@ export function mountStrokes(root, client) {
       shownResult = { strokes, opts, preview, classification: r.classification };
       $('download-png').disabled = false;
       const ms = performance.now() - t0;
+      zoom.reset();
       showResult(r, width, height);
       classColorInputs(strokes, r.classification);
       $('style').disabled = false;
@@ -277,6 +279,18 @@ export function mountStrokes(root, client) {
 
   // --- the result shown, restyled in the worker (colours, background, opacity) ---
   let shownResult = null;
+  const zoom = zoomable($('preview'), {
+    zoomIn: $('zoom-in'), zoomOut: $('zoom-out'), fit: $('zoom-fit'), level: $('zoom-level'),
+    // Zoomed in, the kept result is drawn again at that scale (up to 8192 px a side).
+    onSettle: () => { restyling = restyle(); },
+  });
+  /** The preview's size at the current zoom. */
+  const previewSize = () => {
+    const { width, height, ...rest } = shownResult.preview;
+    const k = Math.min(zoom.zoom, 8192 / Math.max(width, height));
+    return { ...rest, width: Math.ceil(width * k), height: Math.ceil(height * k) };
+  };
+  window.playground = { ...window.playground, zoom: () => zoom.zoom };
   /** Shows a result's (or restyled result's) preview and offers its SVG. */
   function showResult(r, width, height) {
     if (resultUrl) URL.revokeObjectURL(resultUrl);
@@ -358,9 +372,9 @@ export function mountStrokes(root, client) {
   }
   async function restyle() {
     if (!shownResult) return;
-    const { opts, preview } = shownResult;
+    const { opts } = shownResult;
     try {
-      const r = await styled(preview);
+      const r = await styled(previewSize());
       showResult(r, opts.width, opts.height);
     } catch (e) {
       say(e.message, 'error');
