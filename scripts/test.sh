@@ -29,5 +29,5 @@ node --test --test-timeout=300000 tests/browser/
 echo "== the packed package in Vite, webpack and esbuild production builds, and tsc --strict"
 node --test --test-timeout=300000 tests/bundlers/
 
-echo "== the packed package in Next.js 16 (Turbopack), SvelteKit (adapter-node) and Rollup"
+echo "== the packed package in Next.js 16 (Turbopack) and 15, SvelteKit (adapter-node), Astro (Node adapter), Parcel and Rollup"
 node --test --test-timeout=900000 tests/frameworks/

@@ -32,7 +32,9 @@ export class PatternSynthClient {
     /** The worker script's URL, where the client knows it (for messages). */
     this.workerUrl = null;
     if (worker === undefined) {
-      this.workerUrl = new URL('./worker.js', import.meta.url).href;
+      // For messages only, and not written as `new URL('./worker.js', import.meta.url)`:
+      // bundlers emit a file for each such expression (Parcel a second worker bundle).
+      this.workerUrl = String(import.meta.url).replace(/[^/?#]*([?#].*)?$/, 'worker.js');
       this.makeWorker = () => new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
     } else if (typeof worker === 'function') {
       this.makeWorker = worker;

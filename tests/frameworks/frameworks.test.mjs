@@ -10,6 +10,14 @@
 //   deployed without node_modules/patternsynth).
 // - Rollup 4 with @rollup/plugin-node-resolve: the README's recipe (its copy command,
 //   the wasm's and the worker's URLs passed).
+// - Parcel 2 (`parcel build index.html`, no configuration): a static page whose module
+//   script imports patternsynth/vector and patternsynth/client, no URLs passed.
+// - Astro 5 with @astrojs/node in standalone mode (output 'server'; `astro build`, then
+//   `node dist/server/entry.mjs`): a page's frontmatter uses patternsynth/vector at
+//   request time, its <script> runs the browser checks. Astro 6 and later need Node 22.
+// - Next.js 15 (`next build` with its default bundler, webpack, then `next start`): the
+//   Next.js 16 site (next/app) with Next.js 15, installed as the npm alias next15 and
+//   given to the site as node_modules/next.
 // The page's checks (browser-checks.js, copied into each site) are the bundler test's:
 // strokes on the main thread, a texture through the worker client with progress, an
 // abort that rejects with AbortError, a call after it that works, the codecs.
@@ -33,7 +41,7 @@ import { serve } from '../../scripts/static-server.mjs';
 
 const root = resolve(import.meta.dirname, '../..');
 const here = import.meta.dirname;
-const env = { ...process.env, NEXT_TELEMETRY_DISABLED: '1' };
+const env = { ...process.env, NEXT_TELEMETRY_DISABLED: '1', ASTRO_TELEMETRY_DISABLED: '1' };
 
 // A step that never settles must fail the test, not hold CI until its limit.
 function within(ms, promise, what) {
@@ -127,7 +135,8 @@ function install() {
     rmSync(fresh, { recursive: true, force: true });
     throw new Error(`npm ci of tests/frameworks/package-lock.json failed: ${e.message}\n${tail(String(e.stderr ?? ''))}`);
   }
-  // Installs for other lockfiles (400 MB each) are not kept.
+  // Installs for other lockfiles (900 MB each: two Next.js versions with their SWC
+  // binaries, Parcel, Astro) are not kept.
   for (const name of readdirSync(cacheRoot)) {
     if (name.startsWith('frameworks-') && name !== `frameworks-${hash}` && !name.includes('.part-')) rmSync(join(cacheRoot, name), { recursive: true, force: true });
   }
@@ -138,10 +147,12 @@ function install() {
 let work;
 let tarball;
 
-/** A fresh copy of the site folder `name` with node_modules: the frameworks (hard links
- *  into the cache) and the tarball as node_modules/patternsynth. */
-function site(name, checksInto) {
+/** A fresh copy of the site folder `name` (over a copy of the folder `base`, if given)
+ *  with node_modules: the frameworks (hard links into the cache) and the tarball as
+ *  node_modules/patternsynth. */
+function site(name, checksInto, base) {
   const dir = mkdtempSync(join(work, `${name}-`));
+  if (base) cpSync(join(here, base), dir, { recursive: true });
   cpSync(join(here, name), dir, { recursive: true });
   cpSync(join(here, 'browser-checks.js'), join(dir, checksInto, 'browser-checks.js'));
   try {
@@ -230,8 +241,9 @@ async function get(server, path) {
 
 // --- the tests -------------------------------------------------------------------------
 
-test('Next.js 16, next build (Turbopack) and next start: a route handler, a server component and a client component', { timeout: 900_000 }, async () => {
-  const dir = site('next', 'app');
+/** `next build`, then `next start`, of the site in `dir`: the route handler's JSON, the
+ *  prerendered server component's number, the client component's browser checks. */
+async function nextSite(dir) {
   const next = join(dir, 'node_modules/next/dist/bin/next');
   await run(process.execPath, [next, 'build'], { cwd: dir, ms: 300_000 });
   const port = await freePort();
@@ -245,6 +257,21 @@ test('Next.js 16, next build (Turbopack) and next start: a route handler, a serv
   } finally {
     kill(server.child);
   }
+}
+
+test('Next.js 16, next build (Turbopack) and next start: a route handler, a server component and a client component', { timeout: 900_000 }, async () => {
+  await nextSite(site('next', 'app'));
+});
+
+test('Next.js 15, next build (webpack) and next start: the same route handler, server component and client component', { timeout: 900_000 }, async () => {
+  // The Next.js 16 site's files with next15/package.json; Next.js 15 (the alias next15 in
+  // the shared install, with its own nested dependencies) becomes node_modules/next.
+  const dir = site('next15', 'app', 'next');
+  rmSync(join(dir, 'node_modules/next'), { recursive: true });
+  renameSync(join(dir, 'node_modules/next15'), join(dir, 'node_modules/next'));
+  const { version } = JSON.parse(readFileSync(join(dir, 'node_modules/next/package.json'), 'utf8'));
+  assert.match(version, /^15\./, 'node_modules/next of the Next.js 15 site');
+  await nextSite(dir);
 });
 
 for (const field of ['dependencies', 'devDependencies']) {
@@ -284,5 +311,30 @@ test('Rollup 4 + @rollup/plugin-node-resolve: the README recipe (files copied, t
     check(await browse(`http://127.0.0.1:${server.address().port}/`));
   } finally {
     server.close();
+  }
+});
+
+test('Parcel 2, parcel build of a static page: init() and the worker client with no configuration', { timeout: 900_000 }, async () => {
+  const dir = site('parcel', '.');
+  await run(process.execPath, [join(dir, 'node_modules/parcel/lib/bin.js'), 'build', 'index.html', '--no-autoinstall'], { cwd: dir, ms: 300_000 });
+  const server = await serve(join(dir, 'dist'), 0);
+  try {
+    check(await browse(`http://127.0.0.1:${server.address().port}/`));
+  } finally {
+    server.close();
+  }
+});
+
+test('Astro 5 + @astrojs/node standalone: astro build, then node dist/server/entry.mjs (frontmatter on the server, a client script)', { timeout: 900_000 }, async () => {
+  const dir = site('astro', 'src');
+  await run(process.execPath, [join(dir, 'node_modules/astro/astro.js'), 'build'], { cwd: dir, ms: 300_000 });
+  const port = await freePort();
+  const server = await start(process.execPath, ['dist/server/entry.mjs'], { cwd: dir, port, extraEnv: { PORT: String(port), HOST: '127.0.0.1' } });
+  try {
+    const html = await get(server, '/');
+    assert.match(html, new RegExp(`<span id="server-strokes">${expected.strokes}</span>`), 'the frontmatter\'s number in the HTML');
+    check(await browse(`${server.url}/`, server), server);
+  } finally {
+    kill(server.child);
   }
 });
