@@ -40,6 +40,7 @@ export class PatternSynthClient {
       this.makeWorker = worker;
     } else if (typeof worker === 'string' || worker instanceof URL) {
       this.workerUrl = String(worker);
+      this.givenUrl = true;
       this.makeWorker = () => new Worker(worker, { type: 'module' });
     } else if (worker && typeof worker.postMessage === 'function') {
       // A given Worker is used until it is terminated; then no fresh one can be made.
@@ -206,7 +207,11 @@ export class PatternSynthClient {
     if (worker !== this.worker && !this.helpers.includes(worker)) return;
     const where = event?.filename ? ` (${event.filename}${event.lineno ? `:${event.lineno}` : ''})` : '';
     const cause = event?.message || 'its script, or a module it imports, could not be loaded or evaluated; see the browser console';
-    const error = new Error(`The patternsynth worker failed: ${cause}${where}.${this.crossOrigin()}`);
+    // Not loaded at all: most often a setup that does not serve the worker and its
+    // modules (a bundler that bundles no workers); name the script where it was given.
+    const given = this.workerUrl && this.givenUrl ? ` The worker script is ${new URL(this.workerUrl, globalThis.location?.href).href}.` : '';
+    const recipe = event?.message ? '' : `${given} If your bundler does not bundle workers, copy the package's files beside your bundle and pass the worker's URL: see "With a bundler" in the package README.`;
+    const error = new Error(`The patternsynth worker failed: ${cause}${where}.${this.crossOrigin() || recipe}`);
     if (this.current) this.finish(this.current, error, true);
     else this.stopWorkers();
   }

@@ -25,9 +25,12 @@ test('the client recovers from a worker that fails to start and from bad input',
       const after = await client.parseSvg('<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 9 9"><rect width="1" height="1"/></svg>').then((s) => s.length, (e) => e.message);
       let sync;
       try { new PatternSynthClient(42); } catch (e) { sync = e.message; }
-      return { first, second, bad, nested, after, made, sync };
+      const missing = await new PatternSynthClient('./pkg/missing-worker.js').version().then(() => 'resolved', (e) => e.message);
+      return { first, second, bad, nested, after, made, sync, missing };
     });
     assert.match(out.first, /The patternsynth worker failed/);
+    assert.match(out.first, /"With a bundler" in the package README/);
+    assert.match(out.missing, /The worker script is http:\/\/127\.0\.0\.1:\d+\/pkg\/missing-worker\.js\. If your bundler does not bundle workers.*"With a bundler"/);
     assert.ok(out.second > 50, `second call: ${out.second}`);
     assert.equal(out.bad, 'Error: The SVG (the document\'s text) must be a string, got a number.');
     assert.match(out.nested, /nests 302 levels deep/);
