@@ -155,3 +155,28 @@ test('the result zooms and pans with the buttons, the keys, Ctrl + wheel and a d
     await close();
   }
 });
+
+test('the tile and its CSS take the colours too', async () => {
+  const { page, close } = await openPlayground({ height: 1400 });
+  try {
+    await page.waitForFunction(() => /[1-9]\d* strokes/.test(document.querySelector('#stroke-count').textContent));
+    await page.waitForFunction(() => document.querySelectorAll('#legend .chip').length > 1);
+    await page.click('#make-tile');
+    await page.waitForFunction(() => /Tile ready/.test(document.querySelector('#messages').textContent), null, { timeout: 60000 });
+    assert.equal(await page.$eval('#style', (f) => f.disabled), false, 'a tile alone enables the colours');
+    assert.ok(await page.$$eval('#class-colors input', (l) => l.length) >= 2, 'swatches from the drawing\'s classes');
+    await page.selectOption('#palette', 'sunset');
+    await page.check('#bg-on');
+    await page.$eval('#bg-color', (i) => { i.value = '#102030'; i.dispatchEvent(new Event('input', { bubbles: true })); });
+    const css = await page.inputValue('#tile-css');
+    assert.match(css, /%23ff6b35/, 'the first class in the palette\'s first colour');
+    assert.match(css, /fill%3D%22%23102030%22/, 'the background in the tile');
+    const [download] = await Promise.all([page.waitForEvent('download'), page.click('#tile-download')]);
+    const svg = readFileSync(await download.path(), 'utf8');
+    assert.match(svg, /<rect width="100%" height="100%" fill="#102030"\/>/);
+    assert.match(svg, /class="c0"[^>]*stroke="#ff6b35"/);
+    await page.locator('#tile-preview').screenshot({ path: 'out/style-tile.png' });
+  } finally {
+    await close();
+  }
+});

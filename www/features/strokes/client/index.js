@@ -7,6 +7,7 @@ import { get, saver } from '../../../shared/store.js';
 import { offerDownload, runControls } from '../../../shared/run.js';
 import { tilePanel } from '../../../shared/tile.js';
 import { zoomable } from '../../../shared/zoom.js';
+import { checkStyle, restyleSvg } from '../../../pkg/restyle.js';
 
 const SETTINGS_KEY = 'patternsynth.strokes.settings.v1';
 
@@ -165,6 +166,8 @@ export function mountStrokes(root, client) {
 
   // --- classes ---
   let classifyTimer = 0;
+  /** The drawing's latest classes: the colour swatches of a tile made before any result. */
+  let lastClassification = null;
   function scheduleClassify(delay = 250) {
     clearTimeout(classifyTimer);
     classifyTimer = setTimeout(classify, delay);
@@ -182,6 +185,7 @@ export function mountStrokes(root, client) {
     try {
       const c = await client.classifyStrokes(strokes, tolerances(), { signal: classifyAbort.signal });
       if (strokes !== drawing.strokes) return;
+      lastClassification = { strokes, classification: c };
       drawing.showClasses(c.classes, classColors);
       const counts = new Map();
       c.classes.forEach((k) => counts.set(k, (counts.get(k) ?? 0) + 1));
@@ -367,6 +371,7 @@ export function mountStrokes(root, client) {
     $('opacity-out').value = `${Math.round(settings.opacity * 100)}%`;
     save(SETTINGS_KEY, settings);
     for (const [k, input] of [...$('class-colors').children].entries()) input.value = colorOf(k);
+    showTile();
     clearTimeout(restyleTimer);
     if (shownResult) restyleTimer = setTimeout(() => { restyling = restyle(); }, 60);
   }
@@ -417,23 +422,33 @@ export function mountStrokes(root, client) {
     }
   });
 
-  // --- seamless tile ---
+  // --- seamless tile (in the result's colours: the page restyles its small SVG itself) ---
   let tileUrl = null;
+  let shownTile = null;
+  function showTile() {
+    if (!shownTile) return;
+    const { t, scale, size } = shownTile;
+    const svg = restyleSvg(t.svg, checkStyle(currentStyle()));
+    if (tileUrl) URL.revokeObjectURL(tileUrl);
+    tileUrl = URL.createObjectURL(new Blob([svg], { type: 'image/svg+xml' }));
+    tile.show({ url: tileUrl, svg, file: `tile-${size}.svg`, width: t.width, height: t.height, scale });
+  }
   const tile = tilePanel({ preview: $('tile-preview'), download: $('tile-download'), css: $('tile-css'), copy: $('tile-copy'), offset: $('tile-offset') });
   $('make-tile').addEventListener('click', async () => {
     $('make-tile').disabled = true;
     // A refusal must not leave the previous tile on screen as if it were this one's.
     tile.clear();
+    shownTile = null;
     $('tile-info').textContent = 'Making the tile…';
     try {
       const opts = { variation: settings.variation, seed: Number(settings.seed) || 0, repeats: Number(settings.tileRepeats) || 1, ...tolerances() };
       const t = await client.strokeTile(drawing.strokes, opts);
-      if (tileUrl) URL.revokeObjectURL(tileUrl);
-      tileUrl = URL.createObjectURL(new Blob([t.svg], { type: 'image/svg+xml' }));
       // Shown 3 x 3, scaled to the column (at most 4x); one tile outlined.
       const scale = Math.min(4, ($('tile-preview').parentElement.clientWidth - 24) / (3 * t.width));
-      const size = `${Math.round(t.width)}x${Math.round(t.height)}`;
-      tile.show({ url: tileUrl, svg: t.svg, file: `tile-${size}.svg`, width: t.width, height: t.height, scale });
+      shownTile = { t, scale, size: `${Math.round(t.width)}x${Math.round(t.height)}` };
+      if (!shownResult && lastClassification?.strokes === drawing.strokes) classColorInputs(lastClassification.strokes, lastClassification.classification);
+      $('style').disabled = false;
+      showTile();
       $('tile-info').textContent = `${+t.width.toFixed(2)}×${+t.height.toFixed(2)} tile, ${t.sites} elements (${t.strokes.length} strokes with the edge copies), shown 3×3.`;
       say('Tile ready.');
     } catch (e) {
