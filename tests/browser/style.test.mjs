@@ -176,6 +176,38 @@ test('the tile and its CSS take the colours too', async () => {
     assert.match(svg, /<rect width="100%" height="100%" fill="#102030"\/>/);
     assert.match(svg, /class="c0"[^>]*stroke="#ff6b35"/);
     await page.locator('#tile-preview').screenshot({ path: 'out/style-tile.png' });
+
+    // Scale: the CSS repeats the tile at twice its size; turned: an SVG <pattern> fills
+    // the element (a turned lattice has no axis-aligned period).
+    const size = (await page.inputValue('#tile-css')).match(/background-size: ([\d.]+)px ([\d.]+)px/).slice(1).map(Number);
+    await page.$eval('#tile-scale', (i) => { i.value = '2'; i.dispatchEvent(new Event('input', { bubbles: true })); });
+    const doubled = (await page.inputValue('#tile-css')).match(/background-size: ([\d.]+)px ([\d.]+)px/).slice(1).map(Number);
+    assert.deepEqual(doubled.map((v, i) => Math.round(v / size[i])), [2, 2]);
+    assert.equal(await page.textContent('#tile-scale-out'), '200%');
+    await page.$eval('#tile-rotate', (i) => { i.value = '30'; i.dispatchEvent(new Event('input', { bubbles: true })); });
+    const turned = decodeURIComponent((await page.inputValue('#tile-css')).match(/url\("data:image\/svg\+xml,(.*)"\)/)[1]);
+    assert.match(turned, /<pattern id="tile" patternUnits="userSpaceOnUse" width="[\d.]+" height="[\d.]+" patternTransform="rotate\(30\) scale\(2\)">/);
+    assert.match(turned, /<rect width="100%" height="100%" fill="url\(#tile\)"\/><\/svg>$/);
+    assert.doesNotMatch(await page.inputValue('#tile-css'), /background-repeat/);
+    // The snippet works as CSS: an element with it shows the pattern's colours.
+    const painted = await page.evaluate(async (css) => {
+      const div = document.createElement('div');
+      div.style.cssText = `width: 300px; height: 200px; ${css}`;
+      document.body.append(div);
+      const url = getComputedStyle(div).backgroundImage.slice(5, -2);
+      const img = new Image();
+      img.src = url;
+      await img.decode();
+      const c = new OffscreenCanvas(300, 200).getContext('2d');
+      c.drawImage(img, 0, 0, 300, 200);
+      const px = c.getImageData(0, 0, 300, 200).data;
+      let orange = 0;
+      for (let i = 0; i < px.length; i += 4) orange += px[i] > 200 && px[i + 1] > 80 && px[i + 1] < 140 && px[i + 2] < 90;
+      div.remove();
+      return orange;
+    }, await page.inputValue('#tile-css'));
+    assert.ok(painted > 100, `${painted} pixels of the first class's colour drawn from the turned pattern`);
+    await page.locator('#tile-preview').screenshot({ path: 'out/style-tile-turned.png' });
   } finally {
     await close();
   }

@@ -431,7 +431,21 @@ export function mountStrokes(root, client) {
     const svg = restyleSvg(t.svg, checkStyle(currentStyle()));
     if (tileUrl) URL.revokeObjectURL(tileUrl);
     tileUrl = URL.createObjectURL(new Blob([svg], { type: 'image/svg+xml' }));
-    tile.show({ url: tileUrl, svg, file: `tile-${size}.svg`, width: t.width, height: t.height, scale });
+    const transform = { scale: Number($('tile-scale').value), rotate: Number($('tile-rotate').value) };
+    tile.show({ url: tileUrl, svg, file: `tile-${size}.svg`, width: t.width, height: t.height, scale, transform });
+  }
+  // Scale and rotation of the pattern: its preview and CSS, not the tile file.
+  for (const [id, key, unit] of [['tile-scale', 'tileScale', '%'], ['tile-rotate', 'tileRotate', '°']]) {
+    const input = $(id);
+    if (settings[key] !== undefined) input.value = settings[key];
+    const show = () => { $(`${id}-out`).value = unit === '%' ? `${Math.round(input.value * 100)}%` : `${input.value}°`; };
+    show();
+    input.addEventListener('input', () => {
+      settings[key] = Number(input.value);
+      save(SETTINGS_KEY, settings);
+      show();
+      showTile();
+    });
   }
   const tile = tilePanel({ preview: $('tile-preview'), download: $('tile-download'), css: $('tile-css'), copy: $('tile-copy'), offset: $('tile-offset') });
   $('make-tile').addEventListener('click', async () => {
