@@ -44,3 +44,25 @@ pub(crate) fn invalid<T>(msg: impl Into<String>) -> Result<T> {
 pub fn megabytes(bytes: u64) -> String {
     format!("{:.1} MB", bytes as f64 / (1u64 << 20) as f64)
 }
+
+/// A value the caller gave, quoted for a message: whole when short, else its start and
+/// its length (a 10 MB string must not come back as a 10 MB message).
+pub fn quoted(s: &str) -> String {
+    const SHOWN: usize = 24;
+    if s.chars().count() <= 2 * SHOWN {
+        return format!("'{s}'");
+    }
+    let start: String = s.chars().take(SHOWN).collect();
+    format!("'{start}…' ({} characters)", s.chars().count())
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn long_values_are_cut_in_messages() {
+        assert_eq!(super::quoted("#12345"), "'#12345'");
+        let long = "x".repeat(10_000_000);
+        let q = super::quoted(&long);
+        assert!(q.len() < 60 && q.ends_with("(10000000 characters)"), "{q}");
+    }
+}

@@ -109,7 +109,7 @@ export function engine(glue, defaultUrl, name, hint = '`await init()` first (or 
       throw new Error(`${name}: ${method}() was called before the engine was loaded; ${hint}.`);
     }
     if (running) {
-      throw new Error(`patternsynth is busy: ${method}() was called while ${running}() is running (from its progress callback); a call from a progress callback must wait until the current call returns (setTimeout or queueMicrotask).`);
+      throw new Error(`patternsynth is busy: ${method}() was called while ${running}() is running (from its progress callback, or from a getter or valueOf of its arguments); a call from there must wait until the current call returns (setTimeout or queueMicrotask).`);
     }
     running = method;
     glue.__wbg_takeReturned?.();

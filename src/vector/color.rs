@@ -51,7 +51,9 @@ impl Serialize for Rgb {
 impl<'de> Deserialize<'de> for Rgb {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
         let s = String::deserialize(d)?;
-        Rgb::from_hex(&s).ok_or_else(|| serde::de::Error::custom(format!("colour '{s}' is not of the form '#rrggbb'")))
+        Rgb::from_hex(&s).ok_or_else(|| {
+            serde::de::Error::custom(format!("colour {} is not of the form '#rrggbb'", crate::error::quoted(&s)))
+        })
     }
 }
 

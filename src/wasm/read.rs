@@ -309,13 +309,24 @@ pub fn options<T: serde::de::DeserializeOwned + Default>(
             js_sys::Reflect::set(&alone, &JsValue::from_str(key), &value).is_ok()
                 && serde_wasm_bindgen::from_value::<T>(alone.into()).is_err()
         });
-        let text = plain_types(&e.to_string());
-        let text = text.strip_prefix("Error: ").unwrap_or(&text);
+        let text = serde_words(&e);
         match culprit {
             Some(key) => error(&format!("Invalid {what}: option `{key}`: {text}.")),
             None => error(&format!("Invalid {what}: {text}.")),
         }
     })
+}
+
+/// serde-wasm-bindgen's error as a sentence for a person: without its "Error: "
+/// prefix, the expected Rust type in words, and a JS object it could not read as "an
+/// object" rather than its debug form (`JsValue(Object({}))`).
+fn serde_words(e: &serde_wasm_bindgen::Error) -> String {
+    let text = plain_types(&e.to_string());
+    let text = text.strip_prefix("Error: ").unwrap_or(&text);
+    match (text.find("JsValue("), text.find(", expected")) {
+        (Some(a), Some(b)) if a < b => format!("{}an object{}", &text[..a], &text[b..]),
+        _ => text.to_string(),
+    }
 }
 
 /// serde's message with the expected Rust type said in words ("expected f64" reads
@@ -376,8 +387,8 @@ pub fn strokes(v: &JsValue, max_strokes: usize, max_points: usize) -> Result<Vec
                 js_sys::Reflect::set(&rest, key, &plain(&value, &what, 1, &mut values)?)?;
             }
         }
-        let mut stroke: Stroke =
-            serde_wasm_bindgen::from_value(rest.into()).map_err(|e| error(&format!("Invalid stroke {i}: {e}")))?;
+        let mut stroke: Stroke = serde_wasm_bindgen::from_value(rest.into())
+            .map_err(|e| error(&format!("Invalid stroke {i}: {}", serde_words(&e))))?;
         stroke.points = points;
         out.push(stroke);
     }
