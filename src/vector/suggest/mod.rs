@@ -306,13 +306,15 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
 /// (after the hand contradicts an accepted copy) must not propose the drawn copies
 /// again beside themselves.
 struct Stacked<'a> {
-    strokes: &'a [Stroke],
+    /// Each stroke's reference point, computed once: `on` runs for every part of every
+    /// proposed copy (a fill proposes thousands).
+    points: Vec<Point>,
     classes: &'a [u32],
     radius: Vec<f64>,
 }
 
 impl<'a> Stacked<'a> {
-    fn new(strokes: &'a [Stroke], classes: &'a [u32], accepted: &[bool]) -> Self {
+    fn new(strokes: &[Stroke], classes: &'a [u32], accepted: &[bool]) -> Self {
         let count = classes.iter().map(|&c| c as usize + 1).max().unwrap_or(0);
         let points: Vec<Point> = strokes.iter().map(Stroke::reference_point).collect();
         let mut nearest = vec![Vec::new(); count];
@@ -327,12 +329,11 @@ impl<'a> Stacked<'a> {
             }
         }
         let radius = nearest.iter_mut().map(|d| if d.is_empty() { 0.0 } else { 0.5 * median(d) }).collect();
-        Stacked { strokes, classes, radius }
+        Stacked { points, classes, radius }
     }
 
     fn on(&self, class: u32, p: Point) -> bool {
         let r = self.radius.get(class as usize).copied().unwrap_or(0.0);
-        r > 0.0
-            && self.strokes.iter().zip(self.classes).any(|(s, &c)| c == class && s.reference_point().distance(p) < r)
+        r > 0.0 && self.points.iter().zip(self.classes).any(|(q, &c)| c == class && q.distance(p) < r)
     }
 }
