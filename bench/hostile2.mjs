@@ -2,7 +2,7 @@
 // Node process through the built package, followed by a normal call in the same
 // instance. Prints one row per case: what came back, the time, whether the next call
 // worked, and the instance's wasm memory and externref table after it.
-//   node bench/hostile2.mjs [pkgDir=pkg] [timeoutSeconds=10]
+//   node bench/hostile2.mjs [pkgDir=pkg] [timeoutSeconds=10]   (CASE=regexp: only those)
 import { spawnSync } from 'node:child_process';
 import { mkdtempSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -50,6 +50,13 @@ export const CASES = [
   ['a getter that throws', `ps.synthesizeStrokes(${STROKES}, { width: 100, height: 100, get seed() { throw new Error('no seed for you'); } }).strokes.length`],
   ['a Map as options', `ps.synthesizeStrokes(${STROKES}, new Map([['width', 100], ['height', 100]])).strokes.length`],
   ['a class instance as options', `ps.synthesizeStrokes(${STROKES}, new (class { get width() { return 100; } get height() { return 50; } get seed() { return 3; } })()).width`],
+  // The second independent check's cases over 10 s.
+  ['CSS: one <rect> with 60,000 classes, 2,000 rules of 100-class compounds', `ps.parseSvg(${JSON.stringify(svg('<style>RULES</style><rect width="5" height="5" class="CLASSES"/>'))}.replace('RULES', Array.from({ length: 2000 }, (_, r) => Array.from({ length: 100 }, (_, k) => '.c' + ((r * 100 + k) % 60000)).join('') + '{fill:red}').join('')).replace('CLASSES', Array.from({ length: 60000 }, (_, k) => 'c' + k).join(' '))).length`],
+  ['classifyStrokes, 50,000 distinct strokes of 100 points', 'ps.classifyStrokes(Array.from({ length: 50000 }, (_, i) => ({ points: Array.from({ length: 100 }, (_, k) => [i % 250 * 20 + k * 0.1, Math.floor(i / 250) * 20 + Math.sin(k * (1 + i % 13) / 10) * (3 + i % 7)]), width: 1 }))).count'],
+  ['synthesizeStrokes: 20,000 strokes of 250 points to 5000 x 5000, maxElements 2,000,000', 'ps.synthesizeStrokes(Array.from({ length: 20000 }, (_, i) => ({ points: Array.from({ length: 250 }, (_, k) => [i % 200 * 10 + k * 0.02, Math.floor(i / 200) * 10 + Math.sin(k / 20 + i) * 2]), width: 1 })), { width: 5000, height: 5000, maxElements: 2000000 }).strokes.length'],
+  ['suggestStrokes fill after 2,000,000 strokes', 'ps.suggestStrokes(Array.from({ length: 2000000 }, (_, i) => ({ points: [[(i % 2000) * 10, Math.floor(i / 2000) * 10], [(i % 2000) * 10 + 4, Math.floor(i / 2000) * 10 + 4]], width: 1 })), { fill: true, region: [0, 0, 30000, 30000] }).strokes.length'],
+  ['seamlessTile synthesis 2048 x 2048', `ps.seamlessTile(${IMAGE.replace(/16/g, '64').replace('1024', '16384')}, { method: 'synthesis', width: 2048, height: 2048 }).width`],
+  ['synthesizeTexture 256 x 256 to 2048 x 2048', `ps.synthesizeTexture({ width: 256, height: 256, data: Uint8Array.from({ length: 262144 }, (_, i) => (i * 2654435761) >>> 24) }, { width: 2048, height: 2048 }).width`],
 ];
 
 const NORMAL = `ps.synthesizeStrokes(${STROKES}, { width: 100, height: 100, seed: 1 }).strokes.length`;
@@ -89,7 +96,8 @@ export function runCase(expr) {
 if (process.argv[1] === fileURLToPath(import.meta.url)) {
   console.log('| case | outcome | ms | next call | memory kept (MB) | externref table | message |');
   console.log('|---|---|---|---|---|---|---|');
-  for (const [name, expr] of CASES) {
+  const only = process.env.CASE ? new RegExp(process.env.CASE) : null;
+  for (const [name, expr] of CASES.filter(([n]) => !only || only.test(n))) {
     const o = runCase(expr);
     console.log(`| ${name} | ${o.kind} | ${o.ms} | ${o.next} | ${o.memory} | ${o.table} | ${String(o.detail).replace(/\|/g, '/').replace(/\n/g, ' ')} |`);
   }

@@ -35,6 +35,25 @@ fn bad_input_is_a_clear_error() {
 }
 
 /// Two classes by colour; members of a class differ slightly in length.
+/// Strokes of many points lower the element cap below `maxElements`: the refusal says
+/// why instead of contradicting the option.
+#[test]
+fn a_cap_set_by_points_says_so() {
+    // A 4 x 4 grid of zigzags of 2,000 points each, 20 apart: 20,000,000 points allow
+    // 10,000 such elements; 2000 x 2000 holds 10,000 sites, 5000 x 5000 about 62,500.
+    let zigzag = |x0: f64, y0: f64| -> Stroke {
+        let pts = (0..2000).map(|k| [x0 + k as f64 * 0.004, y0 + (k % 2) as f64]).collect();
+        Stroke::new(pts, 1.0, None)
+    };
+    let strokes: Vec<Stroke> = (0..16).map(|i| zigzag((i % 4) as f64 * 20.0, (i / 4) as f64 * 20.0)).collect();
+    let o = StrokeOptions { max_elements: 1_000_000, ..opts(5000.0, 5000.0) };
+    let err = synthesize_strokes(&strokes, &o, &mut Silent).unwrap_err().to_string();
+    assert!(
+        err.contains("the limit is 10000 (not maxElements' 1000000: each element here holds about 2000 points, and an output may hold 20000000 points in all)"),
+        "{err}"
+    );
+}
+
 fn varied_row() -> Vec<Stroke> {
     let mut strokes = Vec::new();
     for i in 0..8 {

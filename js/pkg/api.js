@@ -2,16 +2,17 @@
 // against it (tests), the worker dispatches by it and the client's methods are made
 // from it. `args`: how many arguments the call takes before the progress callback;
 // `progress`: whether it reports progress (and can be cancelled); `module`: the wasm
-// module that has it (`version` is in every one). The main entry has `vector` and
+// module that has it (`version` is in every one); `strokes`: its first argument is
+// strokes (their points are flattened before they cross: flat.js). The main entry has `vector` and
 // `texture` in one module and loads `codec` on demand.
 export const METHODS = {
   version: { args: 0 },
   parseSvg: { args: 2, module: 'vector' },
   parseSvgReport: { args: 2, module: 'vector' },
-  classifyStrokes: { args: 2, module: 'vector' },
-  synthesizeStrokes: { args: 2, progress: true, module: 'vector' },
-  strokeTile: { args: 2, module: 'vector' },
-  suggestStrokes: { args: 2, module: 'vector' },
+  classifyStrokes: { args: 2, strokes: true, module: 'vector' },
+  synthesizeStrokes: { args: 2, strokes: true, progress: true, module: 'vector' },
+  strokeTile: { args: 2, strokes: true, module: 'vector' },
+  suggestStrokes: { args: 2, strokes: true, module: 'vector' },
   synthesizeTexture: { args: 2, progress: true, module: 'texture' },
   blendTextures: { args: 3, progress: true, module: 'texture' },
   seamlessTile: { args: 2, progress: true, module: 'texture' },

@@ -16,6 +16,9 @@
 // callback) is refused: it would run on the running call's stack, and a trap in it
 // would replace the instance under the outer call.
 
+import { METHODS } from './api.js';
+import { flatStrokes } from './flat.js';
+
 /** Where a page whose bundler does not emit the package's wasm finds the way round. */
 const RECIPE = ' If your bundler does not emit the package\'s .wasm files, copy them beside your bundle and pass their URL to init(): see "With a bundler" in the package README.';
 
@@ -114,6 +117,8 @@ export function engine(glue, defaultUrl, name, hint = '`await init()` first (or 
     running = method;
     glue.__wbg_takeReturned?.();
     try {
+      // (Inside the call: a getter read here that calls the engine is refused too.)
+      if (METHODS[method]?.strokes) args = [flatStrokes(args[0]), ...args.slice(1)];
       const result = glue[method](...args);
       giveBack(method);
       return result;

@@ -198,6 +198,22 @@ pub fn synthesize_strokes(
     let instances = classification.motifs.instances.len().max(1);
     let mean_points = strokes.iter().map(|s| s.points.len().max(1)).sum::<usize>() / instances;
     let max_elements = opts.max_elements.min(MAX_OUTPUT_POINTS / mean_points.max(1));
+    // A limit lowered by the points says so: "the limit is 80000" beside a maxElements
+    // of 2,000,000 reads as a bug.
+    let explain = |e: Error| match e {
+        Error::TooLarge(m) if max_elements < opts.max_elements => {
+            let why = format!(
+                " (not maxElements' {}: each element here holds about {mean_points} points, and an output may hold {MAX_OUTPUT_POINTS} points in all)",
+                opts.max_elements
+            );
+            let said = [format!("the limit is {max_elements}"), format!("the limit of {max_elements} elements")];
+            Error::TooLarge(match said.iter().find(|s| m.contains(s.as_str())) {
+                Some(s) => m.replacen(s.as_str(), &format!("{s}{why}"), 1),
+                None => format!("{m}{why}"),
+            })
+        }
+        e => e,
+    };
     Throttle::new(progress).tick(0.02)?;
     let elements = classification.elements();
     let motifs = &classification.motifs;
@@ -217,14 +233,14 @@ pub fn synthesize_strokes(
     // unless it repeats exactly (a tile repeated extends exactly as it is).
     let mesh = if motifs.copies.is_none() { Mesh::of(strokes) } else { None };
     let joined = match mesh {
-        Some(mesh) => mesh.synthesize(strokes, area, &grow_opts, &mut throttle)?,
+        Some(mesh) => mesh.synthesize(strokes, area, &grow_opts, &mut throttle).map_err(explain)?,
         None => None,
     };
     let (out, classes, sources, stats) = if let Some(j) = joined {
         let classes = j.sources.iter().map(|&s| classification.classes[s as usize]).collect();
         (j.strokes, classes, j.sources, j.grown.stats)
     } else {
-        let Grown { placed, stats, orbit } = grow(&elements, &grow_opts, &mut throttle)?;
+        let Grown { placed, stats, orbit } = grow(&elements, &grow_opts, &mut throttle).map_err(explain)?;
         let (out, classes, sources) =
             motifs.dress(strokes, &classification.classes, &placed, &orbit, opts.variation.then_some(opts.seed), area);
         (out, classes, sources, stats)

@@ -111,7 +111,7 @@ pub fn detached(v: &JsValue) -> bool {
 /// `v` as a typed array of kind `T` when it is one (a Proxy of one is not: its
 /// `length` and elements throw when read through the typed array's own methods, which
 /// do not catch; `ArrayBuffer.isView` looks at the value itself and runs no page code).
-#[cfg(any(feature = "texture", feature = "codec"))]
+#[cfg(any(feature = "texture", feature = "codec", feature = "vector"))]
 pub fn view<T: JsCast>(v: &JsValue) -> Option<&T> {
     if js_sys::ArrayBuffer::is_view(v) {
         v.dyn_ref::<T>()
@@ -354,6 +354,20 @@ fn plain_types(text: &str) -> String {
 /// Reads strokes: an array of `{ points: [[x, y]...], width, stroke, fill, ... }`, at
 /// most `max_strokes` holding at most `max_points`, refused before reading past either.
 pub fn strokes(v: &JsValue, max_strokes: usize, max_points: usize) -> Result<Vec<Stroke>, JsValue> {
+    latest_strokes(v, usize::MAX, max_strokes, max_points)
+}
+
+/// `strokes`, reading every field of the `latest` last strokes only and just the points
+/// of the ones before (their other fields take the defaults): a suggestion looks at
+/// the earlier strokes of a long drawing only where they lie, and reading every field
+/// of two million strokes through the boundary takes half a minute.
+#[cfg(feature = "vector")]
+pub fn latest_strokes(
+    v: &JsValue,
+    latest: usize,
+    max_strokes: usize,
+    max_points: usize,
+) -> Result<Vec<Stroke>, JsValue> {
     if !v.is_object() || !is_array(v, "strokes")? {
         return Err(error(&format!(
             "Strokes must be an array of {{ points, width, stroke, fill }}, got {}.",
@@ -364,6 +378,7 @@ pub fn strokes(v: &JsValue, max_strokes: usize, max_points: usize) -> Result<Vec
     if n > max_strokes {
         return Err(error(&format!("There are {n} strokes; the limit is {max_strokes}.")));
     }
+    let whole_from = n.saturating_sub(latest);
     let fields: Vec<(&str, JsValue)> =
         field_names::<Stroke>().iter().filter(|&&f| f != "points").map(|&f| (f, JsValue::from_str(f))).collect();
     let points_key = JsValue::from_str("points");
@@ -379,6 +394,10 @@ pub fn strokes(v: &JsValue, max_strokes: usize, max_points: usize) -> Result<Vec
             )));
         }
         let points = points(&get_key(&s, &points_key, "points", &what)?, i, &mut budget, max_points)?;
+        if i < whole_from {
+            out.push(Stroke::new(points, 0.0, None));
+            continue;
+        }
         let rest = js_sys::Object::new();
         let mut values = MAX_OPTION_VALUES;
         for (field, key) in &fields {
@@ -399,6 +418,21 @@ pub fn strokes(v: &JsValue, max_strokes: usize, max_points: usize) -> Result<Vec
 /// Stroke `i`'s points, `[x, y]` pairs of numbers, taken from the `budget` of points.
 fn points(v: &JsValue, i: usize, budget: &mut usize, max_points: usize) -> Result<Vec<[f64; 2]>, JsValue> {
     let what = format!("points of stroke {i}");
+    // x, y, x, y, ... as one typed array (what the package's JS passes: flat.js).
+    if let Some(flat) = view::<js_sys::Float64Array>(v) {
+        let len = flat.length() as usize;
+        if len % 2 != 0 {
+            return Err(error(&format!(
+                "Stroke {i}'s points, a Float64Array, must hold x, y pairs: an even count of numbers, got {len}."
+            )));
+        }
+        *budget = budget.checked_sub(len / 2).ok_or_else(|| {
+            error(&format!(
+                "The strokes hold more than {max_points} points (up to stroke {i}); the limit is {max_points}."
+            ))
+        })?;
+        return Ok(flat.to_vec().chunks_exact(2).map(|c| [c[0], c[1]]).collect());
+    }
     if !v.is_object() || !is_array(v, &what)? {
         return Err(error(&format!("Stroke {i}'s points must be an array of [x, y] pairs, got {}.", type_name(v))));
     }

@@ -64,7 +64,8 @@ pub fn synthesize_strokes(strokes: JsValue, opts: JsValue, on_progress: JsValue)
 pub fn suggest_strokes(strokes: JsValue, opts: JsValue) -> Result<JsValue, JsValue> {
     // A drawing may hold more than the examples' limit: only its last strokes are read
     // for the repetition.
-    let strokes = read::strokes(&strokes, read::MAX_INPUT_STROKES, read::MAX_INPUT_POINTS)?;
+    let strokes =
+        read::latest_strokes(&strokes, vector::suggest::MAX_STROKES, read::MAX_INPUT_STROKES, read::MAX_INPUT_POINTS)?;
     let opts: vector::SuggestOptions = options(&opts, "suggestion options", &[], &[])?;
     to_js(&vector::suggest_strokes(&strokes, &opts).map_err(js_error)?)
 }

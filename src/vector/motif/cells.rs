@@ -14,7 +14,7 @@
 use super::super::classify::typical_size;
 use super::super::period::Periods;
 use super::super::stroke::Stroke;
-use super::contact::{gap, repeats, sampled, Sets};
+use super::contact::{gap, repeats, Path, Sets};
 use kurbo::{Point, Vec2};
 
 /// Parts of one copy are at most this share of the typical stroke size apart.
@@ -76,7 +76,7 @@ pub fn instances(strokes: &[Stroke], periods: &Periods) -> Option<Vec<Vec<u32>>>
         return None;
     }
     let near = TOUCH * typical_size(strokes);
-    let paths: Vec<Vec<kurbo::Point>> = strokes.iter().map(sampled).collect();
+    let paths: Vec<Path> = strokes.iter().map(Path::of).collect();
     let whole_copies = multi.iter().filter(|g| {
         connected(g, |i, j| {
             let (i, j) = (i as usize, j as usize);

@@ -54,8 +54,9 @@ pub fn instances(
     let mut sizes: Vec<f64> = strokes.iter().map(|s| s.bounds().size().to_vec2().hypot()).collect();
     crate::order::floats(&mut sizes);
     let reach = REACH * sizes[(sizes.len() - 1) * 9 / 10].max(size);
-    let paths: Vec<Vec<Point>> = strokes.iter().map(sampled).collect();
-    let boxes: Vec<Rect> = strokes.iter().map(|s| s.bounds().inflate(s.width / 2.0, s.width / 2.0)).collect();
+    let paths: Vec<Path> = strokes.iter().map(Path::of).collect();
+    let bounds: Vec<Rect> = strokes.iter().map(Stroke::bounds).collect();
+    let boxes: Vec<Rect> = bounds.iter().zip(strokes).map(|(b, s)| b.inflate(s.width / 2.0, s.width / 2.0)).collect();
     let all = boxes.iter().skip(1).fold(boxes[0], |r, b| r.union(*b));
     let biggest = boxes.iter().map(|b| b.width().max(b.height())).fold(0.0, f64::max);
     let mut grid = Grid::new(all, (size + reach).max(1e-9), 4 * n + 16);
@@ -96,8 +97,8 @@ pub fn instances(
         // (A loop wholly within another is an eye in its face: kept. Two faces drawn
         // overlapping put a point of one inside the other without being nested.)
         let within = |i: usize, j: usize| {
-            let (outer, inner) = (strokes[i].bounds(), strokes[j].bounds());
-            inside(&strokes[i], &paths[i], &paths[j]) && outer.union(inner) == outer
+            let (outer, inner) = (bounds[i], bounds[j]);
+            outer.union(inner) == outer && inside(&paths[i], &paths[j].points)
         };
         let nested = |i: usize, j: usize| within(i, j) || within(j, i);
         let apart: Vec<(f64, u32, u32)> = edges
@@ -171,17 +172,24 @@ fn grouped(n: usize, joins: &[(f64, u32, u32)], cut: f64, boxes: &[Rect]) -> Opt
     }
     let bounds: Vec<Rect> =
         out.iter().map(|g| g.iter().skip(1).fold(boxes[g[0] as usize], |r, &s| r.union(boxes[s as usize]))).collect();
-    let compact = bounds
-        .iter()
-        .enumerate()
-        .filter(|&(x, b)| {
-            let nearest = bounds
-                .iter()
-                .enumerate()
-                .filter(|&(y, _)| y != x)
-                .map(|(_, o)| o.center().distance(b.center()))
-                .fold(f64::INFINITY, f64::min);
-            b.size().to_vec2().hypot() <= COMPACT * nearest
+    // Compact: no other instance's centre nearer than the diagonal over COMPACT (found
+    // in a grid: a drawing of 50,000 strokes has tens of thousands of instances).
+    let centres: Vec<Point> = bounds.iter().map(Rect::center).collect();
+    let area = centres.iter().fold(Rect::from_points(centres[0], centres[0]), |r, &c| r.union_pt(c));
+    let diagonals: Vec<f64> = bounds.iter().map(|b| b.size().to_vec2().hypot()).collect();
+    let cell = crate::vector::classify::median(&mut diagonals.clone()) / COMPACT;
+    let mut grid = Grid::new(area, cell.max(1e-9), 4 * centres.len() + 16);
+    for (x, &c) in centres.iter().enumerate() {
+        grid.insert(x as u32, c);
+    }
+    let compact = (0..bounds.len())
+        .filter(|&x| {
+            let radius = diagonals[x] / COMPACT;
+            let mut crowded = false;
+            grid.for_each_near(centres[x], radius, |y| {
+                crowded |= y as usize != x && centres[y as usize].distance(centres[x]) < radius;
+            });
+            !crowded
         })
         .count();
     // Or copies side by side both ways, wide as they are (words in lines of text): two
@@ -233,7 +241,7 @@ fn touches(a: Rect, b: Rect) -> bool {
 
 /// A stroke's path resampled to at most `SAMPLES` points (each subpath kept apart is not
 /// needed here: a gap is a least distance, and joining subpaths only adds segments).
-pub(super) fn sampled(s: &Stroke) -> Vec<Point> {
+fn sampled(s: &Stroke) -> Vec<Point> {
     let pts: Vec<Point> = s.points.iter().map(|&[x, y]| Point::new(x, y)).collect();
     if pts.len() <= SAMPLES {
         return pts;
@@ -246,27 +254,59 @@ pub(super) fn sampled(s: &Stroke) -> Vec<Point> {
     out
 }
 
+/// A stroke's sampled path (`sampled`) as segments, each with its bounding box, made
+/// once per stroke: a dense drawing measures each stroke's gap to dozens of others.
+pub(super) struct Path {
+    pub(super) points: Vec<Point>,
+    segments: Vec<(Point, Point, Rect)>,
+    /// Closed, filled, or a loop drawn by hand (seldom closed exactly: an open stroke
+    /// whose ends come within a tenth of its size of each other; a face's eyes lie
+    /// inside it), with three points at least: it has an inside.
+    encloses: bool,
+    /// The sampled points' bounding box.
+    bounds: Rect,
+}
+
+impl Path {
+    pub(super) fn of(s: &Stroke) -> Path {
+        let points = sampled(s);
+        let mut ends: Vec<(Point, Point)> = points.windows(2).map(|w| (w[0], w[1])).collect();
+        if s.closed && points.len() > 2 {
+            ends.push((points[points.len() - 1], points[0]));
+        }
+        if points.len() == 1 {
+            ends.push((points[0], points[0]));
+        }
+        let segments = ends.into_iter().map(|(p, q)| (p, q, Rect::from_points(p, q))).collect();
+        let looped = points.len() >= 3
+            && points[0].distance(points[points.len() - 1]) <= 0.1 * s.bounds().size().to_vec2().hypot();
+        let encloses = points.len() >= 3 && (s.closed || s.fill.is_some() || looped);
+        let bounds = points
+            .iter()
+            .skip(1)
+            .fold(points.first().map_or(Rect::ZERO, |&p| Rect::from_points(p, p)), |r, &q| r.union_pt(q));
+        Path { points, segments, encloses, bounds }
+    }
+}
+
 /// The gap between two strokes: least distance between their paths less half their
 /// widths, zero when the paths cross or one lies inside the other's closed outline.
-pub(super) fn gap(a: &Stroke, pa: &[Point], b: &Stroke, pb: &[Point]) -> f64 {
+/// Segment pairs whose boxes lie further apart than the best distance so far are not
+/// measured: two neighbours' paths of 32 segments each are 1,024 pairs, of which a
+/// handful come close.
+pub(super) fn gap(a: &Stroke, pa: &Path, b: &Stroke, pb: &Path) -> f64 {
     let pad = 0.5 * (a.width + b.width);
-    if inside(a, pa, pb) || inside(b, pb, pa) {
+    if inside(pa, &pb.points) || inside(pb, &pa.points) {
         return 0.0;
     }
-    let segs = |p: &[Point], closed: bool| -> Vec<(Point, Point)> {
-        let mut v: Vec<(Point, Point)> = p.windows(2).map(|w| (w[0], w[1])).collect();
-        if closed && p.len() > 2 {
-            v.push((p[p.len() - 1], p[0]));
-        }
-        if p.len() == 1 {
-            v.push((p[0], p[0]));
-        }
-        v
-    };
-    let (sa, sb) = (segs(pa, a.closed), segs(pb, b.closed));
     let mut best = f64::INFINITY;
-    for &(p0, p1) in &sa {
-        for &(q0, q1) in &sb {
+    for &(p0, p1, ra) in &pa.segments {
+        for &(q0, q1, rb) in &pb.segments {
+            let dx = (rb.x0 - ra.x1).max(ra.x0 - rb.x1).max(0.0);
+            let dy = (rb.y0 - ra.y1).max(ra.y0 - rb.y1).max(0.0);
+            if dx * dx + dy * dy >= best * best {
+                continue;
+            }
             best = best.min(segment_distance(p0, p1, q0, q1));
             if best <= pad {
                 return 0.0;
@@ -276,19 +316,15 @@ pub(super) fn gap(a: &Stroke, pa: &[Point], b: &Stroke, pb: &[Point]) -> f64 {
     (best - pad).max(0.0)
 }
 
-/// Whether `other`'s first point lies inside the closed (or filled) outline `path` of `s`.
-/// A loop drawn by hand is seldom closed exactly: an open stroke whose ends come within
-/// a tenth of its size of each other counts as closed (a face's eyes lie inside it).
-fn inside(s: &Stroke, path: &[Point], other: &[Point]) -> bool {
-    if path.len() < 3 || other.is_empty() {
+/// Whether `other`'s first point lies inside the outline `path`, when it encloses.
+fn inside(path: &Path, other: &[Point]) -> bool {
+    let Some(&p) = other.first().filter(|_| path.encloses) else {
+        return false;
+    };
+    if !path.bounds.contains(p) {
         return false;
     }
-    let ends = path[0].distance(path[path.len() - 1]);
-    let looped = ends <= 0.1 * s.bounds().size().to_vec2().hypot();
-    if !(s.closed || s.fill.is_some() || looped) {
-        return false;
-    }
-    let p = other[0];
+    let path = &path.points;
     let mut wind = false;
     for k in 0..path.len() {
         let (a, b) = (path[k], path[(k + 1) % path.len()]);
