@@ -233,3 +233,59 @@ fn svg_defines_each_drawn_stroke_once_and_uses_it() {
         assert!((p[0] - q[0]).abs() <= 2e-3 && (p[1] - q[1]).abs() <= 2e-3, "{p:?} against {q:?}");
     }
 }
+
+/// Periods set by hand (issue 29): one flower drawn once repeats on them as it is, and
+/// a drawn grid is repeated on the periods given, not the ones it shows.
+#[test]
+fn periods_set_by_hand() {
+    use kurbo::Vec2;
+    use patternsynth::vector::handdrawn::{draw, motifs};
+    use patternsynth::vector::{stroke_tile, TileOptions};
+    let flower = motifs().into_iter().find(|m| m.name == "flower").unwrap();
+    let once = draw(&flower, (Vec2::new(1.0, 0.0), Vec2::new(0.0, 1.0)), (1, 1), 60.0, 0.01, 3);
+    let parts = once.strokes.len();
+    assert!(parts >= 5, "{parts} parts");
+    let (a, b) = ([50.0, 0.0], [25.0, 43.3]);
+    let o = StrokeOptions { periods: Some([a, b]), seed: 2, ..opts(600.0, 400.0) };
+    let r = synthesize_strokes(&once.strokes, &o, &mut Silent).unwrap();
+    assert_eq!(r.periods, Some([a, b]));
+    // Every output stroke is a drawn part moved by one shift (the drawing is centred in
+    // the output) and a whole combination of the periods.
+    let (av, bv) = (Vec2::new(a[0], a[1]), Vec2::new(b[0], b[1]));
+    let mut sites: std::collections::HashMap<(i64, i64), Vec<kurbo::Point>> = Default::default();
+    let moved = |k: usize| r.strokes[k].reference_point() - once.strokes[r.sources[k] as usize].reference_point();
+    let shift = moved(0);
+    for k in 0..r.strokes.len() {
+        let d = moved(k) - shift;
+        let (u, w) = (d.cross(bv) / av.cross(bv), av.cross(d) / av.cross(bv));
+        assert!((u - u.round()).abs() < 1e-6 && (w - w.round()).abs() < 1e-6, "off the lattice: {u}, {w}");
+        sites.entry((u.round() as i64, w.round() as i64)).or_default().push(r.strokes[k].reference_point());
+    }
+    // About one flower per cell of 50 x 43.3 over 600 x 400 (edges included): 111.
+    assert!((100..=150).contains(&sites.len()), "{} copies", sites.len());
+    // Every copy whole, except where the output's edge cuts it.
+    let inside = kurbo::Rect::new(40.0, 40.0, 560.0, 360.0);
+    for points in sites.values() {
+        let centre = points.iter().fold(kurbo::Vec2::ZERO, |s, p| s + p.to_vec2()) / points.len() as f64;
+        assert!(points.len() == parts || !inside.contains(centre.to_point()), "{} parts at {centre:?}", points.len());
+    }
+
+    // A tile on the same periods: one cell across, two rows down (a hexagonal lattice
+    // repeats in a 50 x 86.6 rectangle).
+    let t = stroke_tile(&once.strokes, &TileOptions { periods: Some([a, b]), ..TileOptions::default() }).unwrap();
+    assert!((t.width - 50.0).abs() < 1e-6 && (t.height - 86.6).abs() < 1e-6, "{} x {}", t.width, t.height);
+
+    // One cross drawn once: two bars on one centre, which show no spacing of their own.
+    let cross = motifs().into_iter().find(|m| m.name == "cross").unwrap();
+    let once = draw(&cross, (Vec2::new(1.0, 0.0), Vec2::new(0.0, 1.0)), (1, 1), 60.0, 0.01, 5);
+    let o = StrokeOptions { periods: Some([[40.0, 0.0], [0.0, 40.0]]), ..opts(400.0, 400.0) };
+    let r = synthesize_strokes(&once.strokes, &o, &mut Silent).unwrap();
+    assert!((200..=242).contains(&r.strokes.len()), "{} bars: two per cell of 40 x 40 over 400 x 400", r.strokes.len());
+
+    // Bad periods are named.
+    for bad in [[[1.0, 0.0], [2.0, 0.0]], [[0.0, 0.0], [0.0, 5.0]], [[f64::NAN, 1.0], [0.0, 5.0]]] {
+        let o = StrokeOptions { periods: Some(bad), ..opts(100.0, 100.0) };
+        let e = synthesize_strokes(&once.strokes, &o, &mut Silent).unwrap_err().to_string();
+        assert!(e.contains("not parallel"), "{e}");
+    }
+}

@@ -66,7 +66,12 @@ export interface StrokeOptions extends ClassifyOptions {
   maxElements?: number;
   /** Grow on the drawing's fitted lattice (default true): no drift on large outputs. */
   regularize?: boolean;
+  /** The two period vectors [[ax, ay], [bx, by]] to repeat the drawing on, when the ones
+   *  it shows are wrong or missing (one motif drawn once repeats on them). */
+  periods?: Periods;
 }
+/** Two period vectors of a lattice, [[ax, ay], [bx, by]]. */
+export type Periods = [[number, number], [number, number]];
 /** An image in: RGBA bytes, like a canvas ImageData. */
 /** An engine's state, for diagnostics (`diagnostics()`). */
 export interface Diagnostics { restarts: number; renewals: number; memoryBytes: number; baselineBytes: number; references: number; baselineReferences: number }
@@ -94,6 +99,8 @@ export interface TileOptions extends ClassifyOptions {
   variation?: boolean; seed?: number;
   /** The tile spans this many smallest repeats across and down (1 to 8, default 1). */
   repeats?: number;
+  /** The periods to tile on, when the drawing's own are wrong or missing. */
+  periods?: Periods;
 }
 export interface TileResult {
   /** In tile coordinates; strokes cut by an edge appear again one period over. */
@@ -132,6 +139,8 @@ export interface SeamlessResult {
 }
 export interface StrokeResult {
   strokes: Stroke[]; classes: number[]; sources: number[]; classification: Classification; svg: string;
+  /** The periods the output repeats on (found, fitted or given); null when grown freely. */
+  periods: Periods | null;
   growingPoints: number; skippedFull: number; passedOver: number;
 }
 

@@ -62,6 +62,8 @@ pub struct GrowOptions {
     pub extents: Vec<Vec2>,
     /// Seeds the windows free growth cuts from an irregular example (see `mosaic`).
     pub seed: u64,
+    /// Periods a designer set: the example is extended on them, whatever it shows.
+    pub periods: Option<(Vec2, Vec2)>,
 }
 
 impl Default for GrowOptions {
@@ -76,6 +78,7 @@ impl Default for GrowOptions {
             regularize: true,
             extents: Vec::new(),
             seed: 1,
+            periods: None,
         }
     }
 }
@@ -505,6 +508,8 @@ pub struct Grown {
     pub placed: Vec<Placed>,
     pub stats: GrowStats,
     pub orbit: Vec<u32>,
+    /// The periods the output repeats on (found, fitted or given; none for free growth).
+    pub periods: Option<(Vec2, Vec2)>,
 }
 
 /// Grows the reference `elems` over a `width x height` area.
@@ -516,15 +521,22 @@ pub fn grow(elems: &[Element], opts: &GrowOptions, progress: &mut Throttle) -> R
     if let Some(i) = elems.iter().position(|e| !(e.pos.x.is_finite() && e.pos.y.is_finite())) {
         return invalid(format!("Element {i} has a position that is not a finite number."));
     }
+    let area = Rect::new(0.0, 0.0, opts.width, opts.height);
+    if let Some((a, b)) = opts.periods {
+        let periods = lattice::on_periods(elems, a, b).periods(elems).expect("a lattice of two periods");
+        let placed = period::extend(elems, &opts.extents, &periods, area, opts.max_elements, progress)?;
+        progress.tick(1.0)?;
+        return Ok(Grown { placed, stats: GrowStats::default(), orbit: periods.motif, periods: Some((a, b)) });
+    }
     let spread = Spread::new(elems)?;
     // A periodic example (a tile repeated, a hand-drawn grid) needs no growth: its
     // exact periodic extension has every site and no drift (see `period`).
     if opts.regularize {
         if let Some(periods) = period::find(elems, &spread.grid, spread.spacing) {
-            let area = Rect::new(0.0, 0.0, opts.width, opts.height);
             let placed = period::extend(elems, &opts.extents, &periods, area, opts.max_elements, progress)?;
             progress.tick(1.0)?;
-            return Ok(Grown { placed, stats: GrowStats::default(), orbit: periods.motif });
+            let found = Some((periods.a, periods.b));
+            return Ok(Grown { placed, stats: GrowStats::default(), orbit: periods.motif, periods: found });
         }
     }
     let drawn = Reference::on(elems, spread)?;
@@ -535,10 +547,10 @@ pub fn grow(elems: &[Element], opts: &GrowOptions, progress: &mut Throttle) -> R
     };
     // No period and no lattice: an irregular example grows as a mosaic of its own windows.
     if opts.regularize && fit.is_none() && mosaic::applies(&drawn) {
-        let area = Rect::new(0.0, 0.0, opts.width, opts.height);
         let placed = mosaic::mosaic(&drawn, &opts.extents, area, opts.seed, opts.max_elements, progress)?;
         progress.tick(1.0)?;
-        return Ok(Grown { placed, stats: GrowStats::default(), orbit: elems.iter().map(|e| e.class).collect() });
+        let orbit = elems.iter().map(|e| e.class).collect();
+        return Ok(Grown { placed, stats: GrowStats::default(), orbit, periods: None });
     }
     let snapped: Vec<Element> = match &fit {
         Some(f) => elems.iter().zip(&f.snapped).map(|(e, &pos)| Element { pos, class: e.class }).collect(),
@@ -546,7 +558,6 @@ pub fn grow(elems: &[Element], opts: &GrowOptions, progress: &mut Throttle) -> R
     };
     let reference = if fit.is_some() { Reference::new(&snapped)? } else { drawn };
     let elems = reference.elems;
-    let area = Rect::new(0.0, 0.0, opts.width, opts.height);
     let estimate = reference.density() * area.area();
     if estimate > opts.max_elements as f64 {
         return Err(Error::TooLarge(format!(
@@ -611,9 +622,10 @@ pub fn grow(elems: &[Element], opts: &GrowOptions, progress: &mut Throttle) -> R
             e.pos += raw_elems[s].pos - snapped[s].pos;
         }
     }
+    let periods = fit.as_ref().and_then(|f| Some((f.a, f.b?)));
     let orbit = match fit {
         Some(f) => f.component,
         None => raw_elems.iter().map(|e| e.class).collect(),
     };
-    Ok(Grown { placed, stats, orbit })
+    Ok(Grown { placed, stats, orbit, periods })
 }

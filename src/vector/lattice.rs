@@ -60,25 +60,7 @@ pub fn fit(elems: &[Element], grid: &Grid, pair_radius: &[f64], spacing: f64, re
     if n < 4 {
         return None;
     }
-    // The partner of element i under offset v: a same-class element near pos + v.
-    let partner = |i: usize, v: Vec2| -> Option<usize> {
-        let e = &elems[i];
-        let p = e.pos + v;
-        // Within a quarter of the period: a class's own spacing alone would let an
-        // offset between two parts of a copy (a cat's ears) land near another part.
-        let d = pair_radius[e.class as usize].min(0.25 * v.hypot());
-        let mut best: Option<(usize, f64)> = None;
-        grid.for_each_near(p, d, |j| {
-            let o = &elems[j as usize];
-            let d2 = (o.pos - p).hypot2();
-            // (Never the element itself: an offset shorter than the class's radius would
-            // map a lone part of each copy, a cat's face, onto itself.)
-            if j as usize != i && o.class == e.class && d2 < d * d && best.is_none_or(|b| d2 < b.1) {
-                best = Some((j as usize, d2));
-            }
-        });
-        best.map(|b| b.0)
-    };
+    let partner = |i: usize, v: Vec2| partner(elems, grid, pair_radius, i, v);
     let step = n.div_ceil(SAMPLE).max(1);
     let sample: Vec<usize> = (0..n).step_by(step).collect();
     let support = |v: Vec2| sample.iter().filter(|&&i| partner(i, v).is_some()).count() as f64 / sample.len() as f64;
@@ -132,7 +114,39 @@ pub fn fit(elems: &[Element], grid: &Grid, pair_radius: &[f64], spacing: f64, re
     };
     let (a, b) = (refine(a), b.map(refine));
 
-    // Motif positions: connected components under +-a, +-b, with lattice coordinates.
+    let (coord, reached, snapped) = assign(n, &partner, a, b, elems);
+    if (reached as f64) < 0.8 * n as f64 {
+        return None;
+    }
+    // Accept only a fit that explains the drawing: residuals small against the periods.
+    let mut residuals: Vec<f64> = snapped.iter().zip(elems).map(|(s, e)| s.distance(e.pos)).collect();
+    crate::order::floats(&mut residuals);
+    // (On the scale of the periods: a motif of small parts, a cat's eyes and mouth, has
+    // its strokes' spacing far below its copies'.)
+    let shorter = b.map_or(a.hypot(), |b| a.hypot().min(b.hypot()));
+    if residuals[residuals.len() / 2] > 0.15 * shorter {
+        return None;
+    }
+    Some(lattice_fit(a, b, snapped, &coord))
+}
+
+fn lattice_fit(a: Vec2, b: Option<Vec2>, snapped: Vec<Point>, coord: &[(usize, i64, i64)]) -> LatticeFit {
+    let component = coord.iter().map(|c| c.0 as u32).collect();
+    let cell = coord.iter().map(|&(_, u, w)| (u as i32, w as i32)).collect();
+    LatticeFit { a, b, snapped, component, cell }
+}
+
+/// Motif positions: the connected components of the elements under `+-a`, `+-b`
+/// (`partner`), each element's component and lattice coordinates, how many elements
+/// lie in components of several, and each element snapped to its component's centre
+/// (the mean of its members' positions less their steps) plus its steps.
+fn assign(
+    n: usize,
+    partner: &dyn Fn(usize, Vec2) -> Option<usize>,
+    a: Vec2,
+    b: Option<Vec2>,
+    elems: &[Element],
+) -> (Vec<(usize, i64, i64)>, usize, Vec<Point>) {
     let mut coord: Vec<Option<(usize, i64, i64)>> = vec![None; n];
     let steps: Vec<(Vec2, i64, i64)> =
         [(a, 1, 0), (-a, -1, 0)].into_iter().chain(b.into_iter().flat_map(|b| [(b, 0, 1), (-b, 0, -1)])).collect();
@@ -147,7 +161,7 @@ pub fn fit(elems: &[Element], grid: &Grid, pair_radius: &[f64], spacing: f64, re
         let mut size = 0;
         while let Some(i) = stack.pop() {
             size += 1;
-            let (c, u, w) = coord[i].unwrap();
+            let (c, u, w) = coord[i].expect("set before pushed");
             for &(v, du, dw) in &steps {
                 if let Some(j) = partner(i, v) {
                     if coord[j].is_none() {
@@ -162,34 +176,70 @@ pub fn fit(elems: &[Element], grid: &Grid, pair_radius: &[f64], spacing: f64, re
         }
         components += 1;
     }
-    if (reached as f64) < 0.8 * n as f64 {
-        return None;
-    }
-    // Each component's centre: the mean of its members' positions less their steps.
+    let coord: Vec<(usize, i64, i64)> = coord.into_iter().map(|c| c.expect("every element is reached")).collect();
     let b0 = b.unwrap_or(Vec2::ZERO);
     let mut sums = vec![(Vec2::ZERO, 0usize); components];
-    for (i, c) in coord.iter().enumerate() {
-        let (k, u, w) = c.unwrap();
+    for (i, &(k, u, w)) in coord.iter().enumerate() {
         sums[k].0 += elems[i].pos.to_vec2() - a * u as f64 - b0 * w as f64;
         sums[k].1 += 1;
     }
-    let snapped: Vec<Point> = coord
+    let snapped = coord
         .iter()
-        .map(|c| {
-            let (k, u, w) = c.unwrap();
-            (sums[k].0 / sums[k].1 as f64 + a * u as f64 + b0 * w as f64).to_point()
-        })
+        .map(|&(k, u, w)| (sums[k].0 / sums[k].1 as f64 + a * u as f64 + b0 * w as f64).to_point())
         .collect();
-    // Accept only a fit that explains the drawing: residuals small against the periods.
-    let mut residuals: Vec<f64> = snapped.iter().zip(elems).map(|(s, e)| s.distance(e.pos)).collect();
-    crate::order::floats(&mut residuals);
-    // (On the scale of the periods: a motif of small parts, a cat's eyes and mouth, has
-    // its strokes' spacing far below its copies'.)
-    let shorter = b.map_or(a.hypot(), |b| a.hypot().min(b.hypot()));
-    if residuals[residuals.len() / 2] > 0.15 * shorter {
-        return None;
+    (coord, reached, snapped)
+}
+
+/// Periods given as an option, `[[ax, ay], [bx, by]]`, as vectors, or an error when they
+/// span no lattice (not finite, zero or parallel).
+pub fn given_periods(periods: Option<[[f64; 2]; 2]>) -> crate::error::Result<Option<(Vec2, Vec2)>> {
+    let Some([a, b]) = periods else { return Ok(None) };
+    let (a, b) = (Vec2::new(a[0], a[1]), Vec2::new(b[0], b[1]));
+    let finite = [a.x, a.y, b.x, b.y].iter().all(|v| v.is_finite());
+    if !finite || a.cross(b).abs() <= 1e-6 * a.hypot() * b.hypot() || a.hypot().min(b.hypot()) < 1e-6 {
+        return crate::error::invalid(
+            "periods must be two vectors [[ax, ay], [bx, by]] of finite numbers that are not parallel (nor zero).",
+        );
     }
-    let component = coord.iter().map(|c| c.map_or(0, |c| c.0 as u32)).collect();
-    let cell = coord.iter().map(|c| c.map_or((0, 0), |(_, u, w)| (u as i32, w as i32))).collect();
-    Some(LatticeFit { a, b, snapped, component, cell })
+    Ok(Some((a, b)))
+}
+
+/// The elements on periods `a` and `b` a designer set: copies a whole period apart are
+/// one motif position (snapped to their centre, as `fit` does); an element no period
+/// reaches is a motif position of its own, so one drawn motif repeats at the periods
+/// as it is. Unlike `fit`, nothing is refused: the periods are the designer's.
+pub fn on_periods(elems: &[Element], a: Vec2, b: Vec2) -> LatticeFit {
+    // Partners within a quarter of a period (the drawing may show no spacing at all: one
+    // cross drawn once is two bars on one centre).
+    let reach = 0.25 * a.hypot().min(b.hypot());
+    let first = elems.first().map_or(Point::ZERO, |e| e.pos);
+    let area = elems.iter().fold(kurbo::Rect::from_points(first, first), |r, e| r.union_pt(e.pos));
+    let mut grid = Grid::new(area, reach, 4 * elems.len() + 16);
+    for (i, e) in elems.iter().enumerate() {
+        grid.insert(i as u32, e.pos);
+    }
+    let radius = vec![f64::INFINITY; elems.iter().map(|e| e.class as usize + 1).max().unwrap_or(0)];
+    let partner = |i: usize, v: Vec2| partner(elems, &grid, &radius, i, v);
+    let (coord, _, snapped) = assign(elems.len(), &partner, a, Some(b), elems);
+    lattice_fit(a, Some(b), snapped, &coord)
+}
+
+/// The partner of element `i` under offset `v`: a same-class element near `pos + v`,
+/// within a quarter of the period (a class's own spacing alone would let an offset
+/// between two parts of a copy, a cat's ears, land near another part), never the
+/// element itself (an offset shorter than the class's radius would map a lone part of
+/// each copy, a cat's face, onto itself).
+fn partner(elems: &[Element], grid: &Grid, pair_radius: &[f64], i: usize, v: Vec2) -> Option<usize> {
+    let e = &elems[i];
+    let p = e.pos + v;
+    let d = pair_radius[e.class as usize].min(0.25 * v.hypot());
+    let mut best: Option<(usize, f64)> = None;
+    grid.for_each_near(p, d, |j| {
+        let o = &elems[j as usize];
+        let d2 = (o.pos - p).hypot2();
+        if j as usize != i && o.class == e.class && d2 < d * d && best.is_none_or(|b| d2 < b.1) {
+            best = Some((j as usize, d2));
+        }
+    });
+    best.map(|b| b.0)
 }

@@ -33,6 +33,10 @@ pub struct StrokeOptions {
     /// Grow on the example's fitted lattice so large outputs do not drift (each element
     /// keeps its hand-drawn deviation); off grows on the drawn positions as they are.
     pub regularize: bool,
+    /// The two period vectors `[[ax, ay], [bx, by]]` to repeat the drawing on, when the
+    /// ones it shows are wrong or missing (one motif drawn once repeats on them as it
+    /// is); none: found in the drawing.
+    pub periods: Option<[[f64; 2]; 2]>,
 }
 
 impl Default for StrokeOptions {
@@ -49,6 +53,7 @@ impl Default for StrokeOptions {
             support: g.support,
             max_elements: g.max_elements,
             regularize: g.regularize,
+            periods: None,
         }
     }
 }
@@ -90,6 +95,9 @@ pub struct StrokeResult {
     pub sources: Vec<u32>,
     pub classification: Classification,
     pub svg: String,
+    /// The periods the output repeats on (found, fitted or given), `[[ax, ay], [bx, by]]`;
+    /// none when it was grown freely (irregular input).
+    pub periods: Option<[[f64; 2]; 2]>,
     pub growing_points: usize,
     pub skipped_full: usize,
     pub passed_over: usize,
@@ -193,6 +201,7 @@ pub fn synthesize_strokes(
             opts.max_elements
         )));
     }
+    let periods = super::lattice::given_periods(opts.periods)?;
     let classification = classify_strokes(strokes, opts.path_tolerance, opts.width_tolerance, opts.color_tolerance)?;
     // The output's size is its points, not only its elements: busy motifs lower the cap.
     let instances = classification.motifs.instances.len().max(1);
@@ -225,25 +234,26 @@ pub fn synthesize_strokes(
         regularize: opts.regularize,
         extents: motifs.extents(strokes),
         seed: opts.seed,
+        periods,
         ..GrowOptions::default()
     };
     let area = kurbo::Rect::new(0.0, 0.0, opts.width, opts.height);
     let mut throttle = Throttle::with_range(progress, 0.02, 0.98);
     // A mesh (pieces that share their edges) is joined afresh, not placed piece by piece,
     // unless it repeats exactly (a tile repeated extends exactly as it is).
-    let mesh = if motifs.copies.is_none() { Mesh::of(strokes) } else { None };
+    let mesh = if motifs.copies.is_none() && periods.is_none() { Mesh::of(strokes) } else { None };
     let joined = match mesh {
         Some(mesh) => mesh.synthesize(strokes, area, &grow_opts, &mut throttle).map_err(explain)?,
         None => None,
     };
-    let (out, classes, sources, stats) = if let Some(j) = joined {
+    let (out, classes, sources, stats, periods) = if let Some(j) = joined {
         let classes = j.sources.iter().map(|&s| classification.classes[s as usize]).collect();
-        (j.strokes, classes, j.sources, j.grown.stats)
+        (j.strokes, classes, j.sources, j.grown.stats, j.grown.periods)
     } else {
-        let Grown { placed, stats, orbit } = grow(&elements, &grow_opts, &mut throttle).map_err(explain)?;
+        let Grown { placed, stats, orbit, periods } = grow(&elements, &grow_opts, &mut throttle).map_err(explain)?;
         let (out, classes, sources) =
             motifs.dress(strokes, &classification.classes, &placed, &orbit, opts.variation.then_some(opts.seed), area);
-        (out, classes, sources, stats)
+        (out, classes, sources, stats, periods)
     };
     let svg = to_svg(&out, &classes, opts.width, opts.height);
     Throttle::new(progress).tick(1.0)?;
@@ -253,6 +263,7 @@ pub fn synthesize_strokes(
         sources,
         classification,
         svg,
+        periods: periods.map(|(a, b)| [[a.x, a.y], [b.x, b.y]]),
         growing_points: stats.growing_points,
         skipped_full: stats.skipped_full,
         passed_over: stats.passed_over,

@@ -38,6 +38,9 @@ pub struct TileOptions {
     /// The tile spans this many smallest repeats across and down (1 to 8): more
     /// variety between repeats with `variation`.
     pub repeats: u32,
+    /// The periods to tile on, `[[ax, ay], [bx, by]]`, when the drawing's own are wrong
+    /// or missing (see `StrokeOptions::periods`).
+    pub periods: Option<[[f64; 2]; 2]>,
 }
 
 impl Default for TileOptions {
@@ -49,6 +52,7 @@ impl Default for TileOptions {
             variation: true,
             seed: 1,
             repeats: 1,
+            periods: None,
         }
     }
 }
@@ -104,7 +108,8 @@ pub fn stroke_tile(strokes: &[Stroke], opts: &TileOptions) -> Result<TileResult>
     let classification = classify_strokes(strokes, opts.path_tolerance, opts.width_tolerance, opts.color_tolerance)?;
     let elems = classification.elements();
     let motifs = &classification.motifs;
-    let Some(fit) = fit_lattice(&elems)? else {
+    let given = super::lattice::given_periods(opts.periods)?.map(|(a, b)| super::lattice::on_periods(&elems, a, b));
+    let Some(fit) = given.map_or_else(|| fit_lattice(&elems), |f| Ok(Some(f)))? else {
         return invalid(
             "No regular repeat found in these strokes: a seamless tile needs a drawing that repeats \
              (a row, or a grid of at least 2 x 2 copies).",

@@ -1,6 +1,7 @@
 // The drawing: strokes in canvas coordinates, pointer-event input (mouse, pen, touch),
 // undo/redo history, and rendering with an optional class overlay and ghost strokes
-// (autocomplete's proposals, drawn faint; a tap on one is handed to `onTap`).
+// (autocomplete's proposals, drawn faint; a tap on one is handed to `onTap`), and a lattice set
+// by hand, its periods dragged by their handles (`onLattice`).
 
 /** Draws one stroke (polyline, maybe compound and closed) on a 2D context. */
 export function drawStroke(ctx, s) {
@@ -62,6 +63,10 @@ export class Drawing {
     this.getPen = getPen;
     this.onTap = onTap;
     this.ghosts = [];
+    /** A lattice set by hand ({ a, b } period vectors), shown over the drawing with a
+     *  handle at the tip of each period; `onLattice(which, [x, y])` hears its drags. */
+    this.lattice = null;
+    this.onLattice = null;
     this.strokes = [];
     this.past = [];
     this.future = [];
@@ -138,6 +143,65 @@ export class Drawing {
     this.render();
   }
 
+  showLattice(lattice) {
+    this.lattice = lattice;
+    this.render();
+  }
+
+  /** Where the lattice shown is anchored: the middle of the drawing (or the canvas). */
+  latticeOrigin() {
+    if (!this.strokes.length) return [this.logical.w / 2, this.logical.h / 2];
+    const b = bounds(this.strokes);
+    return [(b.x0 + b.x1) / 2, (b.y0 + b.y1) / 2];
+  }
+
+  /** The lattice handle ('a' or 'b') under `p`: 12 px round its tip (a 24 px target). */
+  onHandle([x, y]) {
+    if (!this.lattice) return null;
+    const [ox, oy] = this.latticeOrigin();
+    for (const k of ['a', 'b']) {
+      const [vx, vy] = this.lattice[k];
+      if (Math.hypot(x - ox - vx, y - oy - vy) <= 12) return k;
+    }
+    return null;
+  }
+
+  renderLattice(ctx) {
+    const { a, b } = this.lattice;
+    const [ox, oy] = this.latticeOrigin();
+    const det = a[0] * b[1] - a[1] * b[0];
+    if (!(Math.abs(det) > 1)) return;
+    ctx.save();
+    // The sites: every lattice point on the canvas (at most a few thousand).
+    ctx.fillStyle = 'rgba(67, 99, 216, 0.45)';
+    const corners = [[0, 0], [this.logical.w, 0], [0, this.logical.h], [this.logical.w, this.logical.h]]
+      .map(([x, y]) => [((x - ox) * b[1] - (y - oy) * b[0]) / det, (a[0] * (y - oy) - a[1] * (x - ox)) / det]);
+    const [u0, u1] = [Math.floor(Math.min(...corners.map((c) => c[0]))), Math.ceil(Math.max(...corners.map((c) => c[0])))];
+    const [w0, w1] = [Math.floor(Math.min(...corners.map((c) => c[1]))), Math.ceil(Math.max(...corners.map((c) => c[1])))];
+    if ((u1 - u0 + 1) * (w1 - w0 + 1) <= 5000) {
+      for (let u = u0; u <= u1; u++) {
+        for (let w = w0; w <= w1; w++) {
+          ctx.beginPath();
+          ctx.arc(ox + u * a[0] + w * b[0], oy + u * a[1] + w * b[1], 2.5, 0, 2 * Math.PI);
+          ctx.fill();
+        }
+      }
+    }
+    // The two periods as arrows with round handles.
+    ctx.strokeStyle = ctx.fillStyle = '#4363d8';
+    ctx.lineWidth = 2;
+    for (const [vx, vy] of [a, b]) {
+      ctx.beginPath();
+      ctx.moveTo(ox, oy);
+      ctx.lineTo(ox + vx, oy + vy);
+      ctx.stroke();
+      ctx.beginPath();
+      ctx.arc(ox + vx, oy + vy, 7, 0, 2 * Math.PI);
+      ctx.fill();
+    }
+    ctx.restore();
+  }
+
   /** Whether `p` is on a ghost (within a few pixels of its bounds). */
   onGhost([x, y]) {
     return this.ghosts.some((s) => {
@@ -152,6 +216,7 @@ export class Drawing {
     for (const s of this.strokes) drawStroke(ctx, s);
     this.ghosts.forEach((s, i) => drawStroke(ctx, { ...s, opacity: (s.opacity ?? 1) * this.ghostAlpha[i] }));
     if (this.live) drawStroke(ctx, this.live);
+    if (this.lattice) this.renderLattice(ctx);
     if (this.classes && this.classes.length === this.strokes.length) {
       ctx.save();
       ctx.setLineDash([3, 2]);
@@ -175,6 +240,9 @@ export class Drawing {
     c.addEventListener('pointerdown', (e) => {
       if (e.button !== 0) return;
       c.setPointerCapture(e.pointerId);
+      // A drag from a lattice handle sets that period; it draws nothing.
+      this.handle = this.onHandle(this.point(e));
+      if (this.handle) return;
       this.liveTouch = e.pointerType === 'touch';
       const pen = this.getPen();
       this.live = {
@@ -187,6 +255,12 @@ export class Drawing {
       this.render();
     });
     c.addEventListener('pointermove', (e) => {
+      if (this.handle) {
+        const [x, y] = this.point(e);
+        const [ox, oy] = this.latticeOrigin();
+        this.onLattice?.(this.handle, [x - ox, y - oy]);
+        return;
+      }
       if (!this.live) return;
       const events = e.getCoalescedEvents ? e.getCoalescedEvents() : [e];
       for (const ev of events.length ? events : [e]) {
@@ -209,7 +283,13 @@ export class Drawing {
       else if (keep && !(tap && this.liveTouch) && (s.stroke || s.fill)) this.set([...this.strokes, s]);
       else this.render();
     };
-    c.addEventListener('pointerup', () => finish(true));
-    c.addEventListener('pointercancel', () => finish(false));
+    c.addEventListener('pointerup', () => {
+      this.handle = null;
+      finish(true);
+    });
+    c.addEventListener('pointercancel', () => {
+      this.handle = null;
+      finish(false);
+    });
   }
 }

@@ -1,6 +1,7 @@
 // Vector strokes tab: draw or import, see classes, synthesize in the worker, download.
 import { Drawing, fitStrokes } from './canvas.js';
 import { Autocomplete } from './autocomplete.js';
+import { repeatPanel } from './repeat.js';
 import { classColors, defaultOptions, defaultPen, defaultStyle, maxSide, palettes, sessionKey, storageKey, suggestCount } from '../shared/meta.js';
 import { forget, load, store as save } from '../../../shared/storage.js';
 import { get, saver } from '../../../shared/store.js';
@@ -100,6 +101,7 @@ export function mountStrokes(root, client) {
       return true;
     },
   });
+  const layout = repeatPanel({ $, settings, save: (s) => save(SETTINGS_KEY, s), drawing });
   // Tab accepts ghosts once after drawing (the hand is on the canvas); a keyboard user
   // who tabs onto the canvas accepts with Enter, and Tab moves on: no trap.
   let tabAccepts = false;
@@ -255,7 +257,7 @@ export function mountStrokes(root, client) {
     }
     const t0 = performance.now();
     await runs.start('Synthesizing…', async (call) => {
-      const opts = { width, height, variation: settings.variation, regularize: settings.regularize !== false, seed: Number(settings.seed) || 0, ...tolerances() };
+      const opts = { width, height, variation: settings.variation, regularize: settings.regularize !== false, seed: Number(settings.seed) || 0, periods: layout.periods(), ...tolerances() };
       // The worker draws the preview and keeps the strokes: reading tens of thousands of
       // them, or parsing and painting their SVG, would freeze this page for most of a second.
       const box = $('preview').clientWidth * devicePixelRatio || 800;
@@ -263,7 +265,8 @@ export function mountStrokes(root, client) {
       const { background, opacity } = currentStyle();
       const preview = { width: Math.ceil(width * fit), height: Math.ceil(height * fit), background: background ?? undefined, opacity };
       const strokes = drawing.strokes;
-      const r = await client.synthesizeStrokes(strokes, opts, { ...call, fields: ['svgBlob', 'classes', 'classification'], preview, keep: true });
+      const r = await client.synthesizeStrokes(strokes, opts, { ...call, fields: ['svgBlob', 'classes', 'classification', 'periods'], preview, keep: true });
+      layout.found(r.periods);
       shownResult = { strokes, opts, preview, classification: r.classification };
       $('download-png').disabled = false;
       const ms = performance.now() - t0;
@@ -455,7 +458,7 @@ export function mountStrokes(root, client) {
     shownTile = null;
     $('tile-info').textContent = 'Making the tile…';
     try {
-      const opts = { variation: settings.variation, seed: Number(settings.seed) || 0, repeats: Number(settings.tileRepeats) || 1, ...tolerances() };
+      const opts = { variation: settings.variation, seed: Number(settings.seed) || 0, repeats: Number(settings.tileRepeats) || 1, periods: layout.periods(), ...tolerances() };
       const t = await client.strokeTile(drawing.strokes, opts);
       // Shown 3 x 3, scaled to the column (at most 4x); one tile outlined.
       const scale = Math.min(4, ($('tile-preview').parentElement.clientWidth - 24) / (3 * t.width));

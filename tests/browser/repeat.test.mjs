@@ -1,0 +1,77 @@
+// A layout set by hand (issue 29): one cross drawn once, "hexagonal" picked, the
+// spacing dragged by its handle on the canvas, synthesized: every bar of the output
+// sits on the hexagonal lattice of that spacing; the tile repeats on it too.
+// Screenshot: out/repeat-hexagonal.png.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { mkdirSync } from 'node:fs';
+import { openPlayground } from './harness.mjs';
+import { parseSvg } from '../../pkg/node/index.js';
+
+const centre = (s) => {
+  const xs = s.points.map((p) => p[0]), ys = s.points.map((p) => p[1]);
+  return [(Math.min(...xs) + Math.max(...xs)) / 2, (Math.min(...ys) + Math.max(...ys)) / 2];
+};
+
+test('a hexagonal layout set and dragged by hand repeats one drawn motif on it', async () => {
+  mkdirSync('out', { recursive: true });
+  const { page, close } = await openPlayground({ height: 1300 });
+  try {
+    await page.waitForFunction(() => /[1-9]\d* strokes/.test(document.querySelector('#stroke-count').textContent));
+    await page.click('#clear');
+    const box = await page.locator('#draw').boundingBox();
+    const at = (x, y) => [box.x + (x * box.width) / 800, box.y + (y * box.height) / 500];
+    const drag = async (points) => {
+      await page.mouse.move(...at(...points[0]));
+      await page.mouse.down();
+      for (const p of points.slice(1)) await page.mouse.move(...at(...p), { steps: 3 });
+      await page.mouse.up();
+    };
+    // One cross, by hand (a slight wobble in each bar), centred at (400, 250).
+    await drag([[385, 251], [393, 249], [400, 250.5], [408, 250], [415, 249]]);
+    await drag([[400.5, 235], [399, 243], [400, 250], [401, 258], [400, 265]]);
+    await page.waitForFunction(() => document.querySelector('#stroke-count').textContent.startsWith('2 '));
+    // No layout yet: the lattice is not shown, and the spacings are hidden.
+    assert.equal(await page.isVisible('#period-across'), false);
+
+    await page.selectOption('#repeat-type', 'hexagonal');
+    assert.equal(await page.isVisible('#period-across'), true);
+    assert.equal(await page.isVisible('#period-down'), false, 'a hexagonal layout has one spacing');
+    await page.fill('#period-across', '60');
+    // The handle of the first period sits at the drawing's middle plus (60, 0): drag it
+    // to (80, 0).
+    const origin = [400, 250];
+    await drag([[origin[0] + 60, origin[1]], [origin[0] + 70, origin[1] + 1], [origin[0] + 80, origin[1]]]);
+    assert.equal(await page.inputValue('#period-across'), '80');
+    assert.equal(await page.textContent('#stroke-count').then((t) => t.split(' ')[0]), '2', 'a drag of a handle draws nothing');
+    await page.screenshot({ path: 'out/repeat-hexagonal.png' });
+
+    await page.fill('#out-width', '600');
+    await page.fill('#out-height', '400');
+    await page.click('#synthesize');
+    await page.waitForFunction(() => document.querySelector('#messages').textContent === 'Done.', null, { timeout: 60000 });
+    const svg = await page.evaluate(async () => (await fetch(document.querySelector('#download').href)).text());
+    const bars = parseSvg(svg).map(centre);
+    // 600 x 400 over cells of 80 x 69.3: about 43 crosses, two bars each (edges cut some).
+    assert.ok(bars.length >= 70, `${bars.length} bars`);
+    const a = [80, 0], b = [40, 40 * Math.sqrt(3)];
+    const det = a[0] * b[1] - a[1] * b[0];
+    const [x0, y0] = bars[0];
+    let worst = 0;
+    for (const [x, y] of bars) {
+      const [dx, dy] = [x - x0, y - y0];
+      const u = (dx * b[1] - dy * b[0]) / det, w = (a[0] * dy - a[1] * dx) / det;
+      worst = Math.max(worst, Math.hypot((u - Math.round(u)) * a[0] + (w - Math.round(w)) * b[0], (w - Math.round(w)) * b[1]));
+    }
+    assert.ok(worst < 3, `every bar within 3 units of the lattice (worst ${worst.toFixed(2)})`);
+
+    // The tile repeats on the same layout: one period across and two rows down, twice
+    // each way (the page's default of 2 repeats).
+    await page.click('#make-tile');
+    await page.waitForFunction(() => /×/.test(document.querySelector('#tile-info').textContent), null, { timeout: 30000 });
+    const info = await page.textContent('#tile-info');
+    assert.match(info, /^160×277\.1\d? tile/, info);
+  } finally {
+    await close();
+  }
+});
