@@ -3,6 +3,7 @@
 import { defaultOptions, exemplarKey, maskKey, maxExemplarSide, maxOutputSide, storageKey, textures } from '../shared/meta.js';
 import { load, store } from '../../../shared/storage.js';
 import { offerDownload, runControls } from '../../../shared/run.js';
+import { zoomable } from '../../../shared/zoom.js';
 import { builtinBitmap, fileBitmap, forgetImage, keepImage, keptImage, onDropFile, rgbaOf } from '../../../shared/images.js';
 
 /** The coefficient transfers, as the engine defines them (mu of A in [0, 1]). */
@@ -250,6 +251,7 @@ export function mountBlend(root, client) {
       }
       const ms = performance.now() - t0;
       const canvas = $('blend-result');
+      zoom.reset();
       canvas.width = out.width;
       canvas.height = out.height;
       canvas.getContext('2d').putImageData(new ImageData(new Uint8ClampedArray(out.data), out.width, out.height), 0, 0);
@@ -261,6 +263,11 @@ export function mountBlend(root, client) {
       $('blend-info').textContent = `${out.width}×${out.height}, ${single ? 'single exemplar' : settings.transition}, ${ms.toFixed(0)} ms${recurrence(out, single ? [slots.a.image] : [slots.a.image, slots.b.image])}`;
       say('Done.');
     });
+  });
+
+  // The texture zooms (pixels shown as they are) and pans like the vector result.
+  const zoom = zoomable($('blend-view'), {
+    zoomIn: $('blend-zoom-in'), zoomOut: $('blend-zoom-out'), fit: $('blend-zoom-fit'), level: $('blend-zoom-level'),
   });
 
   // --- start ---

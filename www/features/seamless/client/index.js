@@ -3,6 +3,7 @@
 import { defaultOptions, imageKey, maxInputSide, methodHelp, methods, storageKey, textures } from '../shared/meta.js';
 import { load, store } from '../../../shared/storage.js';
 import { runControls } from '../../../shared/run.js';
+import { zoomable } from '../../../shared/zoom.js';
 import { tilePanel } from '../../../shared/tile.js';
 import { builtinBitmap, fileBitmap, forgetImage, keepImage, keptImage, onDropFile, rgbaOf } from '../../../shared/images.js';
 
@@ -84,6 +85,11 @@ export function mountSeamless(root, client) {
   };
   const tile = tilePanel({ preview: $('seam-repeat'), download: $('seam-download'), css: $('seam-css'), copy: $('seam-copy'), offset: $('seam-offset') });
 
+  // The tile repeated zooms (pixels shown as they are) and pans, to look at its seams.
+  const zoom = zoomable($('seam-view'), {
+    zoomIn: $('seam-zoom-in'), zoomOut: $('seam-zoom-out'), fit: $('seam-zoom-fit'), level: $('seam-zoom-level'),
+  });
+
   // --- run ---
   const runs = runControls({ run: $('seam-run'), cancel: $('seam-cancel'), progress: $('seam-progress'), say });
   $('seam-run').addEventListener('click', async () => {
@@ -112,8 +118,9 @@ export function mountSeamless(root, client) {
       resultUrl = URL.createObjectURL(blob);
       // The 3x3 repeat, to judge the seams.
       // Whole pixels when the column has room, scaled down to fit it when it has not.
-      const fit = Math.min(512, $('seam-repeat').parentElement.clientWidth - 16) / (3 * width);
+      const fit = Math.min(512, $('seam-view').parentElement.clientWidth - 16) / (3 * width);
       const scale = fit >= 1 ? Math.floor(fit) : fit;
+      zoom.reset();
       tile.show({ url: resultUrl, file: `seamless-${settings.method}-${width}x${height}.png`, width, height, scale });
       $('seam-info').textContent = `${width}×${height}, restoration rate ${(100 * r.restorationRate).toFixed(1)}%, seam score ${r.seamScore.toFixed(2)} (about 1: no seam), ${ms.toFixed(0)} ms`;
       say(r.warnings.length ? r.warnings.join(' ') : 'Done.', r.warnings.length ? 'warn' : '');
