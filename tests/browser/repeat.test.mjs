@@ -1,7 +1,8 @@
 // A layout set by hand (issue 29): one cross drawn once, "hexagonal" picked, the
 // spacing dragged by its handle on the canvas, synthesized: every bar of the output
-// sits on the hexagonal lattice of that spacing; the tile repeats on it too.
-// Screenshot: out/repeat-hexagonal.png.
+// sits on the hexagonal lattice of that spacing; scaled by half and turned by 30°, on
+// that lattice scaled and turned; the tile repeats on it too.
+// Screenshots: out/repeat-hexagonal.png, out/repeat-turned.png.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync } from 'node:fs';
@@ -54,16 +55,37 @@ test('a hexagonal layout set and dragged by hand repeats one drawn motif on it',
     const bars = parseSvg(svg).map(centre);
     // 600 x 400 over cells of 80 x 69.3: about 43 crosses, two bars each (edges cut some).
     assert.ok(bars.length >= 70, `${bars.length} bars`);
-    const a = [80, 0], b = [40, 40 * Math.sqrt(3)];
-    const det = a[0] * b[1] - a[1] * b[0];
-    const [x0, y0] = bars[0];
-    let worst = 0;
-    for (const [x, y] of bars) {
-      const [dx, dy] = [x - x0, y - y0];
-      const u = (dx * b[1] - dy * b[0]) / det, w = (a[0] * dy - a[1] * dx) / det;
-      worst = Math.max(worst, Math.hypot((u - Math.round(u)) * a[0] + (w - Math.round(w)) * b[0], (w - Math.round(w)) * b[1]));
-    }
+    const offLattice = (bars, a, b) => {
+      const det = a[0] * b[1] - a[1] * b[0];
+      const [x0, y0] = bars[0];
+      let worst = 0;
+      for (const [x, y] of bars) {
+        const [dx, dy] = [x - x0, y - y0];
+        const u = (dx * b[1] - dy * b[0]) / det, w = (a[0] * dy - a[1] * dx) / det;
+        const [fu, fw] = [u - Math.round(u), w - Math.round(w)];
+        worst = Math.max(worst, Math.hypot(fu * a[0] + fw * b[0], fu * a[1] + fw * b[1]));
+      }
+      return worst;
+    };
+    const worst = offLattice(bars, [80, 0], [40, 40 * Math.sqrt(3)]);
     assert.ok(worst < 3, `every bar within 3 units of the lattice (worst ${worst.toFixed(2)})`);
+
+    // The result scaled by half and turned by 30°: the same layout, half as large, turned.
+    const slide = (id, v) => page.$eval(`#${id}`, (el, v) => { el.value = v; el.dispatchEvent(new Event('input')); }, v);
+    await slide('out-scale', 0.5);
+    await slide('out-rotate', 30);
+    await page.click('#synthesize');
+    await page.waitForFunction(() => document.querySelector('#messages').textContent === 'Done.' && !document.querySelector('#synthesize').disabled, null, { timeout: 60000 });
+    const turnedSvg = await page.evaluate(async () => (await fetch(document.querySelector('#download').href)).text());
+    const turned = parseSvg(turnedSvg).map(centre);
+    // Four times as many copies: about 170 crosses.
+    assert.ok(turned.length >= 4 * 70, `${turned.length} bars`);
+    const turn = ([x, y]) => [0.5 * (x * Math.cos(Math.PI / 6) - y * Math.sin(Math.PI / 6)), 0.5 * (x * Math.sin(Math.PI / 6) + y * Math.cos(Math.PI / 6))];
+    const worstTurned = offLattice(turned, turn([80, 0]), turn([40, 40 * Math.sqrt(3)]));
+    assert.ok(worstTurned < 2, `every bar on the turned lattice (worst ${worstTurned.toFixed(2)})`);
+    await page.screenshot({ path: 'out/repeat-turned.png' });
+    await slide('out-scale', 1);
+    await slide('out-rotate', 0);
 
     // The tile repeats on the same layout: one period across and two rows down, twice
     // each way (the page's default of 2 repeats).

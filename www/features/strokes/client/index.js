@@ -2,6 +2,7 @@
 import { Drawing, fitStrokes } from './canvas.js';
 import { Autocomplete } from './autocomplete.js';
 import { repeatPanel } from './repeat.js';
+import { transformPeriods, transformStrokes } from './transform.js';
 import { classColors, defaultOptions, defaultPen, defaultStyle, maxSide, palettes, sessionKey, storageKey, suggestCount } from '../shared/meta.js';
 import { forget, load, store as save } from '../../../shared/storage.js';
 import { get, saver } from '../../../shared/store.js';
@@ -257,16 +258,18 @@ export function mountStrokes(root, client) {
     }
     const t0 = performance.now();
     await runs.start('Synthesizing…', async (call) => {
-      const opts = { width, height, variation: settings.variation, regularize: settings.regularize !== false, seed: Number(settings.seed) || 0, periods: layout.periods(), ...tolerances() };
+      const turn = { scale: Number(settings.resultScale) || 1, degrees: Number(settings.resultRotate) || 0 };
+      const opts = { width, height, variation: settings.variation, regularize: settings.regularize !== false, seed: Number(settings.seed) || 0, periods: transformPeriods(layout.periods(), turn), ...tolerances() };
       // The worker draws the preview and keeps the strokes: reading tens of thousands of
       // them, or parsing and painting their SVG, would freeze this page for most of a second.
       const box = $('preview').clientWidth * devicePixelRatio || 800;
       const fit = Math.min(1, 4096 / Math.max(width, height), box / width);
       const { background, opacity } = currentStyle();
       const preview = { width: Math.ceil(width * fit), height: Math.ceil(height * fit), background: background ?? undefined, opacity };
-      const strokes = drawing.strokes;
+      const strokes = transformStrokes(drawing.strokes, turn);
       const r = await client.synthesizeStrokes(strokes, opts, { ...call, fields: ['svgBlob', 'classes', 'classification', 'periods'], preview, keep: true });
-      layout.found(r.periods);
+      // (In the drawing's own frame: a layout set by hand starts from them.)
+      layout.found(transformPeriods(r.periods, { scale: 1 / turn.scale, degrees: -turn.degrees }));
       shownResult = { strokes, opts, preview, classification: r.classification };
       $('download-png').disabled = false;
       const ms = performance.now() - t0;
@@ -437,8 +440,10 @@ export function mountStrokes(root, client) {
     const transform = { scale: Number($('tile-scale').value), rotate: Number($('tile-rotate').value) };
     tile.show({ url: tileUrl, svg, file: `tile-${size}.svg`, width: t.width, height: t.height, scale, transform });
   }
-  // Scale and rotation of the pattern: its preview and CSS, not the tile file.
-  for (const [id, key, unit] of [['tile-scale', 'tileScale', '%'], ['tile-rotate', 'tileRotate', '°']]) {
+  // Scale and rotation of the pattern: of the tile, its preview and CSS (not the tile
+  // file); of the result, the drawing it is synthesized from (transform.js).
+  const sliders = [['tile-scale', 'tileScale', '%'], ['tile-rotate', 'tileRotate', '°'], ['out-scale', 'resultScale', '%'], ['out-rotate', 'resultRotate', '°']];
+  for (const [id, key, unit] of sliders) {
     const input = $(id);
     if (settings[key] !== undefined) input.value = settings[key];
     const show = () => { $(`${id}-out`).value = unit === '%' ? `${Math.round(input.value * 100)}%` : `${input.value}°`; };
@@ -447,7 +452,7 @@ export function mountStrokes(root, client) {
       settings[key] = Number(input.value);
       save(SETTINGS_KEY, settings);
       show();
-      showTile();
+      if (id.startsWith('tile-')) showTile();
     });
   }
   const tile = tilePanel({ preview: $('tile-preview'), download: $('tile-download'), css: $('tile-css'), copy: $('tile-copy'), offset: $('tile-offset') });
