@@ -4,10 +4,19 @@ import { mountStrokes } from './features/strokes/client/index.js';
 import { mountBlend } from './features/blend/client/index.js';
 import { mountSeamless } from './features/seamless/client/index.js';
 import { exportSession, importSession } from './shared/session.js';
+import { onTrouble, ready } from './shared/storage.js';
 
 const client = new PatternSynthClient(new URL('./pkg/worker.js', import.meta.url));
 window.patternsynth = client; // handy from the console and for tests
 
+// Settings are read from IndexedDB before anything shows them; a setting the browser
+// will not keep is said beside the session buttons.
+await ready();
+onTrouble((message) => {
+  const status = document.getElementById('session-status');
+  status.className = 'session-status error';
+  status.textContent = message;
+});
 const features = { strokes: mountStrokes, blend: mountBlend, seamless: mountSeamless };
 for (const section of document.querySelectorAll('[data-feature]')) {
   features[section.dataset.feature]?.(section, client);

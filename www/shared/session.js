@@ -1,5 +1,6 @@
 // The whole session as one file: the drawing with its undo history, the images opened,
-// and every tab's settings. Export writes it; import puts it back and reloads the page.
+// and every tab's settings (IndexedDB; an older page's in localStorage). Export writes
+// it; import puts it back and reloads the page.
 import { get, keys, set } from './store.js';
 
 const FORMAT = 'patternsynth-session';
@@ -16,7 +17,9 @@ export async function exportSession(current = {}) {
   const kept = {};
   for (const key of await keys().catch(() => [])) {
     const value = await get(key);
-    kept[key] = value?.blob instanceof Blob ? { ...value, blob: await dataUrl(value.blob) } : value;
+    // (A Blob kept as it is, the blend's painted mask, is marked `whole`.)
+    kept[key] = value instanceof Blob ? { blob: await dataUrl(value), whole: true }
+      : value?.blob instanceof Blob ? { ...value, blob: await dataUrl(value.blob) } : value;
   }
   Object.assign(kept, current);
   const settings = {};
@@ -38,7 +41,7 @@ export async function importSession(file) {
   if (session?.format !== FORMAT) throw new Error(`${file.name} is not a patternsynth session (no "format": "${FORMAT}"); nothing was changed.`);
   for (const [key, value] of Object.entries(session.kept ?? {})) {
     const blob = typeof value?.blob === 'string' ? await (await fetch(value.blob)).blob() : null;
-    await set(key, blob ? { ...value, blob } : value);
+    await set(key, blob ? (value.whole ? blob : { ...value, blob }) : value);
   }
   for (const [key, value] of Object.entries(session.settings ?? {})) {
     if (key.startsWith('patternsynth.') && typeof value === 'string') localStorage.setItem(key, value);

@@ -206,7 +206,8 @@ export function mountBlend(root, client) {
   const endPaint = () => {
     if (!painting) return;
     painting = false;
-    store(maskKey, mask.toDataURL());
+    // A Blob (PNG), not a data URL: IndexedDB keeps it as it is.
+    mask.toBlob((blob) => blob && store(maskKey, blob), 'image/png');
     save();
   };
   mask.addEventListener('pointerup', endPaint);
@@ -275,9 +276,9 @@ export function mountBlend(root, client) {
   showAngle();
   const savedMask = load(maskKey, null);
   if (settings.transition === 'mask' && savedMask) {
-    const img = new Image();
-    img.onload = () => mctx.drawImage(img, 0, 0, mask.width, mask.height);
-    img.src = savedMask;
+    // (A data URL from an older page, or the Blob kept now.)
+    const blob = typeof savedMask === 'string' ? fetch(savedMask).then((r) => r.blob()) : Promise.resolve(savedMask);
+    blob.then(createImageBitmap).then((bitmap) => mctx.drawImage(bitmap, 0, 0, mask.width, mask.height), drawShape);
   } else drawShape();
   for (const [key, fallback] of [['a', 'wood'], ['b', 'gravel']]) {
     slots[key].select.value = settings[key];
