@@ -335,11 +335,12 @@ fn plain_types(text: &str) -> String {
     let words = [
         ("f64", "a number"),
         ("f32", "a number"),
-        ("u64", "a whole number"),
-        ("u32", "a whole number"),
-        ("usize", "a whole number"),
+        // (With its range where a JS number can pass it: counts are 32-bit in wasm.)
+        ("u64", "a whole number from 0 to 9007199254740991"),
+        ("u32", "a whole number from 0 to 4294967295"),
+        ("usize", "a whole number from 0 to 4294967295"),
         ("i64", "a whole number"),
-        ("i32", "a whole number"),
+        ("i32", "a whole number from -2147483648 to 2147483647"),
         ("bool", "true or false"),
         ("a boolean", "true or false"),
     ];

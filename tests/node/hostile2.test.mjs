@@ -126,3 +126,9 @@ test('an exception that unwinds through the module restarts it; the same excepti
   assert.throws(() => e.call('classifyStrokes', [[], {}]), /no strokes/);
   assert.equal(e.restarts, 1, 'an error the module returns is not an unwinding');
 });
+
+test('a whole-number option beyond its range says the range', () => {
+  const svg = '<svg xmlns="http://www.w3.org/2000/svg"><rect width="5" height="5"/></svg>';
+  assert.throws(() => ps.parseSvg(svg, { maxPoints: 2 ** 53 - 1 }), /option `maxPoints`: invalid value: integer `9007199254740991`, expected a whole number from 0 to 4294967295\./);
+  assert.throws(() => ps.synthesizeStrokes(NORMAL, { width: 10, height: 10, seed: -1 }), /option `seed`: .*expected a whole number from 0 to 9007199254740991\./);
+});
