@@ -65,6 +65,31 @@ fn main() {
             );
         }
     }
+    // Repetitions that are not lattices (issue 27): rings, a spiral, leaves on an arc,
+    // turning hatching; a ghost matches within 0.3 of the step.
+    println!("\n| sequence | strokes | by hand | accepted | accepted after 3 copies | shown | wrong | median ms | slowest ms (native) |");
+    println!("|---|---:|---:|---:|---:|---:|---:|---:|---:|");
+    let only_sequence = std::env::var("SEQUENCE").ok();
+    for q in patternsynth::vector::sequences::sequences(jitter, seed)
+        .into_iter()
+        .filter(|q| only_sequence.as_deref().is_none_or(|o| q.name.starts_with(o)))
+    {
+        let classes = vec![0; q.strokes.len()];
+        let r = replay(&q.strokes, &classes, q.canvas, 0.3 * q.step);
+        println!(
+            "| {} | {} | {} | {} | {:.1}% | {} | {} ({:.1}%) | {:.2} | {:.2} |",
+            q.name,
+            r.strokes,
+            r.by_hand,
+            r.accepted,
+            100.0 * r.accepted_after(3),
+            r.shown,
+            r.wrong,
+            100.0 * r.wrong_share(),
+            r.median_ms,
+            r.slowest_ms
+        );
+    }
     // Input with no repetition: every prefix of the drawing, nothing may be proposed.
     let quiet = |name: &str, strokes: &[patternsynth::vector::Stroke]| {
         let mut shown = 0;

@@ -172,3 +172,19 @@ fn a_shaky_hand_drawing_motifs_of_several_strokes_gets_whole_right_copies() {
         }
     }
 }
+
+/// Repetitions that are not lattices (issue 27, first part): rings of petals, a spiral
+/// and leaves along an arc drawn with a steady hand (wobble 1% of the step) are carried
+/// on by local similarity, each ghost a turn (and scale) of the last copy.
+#[test]
+fn rings_spirals_and_arcs_are_carried_on_by_their_turn() {
+    for q in patternsynth::vector::sequences::sequences(0.01, 1) {
+        if q.name.contains("hatching") {
+            continue; // not yet: a turn of under 2° a step reads as a row
+        }
+        let classes = vec![0; q.strokes.len()];
+        let r = replay(&q.strokes, &classes, q.canvas, 0.3 * q.step);
+        assert!(r.accepted_after(3) >= 0.8, "{}: {:.2} accepted after three copies", q.name, r.accepted_after(3));
+        assert_eq!(r.wrong, 0, "{}: {} wrong of {}", q.name, r.wrong, r.shown);
+    }
+}

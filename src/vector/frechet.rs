@@ -55,6 +55,14 @@ impl Shape {
     }
 }
 
+/// `pts` resampled to `count` points (at least 2) at equal arc-length steps, both ends
+/// kept; fewer for a path of no length.
+pub(crate) fn resample_count(pts: &[Point], count: usize) -> Vec<Point> {
+    let len: f64 = pts.windows(2).map(|w| w[0].distance(w[1])).sum();
+    // A hair over the exact step, so rounding never asks for one sample more.
+    resample(pts, len / (count.clamp(2, MAX_SAMPLES) - 1) as f64 * (1.0 + 1e-9))
+}
+
 /// Resamples a polyline at equal arc-length steps, keeping both ends.
 fn resample(pts: &[Point], spacing: f64) -> Vec<Point> {
     if pts.len() < 2 {

@@ -19,6 +19,8 @@ mod reference;
 pub mod regularity;
 #[cfg(feature = "test-support")]
 pub mod replay;
+#[cfg(feature = "test-support")]
+pub mod sequences;
 pub mod spatial;
 pub mod stroke;
 pub mod suggest;

@@ -36,9 +36,14 @@ impl Certainty {
     /// two and 7 with one: a row of three copies fits its periods almost exactly and
     /// says little of how far the next ones will stray.
     pub(super) fn reach(&self) -> f64 {
-        let n = self.copies.max(1.0);
-        (n * ((1.0 - SURE).powf(-1.0 / n) - 1.0)).sqrt()
+        reach(self.copies)
     }
+}
+
+/// `Certainty::reach` for a scatter estimated from `copies` copies (prior ones counted).
+pub(super) fn reach(copies: f64) -> f64 {
+    let n = copies.max(1.0);
+    (n * ((1.0 - SURE).powf(-1.0 / n) - 1.0)).sqrt()
 }
 
 impl Fit {

@@ -39,6 +39,7 @@ mod ahead;
 mod certainty;
 mod fit;
 mod lattice;
+mod sequence;
 
 use self::certainty::hand_scatter;
 use self::fit::Fit;
@@ -194,11 +195,19 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
         })
         .collect();
     let Ok(mut spread) = Spread::new(&elems) else {
-        return Ok(nothing("The strokes have no spacing to repeat."));
+        // (Petals drawn from one centre touch there: one motif, no spacing; they may
+        // still carry on one another.)
+        let count = if opts.fill { 64 } else { opts.count };
+        return Ok(sequence::propose(strokes, &accepted, count, region, skip)
+            .unwrap_or_else(|| nothing("The strokes have no spacing to repeat.")));
     };
     spread.spacing = spread.apart(&elems);
     let Some(mut fit) = Fit::find(&elems, &weight, &parts, &spread) else {
-        return Ok(nothing("The drawing shows no repetition yet."));
+        // No lattice: the latest strokes may still repeat one another by turns (a ring
+        // of petals, hatching that bends: see `sequence`).
+        let count = if opts.fill { 64 } else { opts.count };
+        return Ok(sequence::propose(strokes, &accepted, count, region, skip)
+            .unwrap_or_else(|| nothing("The drawing shows no repetition yet.")));
     };
     let prior = (HAND_TO_PLACEMENT * hand_scatter(strokes, &classification.classes, &accepted))
         .max((MIN_SCATTER * spread.spacing).powi(2));
@@ -287,6 +296,14 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
             out.confidence.push(fit.quality * FALLOFF.powi(steps as i32));
             out.sources.push(named.unwrap_or(s) + skip as u32);
             out.cells.push([cell.0, cell.1]);
+        }
+    }
+    if out.strokes.is_empty() && uncertain > 0 {
+        // A row that bends (hatching along a turning contour) fits a lattice too loosely
+        // to propose from: the latest strokes may still carry on one another.
+        let count = if opts.fill { 64 } else { opts.count };
+        if let Some(s) = sequence::propose(strokes, &accepted, count, region, skip) {
+            return Ok(s);
         }
     }
     if out.strokes.is_empty() {

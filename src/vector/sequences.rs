@@ -1,0 +1,127 @@
+//! Hand-drawn repetitions that are not lattices (test support, issue 27): rings of
+//! petals, spirals, leaves along an arc and hatching along a turning contour, each
+//! copy a similarity transform of the one before, drawn copy by copy with a wobble
+//! (each copy's place off by `wobble` of the step, its points by a fifth of that).
+
+use super::stroke::Stroke;
+use crate::rng::Rng;
+use kurbo::{Point, Vec2};
+use std::f64::consts::TAU;
+
+/// A drawn sequence: its strokes in drawing order, the step between copies, and the
+/// canvas: the copies' centres and half a step round them (a sequence drawn to the
+/// canvas's edge, as a lattice is in the lattice replay: a ghost past the last copy
+/// is one the person would not take).
+pub struct Sequence {
+    pub name: String,
+    pub strokes: Vec<Stroke>,
+    pub step: f64,
+    pub canvas: kurbo::Rect,
+}
+
+/// A loop `len` long and `len / 3` wide, from `at` along `theta` (a petal, a leaf).
+fn leaf(at: Point, theta: f64, len: f64, rng: &mut Rng, noise: f64) -> Stroke {
+    let (c, s) = (theta.cos(), theta.sin());
+    let pts = (0..=24)
+        .map(|k| {
+            let t = k as f64 / 24.0 * TAU;
+            let (along, across) = (0.5 * len * (1.0 - t.cos()), len / 6.0 * t.sin());
+            let (dx, dy) = (rng.normal() * noise, rng.normal() * noise);
+            [at.x + along * c - across * s + dx, at.y + along * s + across * c + dy]
+        })
+        .collect();
+    Stroke::new(pts, 2.0, None)
+}
+
+/// A straight line `len` long through `at` along `theta`.
+fn line(at: Point, theta: f64, len: f64, rng: &mut Rng, noise: f64) -> Stroke {
+    let d = Vec2::new(theta.cos(), theta.sin()) * (0.5 * len);
+    let pts = (0..=12)
+        .map(|k| {
+            let p = at - d + d * (2.0 * k as f64 / 12.0);
+            [p.x + rng.normal() * noise, p.y + rng.normal() * noise]
+        })
+        .collect();
+    Stroke::new(pts, 2.0, None)
+}
+
+/// Every family at `wobble` (share of the step), seeded.
+pub fn sequences(wobble: f64, seed: u64) -> Vec<Sequence> {
+    let mut out = Vec::new();
+    let centre = Point::new(300.0, 300.0);
+    let canvas = kurbo::Rect::new(0.0, 0.0, 600.0, 600.0);
+    // Rings of n petals around a centre: the step is the distance between neighbours'
+    // centres.
+    for n in [5usize, 8, 12] {
+        let mut rng = Rng::new(seed * 131 + n as u64);
+        let len = 90.0;
+        let step = 2.0 * (0.5 * len) * (std::f64::consts::PI / n as f64).sin();
+        let strokes = (0..n)
+            .map(|k| {
+                let theta = k as f64 * TAU / n as f64 + rng.normal() * wobble * step / (0.5 * len);
+                let at = centre + Vec2::new(rng.normal(), rng.normal()) * (wobble * step);
+                leaf(at, theta, len, &mut rng, 0.2 * wobble * step)
+            })
+            .collect();
+        out.push(Sequence { name: format!("ring of {n}"), strokes, step, canvas });
+    }
+    // A spiral: petals turning by 30° and growing by 6% a step, out from the centre.
+    {
+        let mut rng = Rng::new(seed * 131 + 99);
+        let strokes: Vec<Stroke> = (0..10)
+            .map(|k| {
+                let r = 120.0 * 1.06f64.powi(k);
+                let theta = k as f64 * TAU / 12.0;
+                let at = centre + Vec2::new(theta.cos(), theta.sin()) * r;
+                let jitter = Vec2::new(rng.normal(), rng.normal()) * (wobble * 0.5 * r * (TAU / 12.0));
+                leaf(at + jitter, theta + 1.2, 0.35 * r, &mut rng, 0.2 * wobble * 0.5 * r * (TAU / 12.0))
+            })
+            .collect();
+        // (The step shrinks: the tolerance is read at the middle of the spiral.)
+        out.push(Sequence { name: "spiral".into(), strokes, step: 120.0 * 1.06f64.powi(5) * TAU / 12.0, canvas });
+    }
+    // Leaves along an arc of radius 260, one every 14°, each turned with the arc.
+    {
+        let mut rng = Rng::new(seed * 131 + 7);
+        let (r, d) = (260.0, 14f64.to_radians());
+        let step = r * d;
+        let strokes: Vec<Stroke> = (0..10)
+            .map(|k| {
+                let phi = -1.2 + k as f64 * d;
+                let at = Point::new(300.0, 560.0) + Vec2::new(phi.sin(), -phi.cos()) * r;
+                let jitter = Vec2::new(rng.normal(), rng.normal()) * (wobble * step);
+                leaf(at + jitter, phi - 0.6, 45.0, &mut rng, 0.2 * wobble * step)
+            })
+            .collect();
+        out.push(Sequence { name: "leaves on an arc".into(), strokes, step, canvas });
+    }
+    // Hatching across a contour that turns: lines 70 long, 12 apart along an arc of
+    // radius 400, each across the arc.
+    {
+        let mut rng = Rng::new(seed * 131 + 11);
+        let (r, step) = (400.0, 12.0);
+        let strokes: Vec<Stroke> = (0..16)
+            .map(|k| {
+                let phi = -0.25 + k as f64 * step / r;
+                let at = Point::new(300.0, 480.0) + Vec2::new(phi.sin(), -phi.cos()) * r * 0.6;
+                let jitter = Vec2::new(rng.normal(), rng.normal()) * (wobble * step);
+                line(
+                    at + jitter,
+                    phi + std::f64::consts::FRAC_PI_2 + rng.normal() * wobble * 0.1,
+                    70.0,
+                    &mut rng,
+                    0.2 * wobble * step,
+                )
+            })
+            .collect();
+        out.push(Sequence { name: "turning hatching".into(), strokes, step: step * 0.6, canvas });
+    }
+    for q in &mut out {
+        let c: Vec<Point> = q.strokes.iter().map(Stroke::reference_point).collect();
+        q.canvas = c
+            .iter()
+            .fold(kurbo::Rect::from_points(c[0], c[0]), |r, &p| r.union_pt(p))
+            .inflate(0.5 * q.step, 0.5 * q.step);
+    }
+    out
+}
