@@ -302,7 +302,7 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
         // A row that bends (hatching along a turning contour) fits a lattice too loosely
         // to propose from: the latest strokes may still carry on one another.
         let count = if opts.fill { 64 } else { opts.count };
-        if let Some(s) = sequence::propose(strokes, &accepted, count, region, skip) {
+        if let Some(s) = sequence::propose(strokes, &accepted, count, region, skip).filter(|s| !s.strokes.is_empty()) {
             return Ok(s);
         }
     }

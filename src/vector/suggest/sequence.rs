@@ -98,8 +98,9 @@ fn relate(from: &[Point], to: &[Point], size: f64) -> Option<(Similarity, f64)> 
     (rms <= SHAPE * size && (1.0 / MAX_SCALE..=MAX_SCALE).contains(&scale)).then_some((t, rms / size))
 }
 
-/// Proposals continuing the sequence that ends with the latest of `strokes`, or `None`
-/// when the latest strokes make none. The steps are read from hand-drawn copies only
+/// Proposals continuing the sequence that ends with the latest of `strokes` (none, with
+/// the reason, when it is complete or too uncertain to go on), or `None` when the
+/// latest strokes make no sequence. The steps are read from hand-drawn copies only
 /// (`accepted` marks the proposals taken, which repeat the step they were proposed
 /// with and say nothing of its error); copies accepted after the latest hand-drawn one
 /// count as steps already taken. `offset` is added to the source indices.
@@ -186,8 +187,10 @@ pub(super) fn propose(
     let latest = n - 1;
     let mut from: Vec<Point> = strokes[latest].points.iter().map(|&[x, y]| Point::new(x, y)).collect();
     let mut scale = 1.0;
+    let mut why = "The sequence is complete here: its next copy would fall on a drawn one or off the canvas.";
     for k in 1..=count {
         if reach * miss_at(taken + k) > tol {
+            why = "The copies drawn so far leave the next ones too uncertain: draw one more.";
             break;
         }
         from = from.iter().map(|&p| t.apply(p)).collect();
@@ -207,7 +210,11 @@ pub(super) fn propose(
         out.sources.push((latest + offset) as u32);
         out.cells.push([k as i64, 0]);
     }
-    (!out.strokes.is_empty()).then_some(out)
+    // (Found, with nothing to add: said, so the page does not read "no repetition".)
+    if out.strokes.is_empty() {
+        out.reason = Some(why.into());
+    }
+    Some(out)
 }
 
 #[cfg(test)]
@@ -242,6 +249,9 @@ mod tests {
         let seven: Vec<Stroke> = (0..7).map(|k| petal(c, k as f64 * step, 60.0)).collect();
         let s = propose(&seven, &[], 8, None, 0).expect("the last petal");
         assert_eq!(s.strokes.len(), 1);
+        let eight: Vec<Stroke> = (0..8).map(|k| petal(c, k as f64 * step, 60.0)).collect();
+        let s = propose(&eight, &[], 8, None, 0).expect("a ring, complete");
+        assert!(s.strokes.is_empty() && s.reason.as_deref().is_some_and(|r| r.contains("complete")), "{s:?}");
     }
 
     #[test]

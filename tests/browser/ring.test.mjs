@@ -1,0 +1,61 @@
+// Petals drawn around a centre with the mouse (issue 27): after three, ghosts complete
+// the ring at the same turn; Tab accepts them; undo takes them back. Screenshots:
+// out/ring-ghosts.png, out/ring-accepted.png.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { mkdirSync } from 'node:fs';
+import { openPlayground } from './harness.mjs';
+
+test('three petals drawn around a centre: ghosts complete the ring, Tab accepts, undo takes them back', async () => {
+  mkdirSync('out', { recursive: true });
+  const { page, close } = await openPlayground({ height: 1000 });
+  try {
+    await page.waitForFunction(() => /[1-9]\d* strokes/.test(document.querySelector('#stroke-count').textContent));
+    await page.click('#clear');
+    const box = await page.locator('#draw').boundingBox();
+    const at = (x, y) => [box.x + (x * box.width) / 800, box.y + (y * box.height) / 500];
+    const settled = () => page.waitForFunction(() => document.querySelector('#suggest-status').getAttribute('aria-busy') === 'false', null, { timeout: 15000 });
+    const count = async () => Number((await page.textContent('#stroke-count')).split(' ')[0]);
+    // A petal: a loop 110 long from the centre (400, 250) along `theta`, by hand.
+    const petal = async (theta, wobble) => {
+      const pts = [];
+      for (let k = 0; k <= 28; k++) {
+        const t = (k / 28) * 2 * Math.PI;
+        const along = 55 * (1 - Math.cos(t)), across = 18 * Math.sin(t) + (k % 3 - 1) * wobble;
+        pts.push([400 + along * Math.cos(theta) - across * Math.sin(theta), 250 + along * Math.sin(theta) + across * Math.cos(theta)]);
+      }
+      await page.mouse.move(...at(...pts[0]));
+      await page.mouse.down();
+      for (const p of pts.slice(1)) await page.mouse.move(...at(...p), { steps: 2 });
+      await page.mouse.up();
+    };
+    const step = (2 * Math.PI) / 8;
+    for (let k = 0; k < 3; k++) await petal(k * step, 0.6);
+    await settled();
+    const status = await page.textContent('#suggest-status');
+    assert.match(status, /^[1-9]\d* suggested stroke/, status);
+    await page.screenshot({ path: 'out/ring-ghosts.png' });
+    // Tab (the hand is on the canvas after drawing) accepts; then Enter on the canvas,
+    // until the ring closes.
+    let before = await count();
+    for (const key of ['Tab', 'Enter', 'Enter', 'Enter']) {
+      await page.keyboard.press(key);
+      await page.waitForFunction((n) => Number(document.querySelector('#stroke-count').textContent.split(' ')[0]) > n, before);
+      before = await count();
+      await settled();
+      if (!/suggested stroke/.test(await page.textContent('#suggest-status'))) break;
+    }
+    assert.equal(await count(), 8, 'the ring of eight is complete');
+    await page.screenshot({ path: 'out/ring-accepted.png' });
+    // The eight petals lie on the ring: each centre about 55 units from (400, 250).
+    const centres = await page.evaluate(() => window.playground.drawing().strokes.map((s) => {
+      const xs = s.points.map((p) => p[0]), ys = s.points.map((p) => p[1]);
+      return [(Math.min(...xs) + Math.max(...xs)) / 2, (Math.min(...ys) + Math.max(...ys)) / 2];
+    }));
+    for (const [x, y] of centres) assert.ok(Math.abs(Math.hypot(x - 400, y - 250) - 55) < 8, `${x}, ${y}`);
+    await page.click('#undo');
+    assert.ok((await count()) < 8, 'undo takes the accepted petals back');
+  } finally {
+    await close();
+  }
+});
