@@ -92,8 +92,15 @@ fn relate(from: &[Point], to: &[Point], size: f64) -> Option<(Similarity, f64)> 
         return None;
     }
     let reversed: Vec<Point> = to.iter().rev().copied().collect();
-    let (t, rms) =
-        [Similarity::fit(from, to), Similarity::fit(from, &reversed)].into_iter().min_by(|x, y| x.1.total_cmp(&y.1))?;
+    let fits = [Similarity::fit(from, to), Similarity::fit(from, &reversed)];
+    // A shape that looks the same either way round (a line, an ellipse) fits both: the
+    // smaller turn is the step (a line's next copy is not the line turned half round).
+    let best = fits[0].1.min(fits[1].1);
+    let turn = |t: &Similarity| (t.a - Vec2::new(1.0, 0.0)).hypot();
+    let (t, rms) = fits
+        .into_iter()
+        .filter(|f| f.1 <= (1.5 * best).max(0.02 * size))
+        .min_by(|x, y| turn(&x.0).total_cmp(&turn(&y.0)))?;
     let scale = t.a.hypot();
     (rms <= SHAPE * size && (1.0 / MAX_SCALE..=MAX_SCALE).contains(&scale)).then_some((t, rms / size))
 }
@@ -132,8 +139,9 @@ pub(super) fn propose(
     let (two, _) = same(second, last)?;
     let centre = |i: usize| strokes[i].reference_point();
     let step = centre(second).distance(centre(last));
-    // Copies a step apart, not one drawn over another.
-    if step <= 0.1 * size(last).max(2.0 * strokes[last].width) {
+    // Copies a step apart, not one drawn over another (hatching lies a tenth of its
+    // length apart, or closer).
+    if step <= (0.02 * size(last)).max(3.0 * strokes[last].width) {
         return None;
     }
     if (two.a - one.a).hypot() > TURN * one.a.hypot() {
