@@ -106,6 +106,9 @@ test('a phone: targets of at least 24 px, a tap is not a stroke, hints without k
   const { page } = await open({ width: 390, height: 844, touch: true });
   for (const tab of TABS) {
     await page.click(`[data-tab="${tab}"]`);
+    // Controls shown only in some states, shown: a layout set by hand, a tile of any size.
+    if (tab === 'strokes') await page.selectOption('#repeat-type', 'oblique');
+    if (tab === 'seamless') await page.selectOption('#seam-size', 'custom');
     const small = await page.evaluate(() => [...document.querySelectorAll('button, a.button, input:not([type=hidden]), select, [role=tab]')]
       .filter((e) => e.offsetParent !== null && !e.hidden)
       .map((e) => ({ e, r: e.getBoundingClientRect() }))
@@ -115,6 +118,25 @@ test('a phone: targets of at least 24 px, a tap is not a stroke, hints without k
     await page.screenshot({ path: `out/a11y-phone-${tab}.png`, fullPage: true });
   }
   await page.click('[data-tab="strokes"]');
+  // The lattice's handles on the shrunk canvas: a finger 10 px from the tip still takes
+  // it (24 px target), and the drag draws nothing.
+  const box0 = await page.locator('#draw').boundingBox();
+  const k = box0.width / 800;
+  const [across] = await page.$$eval('#period-across', (i) => i.map((e) => Number(e.value)));
+  const origin = await page.evaluate(() => window.playground.latticeOrigin());
+  const tip = [box0.x + (origin[0] + across) * k + 10, box0.y + origin[1] * k];
+  const client = await page.context().newCDPSession(page);
+  const touch = (type, [x, y]) => client.send('Input.dispatchTouchEvent', { type, touchPoints: type === 'touchEnd' ? [] : [{ x, y }] });
+  const strokesBefore = await strokeCount(page);
+  await touch('touchStart', tip);
+  await touch('touchMove', [tip[0] + 20, tip[1]]);
+  await touch('touchMove', [tip[0] + 40, tip[1]]);
+  await touch('touchEnd', tip);
+  await page.waitForTimeout(100);
+  const dragged = Number(await page.inputValue('#period-across'));
+  assert.ok(dragged > across + 20, `the handle followed the finger: ${across} -> ${dragged}`);
+  assert.equal(await strokeCount(page), strokesBefore, 'dragging a handle drew nothing');
+  await page.selectOption('#repeat-type', 'auto');
   const before = await strokeCount(page);
   const box = await page.locator('#draw').boundingBox();
   await page.touchscreen.tap(box.x + box.width * 0.9, box.y + box.height * 0.9);

@@ -8,13 +8,14 @@ const MAX_ZOOM = 16;
 const STEP = 1.5;
 
 /** Makes `view` (its first child is the picture) zoomable; `controls`: the zoom in,
- *  zoom out and fit buttons and an output for the level. */
-export function zoomable(view, { zoomIn, zoomOut, fit, level, onSettle }) {
+ *  zoom out and fit buttons and an output for the level; `shown()`: whether there is a
+ *  picture yet (a blank canvas is none). */
+export function zoomable(view, { zoomIn, zoomOut, fit, level, onSettle, shown = () => true }) {
   let s = 1, x = 0, y = 0;
   // Once the zoom stops changing, the owner may draw the picture again at that scale
   // (sharp instead of a bitmap stretched).
   let settled = 1, timer = 0;
-  const content = () => view.firstElementChild;
+  const content = () => (shown() ? view.firstElementChild : null);
   const clamp = () => {
     const w = view.clientWidth, h = view.clientHeight;
     x = Math.min(0, Math.max(w - w * s, x));

@@ -252,7 +252,6 @@ export function mountBlend(root, client) {
       }
       const ms = performance.now() - t0;
       const canvas = $('blend-result');
-      zoom.reset();
       canvas.width = out.width;
       canvas.height = out.height;
       canvas.getContext('2d').putImageData(new ImageData(new Uint8ClampedArray(out.data), out.width, out.height), 0, 0);
@@ -260,6 +259,7 @@ export function mountBlend(root, client) {
       if (resultUrl) URL.revokeObjectURL(resultUrl);
       resultUrl = URL.createObjectURL(blob);
       offerDownload($('blend-download'), resultUrl);
+      zoom.reset(); // (after the picture is there: it enables the zoom)
       $('blend-download').download = `${single ? 'texture' : 'blend'}-${out.width}x${out.height}.png`;
       $('blend-info').textContent = `${out.width}×${out.height}, ${single ? 'single exemplar' : settings.transition}, ${ms.toFixed(0)} ms${recurrence(out, single ? [slots.a.image] : [slots.a.image, slots.b.image])}`;
       say('Done.');
@@ -269,6 +269,7 @@ export function mountBlend(root, client) {
   // The texture zooms (pixels shown as they are) and pans like the vector result.
   const zoom = zoomable($('blend-view'), {
     zoomIn: $('blend-zoom-in'), zoomOut: $('blend-zoom-out'), fit: $('blend-zoom-fit'), level: $('blend-zoom-level'),
+    shown: () => $('blend-download').getAttribute('aria-disabled') !== 'true',
   });
 
   // --- start ---

@@ -88,6 +88,7 @@ export function mountSeamless(root, client) {
   // The tile repeated zooms (pixels shown as they are) and pans, to look at its seams.
   const zoom = zoomable($('seam-view'), {
     zoomIn: $('seam-zoom-in'), zoomOut: $('seam-zoom-out'), fit: $('seam-zoom-fit'), level: $('seam-zoom-level'),
+    shown: () => $('seam-repeat').classList.contains('shown'),
   });
 
   // --- run ---
@@ -120,8 +121,8 @@ export function mountSeamless(root, client) {
       // Whole pixels when the column has room, scaled down to fit it when it has not.
       const fit = Math.min(512, $('seam-view').parentElement.clientWidth - 16) / (3 * width);
       const scale = fit >= 1 ? Math.floor(fit) : fit;
-      zoom.reset();
       tile.show({ url: resultUrl, file: `seamless-${settings.method}-${width}x${height}.png`, width, height, scale });
+      zoom.reset(); // (after the tile is shown: it enables the zoom)
       $('seam-info').textContent = `${width}×${height}, restoration rate ${(100 * r.restorationRate).toFixed(1)}%, seam score ${r.seamScore.toFixed(2)} (about 1: no seam), ${ms.toFixed(0)} ms`;
       say(r.warnings.length ? r.warnings.join(' ') : 'Done.', r.warnings.length ? 'warn' : '');
     });

@@ -155,13 +155,21 @@ export class Drawing {
     return [(b.x0 + b.x1) / 2, (b.y0 + b.y1) / 2];
   }
 
-  /** The lattice handle ('a' or 'b') under `p`: 12 px round its tip (a 24 px target). */
+  /** Canvas units per CSS pixel (the canvas is shrunk to fit a phone's width). */
+  unitsPerPixel() {
+    const w = this.canvas.getBoundingClientRect().width;
+    return w > 0 ? this.logical.w / w : 1;
+  }
+
+  /** The lattice handle ('a' or 'b') under `p`: 12 CSS px round its tip (a 24 px
+   *  target, at any size the canvas is shown at). */
   onHandle([x, y]) {
     if (!this.lattice) return null;
     const [ox, oy] = this.latticeOrigin();
+    const reach = 12 * Math.max(1, this.unitsPerPixel());
     for (const k of ['a', 'b']) {
       const [vx, vy] = this.lattice[k];
-      if (Math.hypot(x - ox - vx, y - oy - vy) <= 12) return k;
+      if (Math.hypot(x - ox - vx, y - oy - vy) <= reach) return k;
     }
     return null;
   }
@@ -196,7 +204,7 @@ export class Drawing {
       ctx.lineTo(ox + vx, oy + vy);
       ctx.stroke();
       ctx.beginPath();
-      ctx.arc(ox + vx, oy + vy, 7, 0, 2 * Math.PI);
+      ctx.arc(ox + vx, oy + vy, 7 * Math.max(1, this.unitsPerPixel()), 0, 2 * Math.PI);
       ctx.fill();
     }
     ctx.restore();

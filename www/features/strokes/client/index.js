@@ -87,7 +87,7 @@ export function mountStrokes(root, client) {
   });
   addEventListener('pagehide', () => kept.flush());
   document.addEventListener('visibilitychange', () => { if (document.hidden) kept.flush(); });
-  window.playground = { ...window.playground, drawing: () => drawing.session };
+  window.playground = { ...window.playground, drawing: () => drawing.session, latticeOrigin: () => drawing.latticeOrigin() };
   const drawing = new Drawing(canvas, {
     getPen: () => ({ width: Number(penWidth.value), stroke: settings.stroke, strokeOn: settings.strokeOn, fill: settings.fill, fillOn: settings.fillOn }),
     onChange: (strokes) => {
