@@ -10,6 +10,7 @@ echo "== cargo fmt / clippy"
 cargo fmt --check
 cargo clippy --all-targets -- -D warnings
 cargo clippy --target wasm32-unknown-unknown --lib -- -D warnings
+RUSTFLAGS='-C target-feature=+simd128' CARGO_TARGET_DIR=target/simd cargo clippy --target wasm32-unknown-unknown --lib -- -D warnings
 
 echo "== native engine tests"
 cargo test --release

@@ -4,8 +4,14 @@
 // encodePng in a browser (Node loads them at import).
 import * as glue from './wasm/full.js';
 import { engine } from './instance.js';
+import { simd } from './simd.js';
 
-const full = engine(glue, new URL('./wasm/full_bg.wasm', import.meta.url), 'patternsynth');
+// The SIMD build where the engine runs it, else the scalar one (the same glue).
+const full = engine(
+  glue,
+  simd ? new URL('./wasm/full_bg.wasm', import.meta.url) : new URL('./wasm/full_scalar_bg.wasm', import.meta.url),
+  'patternsynth',
+);
 
 export default full.init;
 export const initSync = full.initSync;

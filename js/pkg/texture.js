@@ -3,8 +3,14 @@
 // decode files with the browser (createImageBitmap) or patternsynth/codec.
 import * as glue from './wasm/texture.js';
 import { engine } from './instance.js';
+import { simd } from './simd.js';
 
-const texture = engine(glue, new URL('./wasm/texture_bg.wasm', import.meta.url), 'patternsynth/texture');
+// The SIMD build where the engine runs it, else the scalar one (the same glue).
+const texture = engine(
+  glue,
+  simd ? new URL('./wasm/texture_bg.wasm', import.meta.url) : new URL('./wasm/texture_scalar_bg.wasm', import.meta.url),
+  'patternsynth/texture',
+);
 
 export default texture.init;
 export const initSync = texture.initSync;

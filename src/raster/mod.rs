@@ -8,6 +8,8 @@ pub mod codec;
 #[cfg(feature = "texture")]
 pub mod coefficient;
 #[cfg(feature = "texture")]
+pub(crate) mod divisor;
+#[cfg(feature = "texture")]
 pub mod energy;
 pub mod image;
 #[cfg(feature = "texture")]

@@ -122,7 +122,7 @@ pub fn view<T: JsCast>(v: &JsValue) -> Option<&T> {
 
 /// `v` as an ArrayBuffer when it is one: its `byteLength` getter, run on `v` itself,
 /// throws (caught) for a Proxy of one or anything else that only inherits from it.
-#[cfg(any(feature = "texture", feature = "codec"))]
+#[cfg(feature = "codec")]
 pub fn buffer(v: &JsValue) -> Option<js_sys::ArrayBuffer> {
     if !v.is_instance_of::<js_sys::ArrayBuffer>() {
         return None;

@@ -97,8 +97,8 @@ test('esbuild bundle: the package files served beside it, the worker passed by U
   execFileSync(bin('esbuild'), [join(work, 'site/main.js'), '--bundle', '--format=esm', `--outfile=${join(out, 'main.js')}`, '--log-level=warning']);
   // Exactly the files the package README's copy command copies.
   const from = join(work, 'site/node_modules/patternsynth');
-  for (const f of ['worker.js', 'vector.js', 'texture.js', 'codec.js', 'api.js', 'render.js', 'restyle.js', 'instance.js', 'flat.js',
-    ...['vector', 'texture', 'codec'].flatMap((m) => [`wasm/${m}.js`, `wasm/${m}_bg.wasm`])]) {
+  for (const f of ['worker.js', 'vector.js', 'texture.js', 'codec.js', 'api.js', 'render.js', 'restyle.js', 'instance.js', 'flat.js', 'simd.js',
+    ...['vector', 'texture', 'codec'].flatMap((m) => [`wasm/${m}.js`, `wasm/${m}_bg.wasm`]), 'wasm/texture_scalar_bg.wasm']) {
     mkdirSync(join(out, 'patternsynth/wasm'), { recursive: true });
     cpSync(join(from, f), join(out, 'patternsynth', f));
   }

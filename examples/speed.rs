@@ -1,0 +1,35 @@
+//! Native side of the speed benchmark (`bench/speed.mjs`): median milliseconds of
+//! `synthesize_texture` from a 128 x 128 crop of a fixture photograph to SIDE x SIDE,
+//! one thread, as one JSON line per size. `cargo run --release --example speed -- 256 1024`
+//! (`RUNS=n` runs per size, 5 by default; `FIXTURE=name`, gravel by default).
+use patternsynth::raster::codec::decode_image;
+use patternsynth::raster::{synthesize_texture, Image, TextureOptions};
+use patternsynth::Silent;
+use std::time::Instant;
+
+fn main() {
+    let fixture = std::env::var("FIXTURE").unwrap_or_else(|_| "gravel".into());
+    let runs: usize = std::env::var("RUNS").ok().and_then(|s| s.parse().ok()).unwrap_or(5);
+    let rgba = decode_image(&std::fs::read(format!("tests/fixtures/textures/{fixture}.png")).unwrap()).unwrap();
+    let full = Image::from_rgba8(rgba.width, rgba.height, &rgba.data).unwrap();
+    let side = 128.min(full.width).min(full.height);
+    let mut ex = Image::new(side, side);
+    for y in 0..side {
+        for x in 0..side {
+            ex.data[y * side + x] = full.at(x, y);
+        }
+    }
+    for arg in std::env::args().skip(1) {
+        let out: usize = arg.parse().expect("sizes in pixels");
+        let opts = TextureOptions { width: out, height: out, seed: 1, ..Default::default() };
+        let mut ms: Vec<f64> = (0..runs)
+            .map(|_| {
+                let t = Instant::now();
+                std::hint::black_box(synthesize_texture(&ex, &opts, &mut Silent).unwrap());
+                t.elapsed().as_secs_f64() * 1e3
+            })
+            .collect();
+        ms.sort_by(f64::total_cmp);
+        println!("{{\"fixture\":\"{fixture}\",\"side\":{out},\"runs\":{runs},\"ms\":{:.1}}}", ms[runs / 2]);
+    }
+}
