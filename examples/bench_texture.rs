@@ -144,7 +144,7 @@ fn main() {
         return;
     }
     if args.get(1).map(String::as_str) == Some("--memory") {
-        for side in [256, 512, 1024] {
+        for side in [256, 512, 1024, 2048, 4096] {
             memory_case("single wood", &["wood"], side);
             memory_case("blend wood-gravel", &["wood", "gravel"], side);
         }

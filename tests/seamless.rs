@@ -173,8 +173,8 @@ fn synthesis_tiles_take_any_width_and_height() {
     assert!(err(SeamlessOptions { method: Method::Etfmcm, ..o.clone() })
         .contains("method 'synthesis' for a tile of any width"));
     assert!(err(SeamlessOptions { size: Some(64), ..o.clone() }).contains("not both"));
-    assert!(err(SeamlessOptions { width: Some(5000), ..o.clone() }).contains("width must be from 8 to 2048"));
-    assert!(err(SeamlessOptions { height: Some(4), ..o }).contains("height must be from 8 to 2048"));
+    assert!(err(SeamlessOptions { width: Some(5000), ..o.clone() }).contains("width must be from 8 to 4096"));
+    assert!(err(SeamlessOptions { height: Some(4), ..o }).contains("height must be from 8 to 4096"));
 }
 
 #[test]

@@ -118,7 +118,7 @@ export interface SeamlessOptions {
   method?: 'etfmcm' | 'tfmcm' | 'synthesis';
   /** Tile side, a power of two from 8 to 512 (default: the largest the image allows). */
   size?: number; seed?: number;
-  /** Method 'synthesis' only, in place of `size`: any width and height from 8 to 2048
+  /** Method 'synthesis' only, in place of `size`: any width and height from 8 to 4096
    *  (one alone: a square). */
   width?: number; height?: number;
   /** T0 of the density conversion (default 50). */

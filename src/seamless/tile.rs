@@ -75,7 +75,7 @@ pub struct SeamlessResult {
 pub const MAX_TILE: usize = 512;
 /// Largest side of a tile made by toroidal synthesis with `width` and `height` (its
 /// exemplar is at most `MAX_TILE` on a side; the output's cost is linear in its pixels).
-pub const MAX_SYNTHESIS_TILE: usize = 2048;
+pub const MAX_SYNTHESIS_TILE: usize = 4096;
 const MIN_TILE: usize = 8;
 
 /// A seamless tile from `input` (RGBA).

@@ -104,6 +104,42 @@ test('painting on the coefficient switches to a mask, and single-exemplar mode r
   await page.check('input[name="blend-mode"][value="blend"]');
 });
 
+test('a 4096 x 4096 texture: progress throughout, cancel, then made in the workers and downloaded at that size', async () => {
+  await page.check('input[name="blend-mode"][value="single"]');
+  await page.fill('#blend-width', '4096');
+  await page.fill('#blend-height', '4096');
+  // The progress bar's values as the page shows them, one per frame.
+  const watch = () => page.evaluate(() => {
+    window.seen = [];
+    const bar = document.querySelector('#blend-progress');
+    const look = () => { window.seen.push(bar.value); if (window.seen.length < 100000) requestAnimationFrame(look); };
+    look();
+  });
+  await watch();
+  await page.click('#blend-run');
+  await page.waitForFunction(() => document.querySelector('#blend-progress').value > 0.05, null, { timeout: 120000 });
+  await page.click('#blend-cancel');
+  await page.waitForFunction(() => document.querySelector('#blend-messages').textContent === 'Cancelled.');
+  await watch();
+  await page.click('#blend-run');
+  await page.waitForFunction(() => document.querySelector('#blend-messages').textContent === 'Done.', null, { timeout: 240000 });
+  assert.match(await page.textContent('#blend-info'), /^4096×4096, single exemplar, \d+ ms/);
+  const seen = await page.evaluate(() => window.seen);
+  const steps = new Set(seen.filter((v) => v > 0 && v < 1).map((v) => v.toFixed(2)));
+  assert.ok(steps.size >= 20, `the progress bar moved through ${steps.size} values`);
+  const [download] = await Promise.all([page.waitForEvent('download'), page.click('#blend-download')]);
+  const out = decodeImage(readFileSync(await download.path()));
+  assert.equal(out.width, 4096);
+  assert.equal(out.height, 4096);
+  // Not one colour: the texture's spread of grey levels spans most of the exemplar's.
+  let lo = 255, hi = 0;
+  for (let i = 0; i < out.data.length; i += 4 * 997) { lo = Math.min(lo, out.data[i]); hi = Math.max(hi, out.data[i]); }
+  assert.ok(hi - lo > 60, `red from ${lo} to ${hi}`);
+  await page.fill('#blend-width', '128');
+  await page.fill('#blend-height', '128');
+  await page.check('input[name="blend-mode"][value="blend"]');
+});
+
 test('a 2048 x 2048 photograph is scaled to the cap with a message, and a blend from it runs', async () => {
   // Smooth noise (a photograph's scale of detail), encoded by the package itself.
   const side = 2048;

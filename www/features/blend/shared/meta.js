@@ -22,7 +22,7 @@ export const textures = ['wood', 'brick', 'grass', 'gravel', 'fur', 'hubble', 't
 /** Exemplars larger than this are scaled down (uniformly, with a message). */
 export const maxExemplarSide = 512;
 
-export const maxOutputSide = 2048;
+export const maxOutputSide = 4096;
 
 export const storageKey = 'patternsynth.blend.settings.v1';
 export const maskKey = 'patternsynth.blend.mask.v1';
