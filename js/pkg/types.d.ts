@@ -123,6 +123,10 @@ export interface SeamlessOptions {
   width?: number; height?: number;
   /** T0 of the density conversion (default 50). */
   maxCountDifference?: number;
+  /** E-TFMCM and TFMCM: refine the co-occurrence tile by toroidal synthesis, which keeps
+   *  its layout and re-makes its detail from the image (default true); false gives the
+   *  paper's tile as it is. */
+  refine?: boolean;
 }
 export interface SeamlessResult {
   image: RgbaImage;

@@ -53,7 +53,7 @@ enum Kind {
 
 fn kind(job: &Job, level: usize, pass: usize) -> Kind {
     match pass {
-        0 if job.quilted(level) => Kind::Correction { reverse: false },
+        0 if job.started(level) => Kind::Correction { reverse: false },
         0 => Kind::Causal,
         p if job.params.tileable && p == passes(job) - 1 => Kind::Wrap,
         p => Kind::Correction { reverse: p % 2 == 1 },
@@ -109,7 +109,7 @@ fn stream(seed: u64, level: usize, pass: usize, band: usize) -> Rng {
 /// The `pass` number of the coarsest level's noise streams.
 const NOISE: usize = 255;
 
-/// The state a level starts from: a quilt (`Job::quilted`) or noise at the coarsest
+/// The state a level starts from: a quilt (`Job::started`) or noise at the coarsest
 /// level, otherwise the parent's sources upsampled (the child position under each pixel,
 /// clamped to the exemplar).
 pub fn initial(job: &Job, level: usize, parent: &[Vec<u32>]) -> Vec<Vec<u32>> {
@@ -128,8 +128,8 @@ pub fn initial(job: &Job, level: usize, parent: &[Vec<u32>]) -> Vec<Vec<u32>> {
 /// once per job).
 fn initial_row(job: &Job, level: usize, parent: &[Vec<u32>], e: usize, y: usize, out: &mut Vec<u32>) {
     let lw = job.sizes[level].0;
-    if job.quilted(level) {
-        out.extend_from_slice(&job.quilts()[e][y * lw..(y + 1) * lw]);
+    if job.started(level) {
+        out.extend_from_slice(&job.starts()[e][y * lw..(y + 1) * lw]);
         return;
     }
     if level + 1 == job.levels {

@@ -21,6 +21,10 @@ pub struct TextureOptions {
     pub levels: Option<usize>,
     pub neighbourhood: usize,
     pub schedule: Schedule,
+    /// A picture of the output's size whose layout the synthesis starts from (the
+    /// seamless tile's refined E-TFMCM; not an option of the JS API).
+    #[serde(skip)]
+    pub start: Option<Image>,
 }
 
 impl Default for TextureOptions {
@@ -35,6 +39,7 @@ impl Default for TextureOptions {
             levels: None,
             neighbourhood: p.neighbourhood,
             schedule: p.schedule,
+            start: None,
         }
     }
 }
@@ -76,6 +81,7 @@ impl TextureOptions {
             exhaustive: self.exhaustive,
             tileable: self.tileable,
             schedule: self.schedule,
+            start: self.start.clone(),
             ..Params::default()
         }
     }

@@ -3,6 +3,15 @@
 //! lowest max count difference, then colourisation) or our own method, toroidal
 //! Wei-Levoy synthesis (engine 2 with `tileable`), which keeps structure as well as the
 //! histogram. Every tile comes with its restoration rate and seam score.
+//!
+//! Beyond the paper: by default (`refine`) the E-TFMCM (or TFMCM) tile is refined by
+//! toroidal synthesis that starts from its layout, so the co-occurrence field gives the
+//! arrangement of colours and the exemplar's neighbourhoods give the detail. The paper's
+//! tile, decided pixel by pixel, breaks bricks, shingles and letters into pixelated
+//! pieces that repeat with the tile; over the ten fixture photographs (128, seeds 1-3,
+//! `examples/tile_quality`) refining lowered its patch energy on every one (mean 9.11
+//! -> 6.31; toroidal synthesis alone 6.11) and kept colours closer than synthesis alone
+//! (colour distance 0.111 against 0.160; tissue 0.29 against 0.68).
 
 use super::colourise::colourise;
 use super::cooccurrence::Grey;
@@ -40,6 +49,9 @@ pub struct SeamlessOptions {
     pub seed: u64,
     /// T0 of the density conversion (the paper recommends at most 50 for 128 x 128).
     pub max_count_difference: f64,
+    /// E-TFMCM and TFMCM: refine the co-occurrence tile with toroidal synthesis (see
+    /// `refine`); `false` gives the paper's tile as it is.
+    pub refine: bool,
 }
 
 impl Default for SeamlessOptions {
@@ -51,6 +63,7 @@ impl Default for SeamlessOptions {
             height: None,
             seed: 1,
             max_count_difference: 50.0,
+            refine: true,
         }
     }
 }
@@ -89,9 +102,10 @@ pub fn seamless_tile(input: &Rgba, opts: &SeamlessOptions, progress: &mut dyn Pr
     if !(opts.max_count_difference.is_finite() && opts.max_count_difference >= 0.0) {
         return invalid("maxCountDifference must be a number of at least 0.");
     }
-    let mut progress = Throttle::new(progress);
+    let refined = opts.refine && !synthesis;
     let (out, channel, count_difference, decisions) = match opts.method {
         Method::Synthesis => {
+            let mut progress = Throttle::new(progress);
             let img =
                 Image { width: ex_side, height: ex_side, data: rgb.iter().map(|p| p.map(|v| v as f32)).collect() };
             let o = TextureOptions { width, height, seed: opts.seed, tileable: true, ..Default::default() };
@@ -110,12 +124,20 @@ pub fn seamless_tile(input: &Rgba, opts: &SeamlessOptions, progress: &mut dyn Pr
                 .unwrap();
             let conv = convert(&channels[c], opts.max_count_difference, opts.seed);
             let rule = if opts.method == Method::Etfmcm { Rule::Etfmcm } else { Rule::Tfmcm };
-            let (grey, decisions) = generate(&conv.image, rule, opts.seed, &mut progress)?;
+            let (grey, decisions) = {
+                let mut progress = Throttle::with_range(progress, 0.0, if refined { 0.3 } else { 1.0 });
+                generate(&conv.image, rule, opts.seed, &mut progress)?
+            };
             // Colours are matched on the converted levels (finer than the original).
-            let out = colourise(&grey, &conv.image, &rgb);
+            let mut out = colourise(&grey, &conv.image, &rgb);
+            if refined {
+                let mut progress = Throttle::with_range(progress, 0.3, 1.0);
+                out = refine(&out, &rgb, side, opts.seed, &mut progress)?;
+            }
             (out, Some(['r', 'g', 'b'][c]), Some((conv.before, conv.after)), Some(decisions))
         }
     };
+    let mut progress = Throttle::new(progress);
     progress.tick(1.0)?;
     let restoration_rate = restoration_rgb(&rgb, &out);
     let (width, height) = if synthesis { (width, height) } else { (side, side) };
@@ -130,6 +152,26 @@ pub fn seamless_tile(input: &Rgba, opts: &SeamlessOptions, progress: &mut dyn Pr
         count_difference,
         decisions,
     })
+}
+
+/// The co-occurrence tile `field` (side x side) refined by toroidal synthesis from the
+/// exemplar `rgb`: the synthesis's coarsest level starts from the field's layout (each
+/// pixel the exemplar position whose neighbourhood best matches the field's there),
+/// and its levels are then made as for a synthesized tile, so the field gives the
+/// arrangement and the exemplar's own neighbourhoods the detail. This is not in the
+/// paper: its tile is the field, colourised, whose pixel-by-pixel decisions break
+/// structured exemplars into pixelated pieces that repeat with the tile.
+fn refine(field: &[[u8; 3]], rgb: &[[u8; 3]], side: usize, seed: u64, progress: &mut Throttle) -> Result<Vec<[u8; 3]>> {
+    let image = |p: &[[u8; 3]]| Image { width: side, height: side, data: p.iter().map(|c| c.map(f32::from)).collect() };
+    let o = TextureOptions {
+        width: side,
+        height: side,
+        seed,
+        tileable: true,
+        start: Some(image(field)),
+        ..Default::default()
+    };
+    Ok(synthesize_texture(&image(rgb), &o, &mut |f| progress.tick(f).is_ok())?.rgb())
 }
 
 /// The tile's width and height from the options: `width`/`height` (synthesis only, any

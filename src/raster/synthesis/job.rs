@@ -1,13 +1,15 @@
 //! A synthesis prepared: the exemplars' pyramids, the mixing weights, the level sizes
 //! and the neighbourhood shapes, which both schedules run their passes over.
 
-use super::exemplar::{Exemplar, Offsets};
+use super::exemplar::{distance, Exemplar, Offsets};
+use super::lanes::{px, Px};
 use super::mixer::{Mixer, MU_ONE};
 use super::pass::Pass;
 use super::{default_levels, Params, Sources};
 use crate::error::{invalid, Error, Result};
-use crate::raster::image::{check_output, check_size, Rgba};
+use crate::raster::image::{check_output, check_size, torus_index, Rgba};
 use crate::raster::neighbourhood::Shape;
+use crate::raster::pyramid::{self, Edge};
 use crate::raster::quilt::Quilt;
 use crate::rng::Rng;
 use std::sync::OnceLock;
@@ -35,10 +37,20 @@ pub struct Job {
     pub sizes: Vec<(usize, usize)>,
     pub(crate) causal: Shape,
     pub(crate) full: Shape,
-    /// How the coarsest level is quilted, or `None` when it is not (see `quilted`).
-    quilt: Option<Quilt>,
-    /// The coarsest level's quilts, laid once (`quilts`).
-    quilts: OnceLock<Vec<Vec<u32>>>,
+    /// How the coarsest level starts, or `None` when it grows from noise (see `started`).
+    start: Option<Start>,
+    /// The coarsest level's starting maps, made once (`starts`).
+    starts: OnceLock<Vec<Vec<u32>>>,
+}
+
+/// How the coarsest level starts when it is not grown from noise.
+enum Start {
+    /// A quilt of exemplar windows.
+    Quilt(Quilt),
+    /// A picture's layout: each pixel takes the exemplar position whose neighbourhood
+    /// (centre included) best matches the picture's there, at the coarsest level, read
+    /// on the torus. The picture's own colours are never copied.
+    Layout(Vec<Px>),
 }
 
 impl Job {
@@ -89,20 +101,35 @@ impl Job {
         }
         let half = (side / 2) as isize;
         let exs: Vec<Exemplar> = exemplars.iter().map(|e| Exemplar::new(e, levels)).collect();
+        let sizes: Vec<_> = (0..levels).map(|l| (width.div_ceil(1 << l), height.div_ceil(1 << l))).collect();
         let quilt = quilt_params();
         let quiltable = exs.iter().all(|ex| {
             let coarsest = &ex.levels[levels - 1];
             quilt.window(coarsest.width, coarsest.height).is_some()
         });
+        let start = match &params.start {
+            Some(picture) => {
+                if (picture.width, picture.height) != (width, height) {
+                    return invalid(format!(
+                        "The starting picture is {}x{}; the output is {width}x{height}.",
+                        picture.width, picture.height
+                    ));
+                }
+                let coarsest = pyramid::build(picture, levels, Edge::Wrap).pop().expect("at least one level");
+                debug_assert_eq!((coarsest.width, coarsest.height), sizes[levels - 1]);
+                Some(Start::Layout(coarsest.data.iter().map(|&c| px(c)).collect()))
+            }
+            None => (quiltable && !params.tileable).then_some(Start::Quilt(quilt)),
+        };
         Ok(Job {
             mix: Mixer { exs, mu, width, height },
             params: params.clone(),
             levels,
-            sizes: (0..levels).map(|l| (width.div_ceil(1 << l), height.div_ceil(1 << l))).collect(),
+            sizes,
             causal: Shape::causal(half),
             full: Shape::full(half),
-            quilt: (quiltable && !params.tileable).then_some(quilt),
-            quilts: OnceLock::new(),
+            start,
+            starts: OnceLock::new(),
         })
     }
 
@@ -116,30 +143,66 @@ impl Job {
         y < band || x < band || y + band / 2 >= lh || x + band / 2 >= lw
     }
 
-    /// Whether `level` starts from a quilt of exemplar windows (`quilt`) and so needs no
-    /// causal pass: the coarsest level, when its exemplars are large enough to quilt,
-    /// of an output that is not a tile. A tile's coarsest level is grown causally: quilted
-    /// (windows wrapped round the torus, cut against the first ones), tissue's 256 tiles
-    /// kept its make-up better (colour distance 0.63 -> 0.31 over seeds 1-3) but print's
-    /// wrap became a seam (`seam_lines`: 1.07 -> 1.22-1.47 over seeds 1-8, against the
-    /// issue's 1.2).
-    pub(crate) fn quilted(&self, level: usize) -> bool {
-        level + 1 == self.levels && self.quilt.is_some()
+    /// Whether `level` starts from a map made whole (`starts`) and so needs no causal
+    /// pass: the coarsest level, when it starts from a picture's layout, or when its
+    /// exemplars are large enough to quilt and the output is not a tile. A tile's
+    /// coarsest level is otherwise grown causally: quilted (windows wrapped round the
+    /// torus, cut against the first ones), tissue's 256 tiles kept its make-up better
+    /// (colour distance 0.63 -> 0.31 over seeds 1-3) but print's wrap became a seam
+    /// (`seam_lines`: 1.07 -> 1.22-1.47 over seeds 1-8, against the 1.2).
+    pub(crate) fn started(&self, level: usize) -> bool {
+        level + 1 == self.levels && self.start.is_some()
     }
 
-    /// The coarsest level's quilts, one per exemplar (empty when it is not `quilted`):
-    /// the same in both schedules, and laid once per job, however many bands read them.
-    pub(crate) fn quilts(&self) -> &[Vec<u32>] {
-        self.quilts.get_or_init(|| {
-            let Some(quilt) = self.quilt else { return Vec::new() };
+    /// The coarsest level's starting maps, one per exemplar (empty when it is not
+    /// `started`): the same in both schedules, and made once per job, however many
+    /// bands read them.
+    pub(crate) fn starts(&self) -> &[Vec<u32>] {
+        self.starts.get_or_init(|| {
             let level = self.levels - 1;
             let (lw, lh) = self.sizes[level];
-            let lay = |(e, ex): (usize, &Exemplar)| {
-                let mut rng = Rng::new(self.params.seed ^ (0x51 << 56) ^ e as u64);
-                quilt.lay(&ex.levels[level].image(), lw, lh, &mut rng).expect("Job::new checked the window")
-            };
-            self.mix.exs.iter().enumerate().map(lay).collect()
+            let exs = self.mix.exs.iter().enumerate();
+            match &self.start {
+                None => Vec::new(),
+                Some(Start::Quilt(quilt)) => exs
+                    .map(|(e, ex)| {
+                        let mut rng = Rng::new(self.params.seed ^ (0x51 << 56) ^ e as u64);
+                        quilt.lay(&ex.levels[level].image(), lw, lh, &mut rng).expect("Job::new checked the window")
+                    })
+                    .collect(),
+                Some(Start::Layout(picture)) => exs.map(|(_, ex)| self.layout(ex, level, picture)).collect(),
+            }
         })
+    }
+
+    /// For each pixel of `level` (`picture` at that level), the position of `ex` whose
+    /// neighbourhood, centre included, is nearest the picture's (exhaustive: the
+    /// coarsest level has a few hundred positions).
+    fn layout(&self, ex: &Exemplar, level: usize, picture: &[Px]) -> Vec<u32> {
+        let (lw, lh) = self.sizes[level];
+        let mut shape = self.full.clone();
+        shape.own.push((0, 0));
+        shape.parent.clear();
+        let off = Offsets::new(&shape, ex.levels[level].width);
+        let mut feature = Vec::with_capacity(shape.own.len());
+        let mut out = Vec::with_capacity(lw * lh);
+        for y in 0..lh {
+            for x in 0..lw {
+                feature.clear();
+                feature.extend(
+                    shape.own.iter().map(|&(dx, dy)| picture[torus_index(x as isize + dx, y as isize + dy, lw, lh)]),
+                );
+                let mut best = (f32::INFINITY, 0u32);
+                for pos in 0..ex.levels[level].data.len() as u32 {
+                    let d = distance(ex, level, pos, &shape, &off, &feature, best.0);
+                    if d < best.0 {
+                        best = (d, pos);
+                    }
+                }
+                out.push(best.1);
+            }
+        }
+        out
     }
 
     /// The parameters it was made with.

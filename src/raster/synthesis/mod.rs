@@ -58,6 +58,9 @@ pub struct Params {
     /// its full (two-sided) neighbourhood, which joins structures the causal pass broke.
     pub corrections: usize,
     pub schedule: Schedule,
+    /// A picture of the output's size whose layout the coarsest level starts from
+    /// (`Job::started`): the seamless tile's E-TFMCM field, refined.
+    pub start: Option<Image>,
 }
 
 /// The order in which a level's pixels are synthesized.
@@ -100,6 +103,7 @@ impl Default for Params {
             random_candidates: 2,
             corrections: 1,
             schedule: Schedule::Auto,
+            start: None,
         }
     }
 }
@@ -145,7 +149,7 @@ pub enum Sources<'a> {
 /// it (mixed by mu when blending). With the parent level's map and mu in 16 bits, that
 /// is at most 5 bytes per output pixel for one exemplar and 12 for two, plus the RGBA
 /// result (4) at the end, when the parent's map is gone. The job also keeps the coarsest
-/// level's quilts (`Job::quilts`: 4 bytes per pixel of that level and exemplar, a
+/// level's starting maps (`Job::starts`: 4 bytes per pixel of that level and exemplar, a
 /// quarter of a byte per output pixel with three levels, 4 with one).
 pub fn synthesize(job: &Job, progress: &mut Throttle) -> Result<Rgba> {
     let params = &job.params;
@@ -159,9 +163,9 @@ pub fn synthesize(job: &Job, progress: &mut Throttle) -> Result<Rgba> {
         let (lw, lh) = job.sizes[level];
         // A quilt at the coarsest level, else noise: every pixel copies a random position
         // of each exemplar.
-        let quilted = job.quilted(level);
-        let src: Vec<Vec<u32>> = if quilted {
-            job.quilts().to_vec()
+        let started = job.started(level);
+        let src: Vec<Vec<u32>> = if started {
+            job.starts().to_vec()
         } else {
             (0..job.exemplars())
                 .map(|e| {
@@ -177,7 +181,7 @@ pub fn synthesize(job: &Job, progress: &mut Throttle) -> Result<Rgba> {
         // One causal pass, then the correction passes with full neighbourhoods, the first
         // in reverse scanline order: structure then also spreads up and left, from the
         // pixels the causal pass made last (6 seeds: mean energy 8.29 -> 8.12).
-        let first = if quilted { (&job.full, true, false) } else { (&job.causal, false, false) };
+        let first = if started { (&job.full, true, false) } else { (&job.causal, false, false) };
         let passes = std::iter::once(first).chain((0..params.corrections).map(|i| (&job.full, true, i % 2 == 0)));
         for (shape, use_full, reverse) in passes {
             for row in 0..lh {

@@ -78,8 +78,12 @@ export function mountSeamless(root, client) {
     el.value = settings[key];
     el.addEventListener('input', () => { settings[key] = el.value; save(); showMethod(); });
   }
+  const refine = $('seam-refine');
+  refine.checked = settings.refine !== false;
+  refine.addEventListener('change', () => { settings.refine = refine.checked; save(); });
   const showMethod = () => {
     $('seam-t0-row').hidden = settings.method === 'synthesis';
+    $('seam-refine-row').hidden = settings.method === 'synthesis';
     $('seam-custom').hidden = settings.size !== 'custom';
     $('seam-method-help').textContent = methodHelp[settings.method] ?? '';
   };
@@ -101,7 +105,10 @@ export function mountSeamless(root, client) {
       if (settings.method !== 'synthesis') return say('Tiles of any width and height are made by toroidal synthesis: choose it as the method, or a power-of-two size.', 'error');
       [opts.width, opts.height] = [Number(settings.width), Number(settings.height)];
     } else if (settings.size) opts.size = Number(settings.size);
-    if (settings.method !== 'synthesis') opts.maxCountDifference = Number(settings.maxCountDifference);
+    if (settings.method !== 'synthesis') {
+      opts.maxCountDifference = Number(settings.maxCountDifference);
+      opts.refine = settings.refine !== false;
+    }
     const t0 = performance.now();
     // The previous tile goes: should this run fail, it must not look like its result.
     tile.clear();

@@ -8,6 +8,8 @@ export const defaultOptions = {
   height: 200,
   seed: 1,
   maxCountDifference: 50,
+  // E-TFMCM and TFMCM: their tile refined by toroidal synthesis (bench: examples/tile_quality).
+  refine: true,
   texture: 'gravel',
 };
 
@@ -19,7 +21,7 @@ export const methods = [
 
 /** What each method does, in plain words. */
 export const methodHelp = {
-  etfmcm: 'Rebuilds the tile from how the image\'s colours sit next to one another, so the tile keeps the image\'s colours exactly; shapes larger than a few pixels can break up.',
+  etfmcm: 'Rebuilds the tile from how the image\'s colours sit next to one another, so the tile keeps the image\'s colours in their proportions; refined, its detail is then re-made from the image, otherwise shapes larger than a few pixels break up.',
   tfmcm: 'The same idea without the fractal refinement: faster, rougher. For comparison.',
   synthesis: 'Grows the tile pixel by pixel from the image\'s own neighbourhoods, wrapping round its edges: keeps structure (bricks, weave, wood grain).',
 };
