@@ -161,16 +161,17 @@ impl Job {
         self.starts.get_or_init(|| {
             let level = self.levels - 1;
             let (lw, lh) = self.sizes[level];
-            let exs = self.mix.exs.iter().enumerate();
+            let exs = self.mix.exs.iter();
             match &self.start {
                 None => Vec::new(),
                 Some(Start::Quilt(quilt)) => exs
+                    .enumerate()
                     .map(|(e, ex)| {
                         let mut rng = Rng::new(self.params.seed ^ (0x51 << 56) ^ e as u64);
                         quilt.lay(&ex.levels[level].image(), lw, lh, &mut rng).expect("Job::new checked the window")
                     })
                     .collect(),
-                Some(Start::Layout(picture)) => exs.map(|(_, ex)| self.layout(ex, level, picture)).collect(),
+                Some(Start::Layout(picture)) => exs.map(|ex| self.layout(ex, level, picture)).collect(),
             }
         })
     }
