@@ -262,7 +262,7 @@ fn banded_schedule_gives_one_image_for_any_number_of_workers() {
     }
     // Blends too (two maps per level, mixed by mu).
     let (a, b) = (load("wood", 40), load("gravel", 40));
-    let blend = BlendOptions { base: TextureOptions { width: 72, height: 130, ..opts }, ..Default::default() };
+    let blend = BlendOptions { base: TextureOptions { width: 72, height: 130, ..opts.clone() }, ..Default::default() };
     let one = blend_textures(&a, &b, &blend, &mut Silent).unwrap();
     assert!(run_on_threads(&|| blend_job(&a, &b, &blend).unwrap(), 2) == one);
     // The scanline order is another image: the schedule option is honoured.
