@@ -267,7 +267,7 @@ fn banded_schedule_gives_one_image_for_any_number_of_workers() {
     assert!(run_on_threads(&|| blend_job(&a, &b, &blend).unwrap(), 2) == one);
     // The scanline order is another image: the schedule option is honoured.
     assert!(
-        synthesize_texture(&ex, &TextureOptions { schedule: Schedule::Scanline, ..opts }, &mut Silent).unwrap()
+        synthesize_texture(&ex, &TextureOptions { schedule: Schedule::Scanline, ..opts.clone() }, &mut Silent).unwrap()
             != synthesize_texture(&ex, &opts, &mut Silent).unwrap()
     );
 }
