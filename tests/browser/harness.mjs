@@ -15,3 +15,31 @@ export async function openPlayground({ width = 1400, height = 1000, tab, touch =
   if (tab) await page.click(`[data-tab="${tab}"]`);
   return { page, url, close: async () => { await browser.close(); server.close(); } };
 }
+
+/** RMS over sampled pixels of the best 7x7 match in the exemplar (as the benchmark). */
+export function patchEnergy(out, ex, rows, samples = 60) {
+  let seed = 7;
+  const rand = (n) => { seed = (seed * 1103515245 + 12345) % 2147483648; return seed % n; };
+  const px = (img, x, y) => {
+    x = ((x % img.width) + img.width) % img.width; y = ((y % img.height) + img.height) % img.height;
+    const i = 4 * (y * img.width + x);
+    return [img.data[i], img.data[i + 1], img.data[i + 2]];
+  };
+  let total = 0;
+  for (let s = 0; s < samples; s++) {
+    const x = rand(out.width), y = rows[0] + rand(rows[1] - rows[0]);
+    const patch = [];
+    for (let dy = -3; dy <= 3; dy++) for (let dx = -3; dx <= 3; dx++) patch.push(px(out, x + dx, y + dy));
+    let best = Infinity;
+    for (let cy = 3; cy < ex.height - 3; cy++) for (let cx = 3; cx < ex.width - 3; cx++) {
+      let acc = 0, k = 0;
+      for (let dy = -3; dy <= 3 && acc < best; dy++) for (let dx = -3; dx <= 3; dx++) {
+        const i = 4 * ((cy + dy) * ex.width + cx + dx), q = patch[k++];
+        acc += (ex.data[i] - q[0]) ** 2 + (ex.data[i + 1] - q[1]) ** 2 + (ex.data[i + 2] - q[2]) ** 2;
+      }
+      best = Math.min(best, acc);
+    }
+    total += best / 147;
+  }
+  return Math.sqrt(total / samples);
+}

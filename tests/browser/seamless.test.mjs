@@ -5,7 +5,7 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync, readFileSync } from 'node:fs';
-import { openPlayground } from './harness.mjs';
+import { openPlayground, patchEnergy } from './harness.mjs';
 import { decodeImage, encodePng } from '../../pkg/node/index.js';
 
 let page, close;
@@ -45,6 +45,32 @@ test('E-TFMCM tile of the built-in gravel: downloads, wraps without a seam', asy
   assert.ok(s < 1.3, `seam ${s}`);
   mkdirSync('out', { recursive: true });
   await page.screenshot({ path: 'out/seamless.png', fullPage: true });
+});
+
+test('E-TFMCM refined by default keeps the bricks whole; unticked, the paper\'s tile', async () => {
+  await page.selectOption('#seam-texture', 'brick');
+  await page.waitForFunction(() => document.querySelector('#seam-source').width === 128);
+  await page.selectOption('#seam-method', 'etfmcm');
+  assert.equal(await page.isChecked('#seam-refine'), true);
+  const tile = async () => {
+    await run();
+    const [download] = await Promise.all([page.waitForEvent('download'), page.click('#seam-download')]);
+    return decodeImage(readFileSync(await download.path()));
+  };
+  const refined = await tile();
+  await page.uncheck('#seam-refine');
+  const paper = await tile();
+  const brick = decodeImage(readFileSync('tests/fixtures/textures/brick.png'));
+  const all = [0, 128];
+  const [er, ep] = [patchEnergy(refined, brick, all), patchEnergy(paper, brick, all)];
+  assert.ok(er < 0.8 * ep, `patch energy refined ${er} against the paper's ${ep}`);
+  assert.ok(seam(refined) < 1.3, `seam ${seam(refined)}`);
+  await page.check('#seam-refine');
+  await page.selectOption('#seam-method', 'synthesis');
+  assert.equal(await page.isVisible('#seam-refine'), false, 'synthesis has nothing to refine');
+  await page.selectOption('#seam-method', 'etfmcm');
+  await page.selectOption('#seam-texture', 'gravel');
+  await page.waitForFunction(() => document.querySelector('#seam-source').width === 128);
 });
 
 test('toroidal synthesis at 64 also wraps', async () => {
