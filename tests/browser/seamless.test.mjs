@@ -33,6 +33,11 @@ async function run() {
   await page.waitForFunction(() => !document.querySelector('#seam-run').disabled && document.querySelector('#seam-progress').value === 1, null, { timeout: 60000 });
 }
 
+test('a new visitor gets toroidal synthesis, the method measured best', async () => {
+  assert.equal(await page.inputValue('#seam-method'), 'synthesis');
+  assert.equal(await page.isVisible('#seam-refine'), false);
+});
+
 test('E-TFMCM tile of the built-in gravel: downloads, wraps without a seam', async () => {
   await page.selectOption('#seam-method', 'etfmcm');
   await run();

@@ -2,7 +2,10 @@
 export const label = 'Seamless tile';
 
 export const defaultOptions = {
-  method: 'etfmcm', // 'tfmcm' | 'synthesis'
+  // Toroidal synthesis by measurement (issue 25): on 12 photographs from Debian's game and
+  // GIMP packages it had lower patch energy than refined E-TFMCM (0.88 against 0.91 of
+  // texture-synthesis's, mean over seeds 1-3) and every seam within 0.8-1.2 (10 of 12).
+  method: 'synthesis', // 'etfmcm' | 'tfmcm'
   size: '', // '' = the largest power of two the image allows; 'custom' = width x height
   width: 300, // a custom tile's (toroidal synthesis only)
   height: 200,
@@ -14,9 +17,9 @@ export const defaultOptions = {
 };
 
 export const methods = [
+  ['synthesis', 'Toroidal synthesis (keeps structure)'],
   ['etfmcm', 'E-TFMCM (the paper: co-occurrence fractal)'],
   ['tfmcm', 'TFMCM (its predecessor, for comparison)'],
-  ['synthesis', 'Toroidal synthesis (ours: keeps structure)'],
 ];
 
 /** What each method does, in plain words. */
