@@ -103,8 +103,9 @@ test('a worker fetches the wasm of the call it runs, and nothing else', async ()
   const server = await serve(dir, 0);
   const browser = await chromium.launch(CHROMIUM);
   // One fresh page per call type: which .wasm files it fetched, and their bytes.
-  const fetched = async (call) => {
+  const fetched = async (call, script) => {
     const context = await browser.newContext();
+    if (script) await context.addInitScript(script);
     const bodies = [];
     context.on('response', (r) => { if (/\.wasm$/.test(r.url())) bodies.push(r.body().then((b) => b.length)); });
     const page = await context.newPage();
@@ -131,6 +132,23 @@ test('a worker fetches the wasm of the call it runs, and nothing else', async ()
     assert.deepEqual(texture.files, ['texture_bg.wasm']);
     assert.equal(vector.result, true);
     assert.deepEqual(vector.files, ['vector_bg.wasm']);
+    // A browser without wasm SIMD (its validate refuses the SIMD probe, as such an engine does)
+    // fetches the scalar build, and gets the same image.
+    const texture64 = async () => {
+      const m = await import('./pkg/texture.js');
+      await m.default();
+      const data = new Uint8ClampedArray(64 * 64 * 4).map((_, i) => (i % 4 === 3 ? 255 : (i * 37) % 251));
+      return Array.from(m.synthesizeTexture({ width: 64, height: 64, data }, { width: 96, height: 96, seed: 2 }).data);
+    };
+    // (js/pkg/simd.js's probe is the only module this small: 29 bytes.)
+    const noSimd = () => {
+      const validate = WebAssembly.validate;
+      WebAssembly.validate = (bytes) => bytes.byteLength > 64 && validate(bytes);
+    };
+    const [simd, scalar] = [await fetched(texture64), await fetched(texture64, noSimd)];
+    assert.deepEqual(simd.files, ['texture_bg.wasm']);
+    assert.deepEqual(scalar.files, ['texture_scalar_bg.wasm']);
+    assert.ok(simd.result.length === 96 * 96 * 4 && simd.result.every((v, i) => v === scalar.result[i]), 'the same image from both builds');
   } finally {
     await browser.close();
     server.close();
