@@ -4,7 +4,7 @@
 //! photograph, colour distance,
 //! repetition and seam score, means over the seeds, as a Markdown table; each seed-1
 //! tile saved repeated 2 x 2 in out/tiles/ to look at.
-//! `cargo run --release --example tile_quality [size] [fixture|all]`
+//! `cargo run --release --example tile_quality [size] [fixture|all|path.png ...]`
 #[path = "support/textures.rs"]
 mod textures;
 use patternsynth::raster::codec::encode_png;
@@ -20,7 +20,10 @@ fn image(r: &patternsynth::raster::Rgba) -> Image {
 fn main() {
     let args: Vec<String> = std::env::args().collect();
     let size: Option<usize> = args.get(1).and_then(|s| s.parse().ok());
-    let names = textures::named(args.get(2).map_or("all", String::as_str));
+    let names: Vec<String> = match args.get(2..) {
+        Some(rest) if !rest.is_empty() => rest.iter().flat_map(|a| textures::named(a)).collect(),
+        _ => textures::named("all"),
+    };
     std::fs::create_dir_all("out/tiles").unwrap();
     let methods: [(&str, Method, bool); 3] = [
         ("etfmcm (paper)", Method::Etfmcm, false),
@@ -30,14 +33,19 @@ fn main() {
     println!("| exemplar | method | energy | colour | repetition (exemplar) | seam |");
     println!("|---|---|---:|---:|---:|---:|");
     for name in &names {
-        let img = textures::rgba(name);
+        // A fixture's name, or the path of any PNG or JPEG.
+        let img = if name.contains('/') {
+            patternsynth::raster::codec::decode_image(&std::fs::read(name).unwrap()).unwrap()
+        } else {
+            textures::rgba(name)
+        };
         for (label, method, refine) in methods {
             let (mut e, mut c, mut r, mut s, mut own) = (0.0, 0.0, 0.0, 0.0, 0.0);
             for seed in 1..=3u64 {
                 let opts = SeamlessOptions { method, size, seed, refine, ..Default::default() };
                 let t = seamless_tile(&img, &opts, &mut Silent).unwrap();
                 let out = image(&t.image);
-                let ex = textures::load(name);
+                let ex = image(&img);
                 e += patch_energy(&out, &ex, 300, (0, out.height), 1);
                 c += colour_distance(&out, &ex);
                 r += repetition(&out, 24.min(out.width / 4), 1);
@@ -52,7 +60,8 @@ fn main() {
                             rep[(y * 2 * n + x) * 4..][..4].copy_from_slice(&t.image.data[k..k + 4]);
                         }
                     }
-                    let file = format!("out/tiles/{name}-{}.png", label.replace([' ', '(', ')'], ""));
+                    let stem = name.rsplit('/').next().unwrap_or(name).trim_end_matches(".png");
+                    let file = format!("out/tiles/{stem}-{}.png", label.replace([' ', '(', ')'], ""));
                     std::fs::write(file, encode_png(2 * n, 2 * n, &rep).unwrap()).unwrap();
                 }
             }
