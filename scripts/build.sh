@@ -8,8 +8,9 @@ bash scripts/setup.sh
 # Everything the package is made from: a change to any of these builds it again.
 stamp=$( (find src js/pkg tests/fixtures/textures scripts/build.sh scripts/wasm-module.sh scripts/patch-glue.mjs \
   scripts/embed-wasm.mjs scripts/cts-types.mjs scripts/sizes.mjs Cargo.toml Cargo.lock package-lock.json \
-  LICENSE-MIT LICENSE-APACHE -type f -print0 | sort -z | xargs -0 sha256sum; echo "${RUSTFLAGS:-}") | sha256sum | cut -c1-32)
-if [ -f target/pkg.stamp ] && [ "$(cat target/pkg.stamp)" = "$stamp" ] && [ -f pkg/package.json ] && [ -f www/pkg/package.json ]; then
+  LICENSE-MIT LICENSE-APACHE -type f -print0 | sort -z | xargs -0 sha256sum; echo "${RUSTFLAGS:-}"; rustc -V) | sha256sum | cut -c1-32)
+built() { [ -f pkg/package.json ] && [ -f www/pkg/package.json ] && [ "$(ls pkg/wasm/*_bg.wasm 2>/dev/null | wc -l)" = 6 ] && [ -d www/textures ]; }
+if [ -f target/pkg.stamp ] && [ "$(cat target/pkg.stamp)" = "$stamp" ] && built; then
   echo "pkg/ is up to date (nothing it is built from changed)."
   exit 0
 fi

@@ -24,14 +24,15 @@ wasm-bindgen --target web --no-typescript --out-dir "$out" --out-name "$name" \
 node scripts/patch-glue.mjs "$out/$name.js"
 # npm's binaryen (Debian's wasm-opt 108 emits modules that fail to load).
 mkdir -p target/wasm-opt
-key=$( (sha256sum "$out/${name}_bg.wasm" | cut -d' ' -f1; echo "$opt"; node_modules/.bin/wasm-opt --version) | sha256sum | cut -c1-32)
+extra=()
+[ "$simd" = 1 ] && extra=(--enable-simd)
+flags_opt=("-$opt" --converge --strip-debug --strip-producers --enable-bulk-memory --enable-nontrapping-float-to-int
+  --enable-sign-ext --enable-mutable-globals --enable-reference-types --enable-multivalue "${extra[@]}")
+# The cache key: the input, every flag and wasm-opt's version.
+key=$( (sha256sum "$out/${name}_bg.wasm" | cut -d' ' -f1; echo "${flags_opt[*]}"; node_modules/.bin/wasm-opt --version) | sha256sum | cut -c1-32)
 cached=target/wasm-opt/$key.wasm
 if [ ! -f "$cached" ]; then
-  extra=()
-  [ "$simd" = 1 ] && extra=(--enable-simd)
-  node_modules/.bin/wasm-opt "-$opt" --converge --strip-debug --strip-producers --enable-bulk-memory \
-    --enable-nontrapping-float-to-int --enable-sign-ext --enable-mutable-globals --enable-reference-types \
-    --enable-multivalue "${extra[@]}" "$out/${name}_bg.wasm" -o "$cached.part"
+  node_modules/.bin/wasm-opt "${flags_opt[@]}" "$out/${name}_bg.wasm" -o "$cached.part"
   mv "$cached.part" "$cached"
 fi
 cp "$cached" "$out/${name}_bg.wasm"

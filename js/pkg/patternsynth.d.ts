@@ -16,3 +16,6 @@ export declare const initCodecsSync: InitSync;
 export { version, parseSvg, parseSvgReport, classifyStrokes, synthesizeStrokes, strokeTile, suggestStrokes } from './vector.js';
 export { synthesizeTexture, blendTextures, seamlessTile } from './texture.js';
 export { decodeImage, encodePng } from './codec.js';
+/** Whether this JavaScript engine runs wasm SIMD: `init()` then loads the SIMD build, else the
+ *  scalar one (`*_scalar_bg.wasm`, the same images). A page passing its own wasm URL picks by it. */
+export const simd: boolean;

@@ -22,6 +22,9 @@ export const restarts = () => full.restarts;
 export const diagnostics = () => full.diagnostics();
 export { default as initCodecs, initSync as initCodecsSync, decodeImage, encodePng } from './codec.js';
 
+/** Whether this engine runs wasm SIMD, and so loads the SIMD build (`init()` without a URL
+ *  picks it; a page passing its own URL picks by this). */
+export { simd };
 export const version = full.method('version');
 export const parseSvg = full.method('parseSvg');
 export const parseSvgReport = full.method('parseSvgReport');

@@ -14,3 +14,6 @@ import type { Rgba, RgbaImage, TextureOptions, BlendOptions, SeamlessOptions, Se
 export function synthesizeTexture(image: Rgba, opts: TextureOptions, onProgress?: Progress): RgbaImage;
 export function blendTextures(a: Rgba, b: Rgba, opts: BlendOptions, onProgress?: Progress): RgbaImage;
 export function seamlessTile(image: Rgba, opts?: SeamlessOptions, onProgress?: Progress): SeamlessResult;
+/** Whether this JavaScript engine runs wasm SIMD: `init()` then loads the SIMD build, else the
+ *  scalar one (`*_scalar_bg.wasm`, the same images). A page passing its own wasm URL picks by it. */
+export const simd: boolean;

@@ -20,6 +20,9 @@ export const restarts = () => texture.restarts;
 /** The engine's restarts, renewals (instances replaced to give memory back) and memory. */
 export const diagnostics = () => texture.diagnostics();
 
+/** Whether this engine runs wasm SIMD, and so loads the SIMD build (`init()` without a URL
+ *  picks it; a page passing its own URL picks by this). */
+export { simd };
 export const version = texture.method('version');
 export const synthesizeTexture = texture.method('synthesizeTexture');
 export const blendTextures = texture.method('blendTextures');

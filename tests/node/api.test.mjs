@@ -113,7 +113,7 @@ test('the entry points are declared once: every entry, its wasm glue and api.js 
   const names = (module) => Object.keys(METHODS).filter((k) => !METHODS[k].module || module.includes(METHODS[k].module)).sort();
   // The glue also has the worker protocol of banded synthesis, which entries carry as `bands`.
   const glue = (module) => [...names(module), ...(module.includes('texture') ? BAND_EXPORTS : [])].sort();
-  const own = ['default', 'initSync', 'restarts', 'diagnostics', 'bands'];
+  const own = ['default', 'initSync', 'restarts', 'diagnostics', 'bands', 'simd'];
   const exported = (m, extra = []) => Object.keys(m).filter((k) => ![...own, ...extra].includes(k)).sort();
   const glueNames = (m) => Object.keys(m).filter((k) => !['default', 'initSync', 'start', '__wbg_reset', '__wbg_takeReturned'].includes(k)).sort();
   assert.deepEqual(exported(ps, ['initCodecs', 'initCodecsSync']), Object.keys(METHODS).sort());

@@ -24,6 +24,7 @@ const digest = (img) => createHash('sha256').update(img.data).digest('hex');
 
 test('SIMD is detected in Node, and a JavaScript engine that refuses the probe gets the scalar build', () => {
   assert.equal(simd, true);
+  assert.equal(simdEntry.simd, true, 'the entry says which build it loads');
   assert.equal(supportsSimd({ validate: () => false }), false);
   assert.equal(supportsSimd({ validate: () => { throw new TypeError('no'); } }), false);
   assert.equal(supportsSimd(null), false);
@@ -36,6 +37,7 @@ test('the scalar and SIMD builds make the same textures, blends and tiles', () =
     ['synthesizeTexture 512² (banded)', (m) => m.synthesizeTexture(brick, { width: 512, height: 512, seed: 1 }, undefined)],
     ['blendTextures 128²', (m) => m.blendTextures(gravel, brick, { width: 128, height: 128, seed: 2, coefficient: 'linear' }, undefined)],
     ['seamlessTile synthesis 96²', (m) => m.seamlessTile(brick, { method: 'synthesis', width: 96, height: 96, seed: 5 }, undefined)],
+    ['seamlessTile E-TFMCM refined (the default) 64²', (m) => m.seamlessTile(brick, { size: 64, seed: 4 }, undefined)],
     ['synthesizeTexture exhaustive 64²', (m) => m.synthesizeTexture(gravel, { width: 64, height: 64, seed: 1, exhaustive: true }, undefined)],
   ];
   for (const [name, run] of cases) {
