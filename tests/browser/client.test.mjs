@@ -103,9 +103,13 @@ test('a worker fetches the wasm of the call it runs, and nothing else', async ()
   const server = await serve(dir, 0);
   const browser = await chromium.launch(CHROMIUM);
   // One fresh page per call type: which .wasm files it fetched, and their bytes.
-  const fetched = async (call, script) => {
+  const fetched = async (call, script, noSimdModule = false) => {
     const context = await browser.newContext();
     if (script) await context.addInitScript(script);
+    // Workers take no init scripts: there the package's own answer is replaced.
+    if (noSimdModule) {
+      await context.route('**/pkg/simd.js', (r) => r.fulfill({ contentType: 'text/javascript', body: 'export const simd = false; export const supportsSimd = () => false;' }));
+    }
     const bodies = [];
     context.on('response', (r) => { if (/\.wasm$/.test(r.url())) bodies.push(r.body().then((b) => b.length)); });
     const page = await context.newPage();
@@ -149,6 +153,15 @@ test('a worker fetches the wasm of the call it runs, and nothing else', async ()
     assert.deepEqual(simd.files, ['texture_bg.wasm']);
     assert.deepEqual(scalar.files, ['texture_scalar_bg.wasm']);
     assert.ok(simd.result.length === 96 * 96 * 4 && simd.result.every((v, i) => v === scalar.result[i]), 'the same image from both builds');
+    // Through the worker client, as the playground calls it.
+    const inWorker = async () => {
+      const { PatternSynthClient } = await import('./pkg/client.js');
+      const data = new Uint8ClampedArray(64 * 64 * 4).map((_, i) => (i % 4 === 3 ? 255 : (i * 37) % 251));
+      return Array.from((await new PatternSynthClient('./pkg/worker.js').synthesizeTexture({ width: 64, height: 64, data }, { width: 96, height: 96, seed: 2 })).data);
+    };
+    const worker = await fetched(inWorker, null, true);
+    assert.deepEqual(worker.files, ['texture_scalar_bg.wasm']);
+    assert.ok(worker.result.every((v, i) => v === simd.result[i]), 'the worker\'s scalar build makes the same image');
   } finally {
     await browser.close();
     server.close();

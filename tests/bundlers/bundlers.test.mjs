@@ -61,7 +61,16 @@ async function open(dir) {
   }
 }
 
-function check({ result, errors, wasm }) {
+/** Whether some file under `dir` holds exactly the bytes of the package's `file`. */
+function emitted(dir, file) {
+  const want = readFileSync(join(work, 'site/node_modules/patternsynth', file));
+  const walk = (d) => readdirSync(d, { withFileTypes: true }).some((e) => (e.isDirectory()
+    ? walk(join(d, e.name))
+    : statSync(join(d, e.name)).size === want.length && readFileSync(join(d, e.name)).equals(want)));
+  return walk(dir);
+}
+
+function check({ result, errors, wasm }, dir) {
   assert.deepEqual(errors, []);
   assert.equal(result.error, undefined, result.error);
   assert.ok(result.strokes > 200, `strokes: ${result.strokes}`);
@@ -77,19 +86,23 @@ function check({ result, errors, wasm }) {
   console.log(`wasm loaded: ${wasm.join(', ')}`);
   assert.equal(wasm.length, 3, wasm.join(', '));
   for (const name of ['vector', 'texture', 'codec']) assert.ok(wasm.some((w) => w.includes(name)), `${name}: ${wasm.join(', ')}`);
+  // Chromium runs SIMD, so the SIMD build is the one loaded; the scalar build is in the
+  // output all the same, for browsers without SIMD.
+  assert.ok(!wasm.some((w) => w.includes('scalar')), `the scalar build was loaded: ${wasm.join(', ')}`);
+  assert.ok(emitted(dir, 'wasm/texture_scalar_bg.wasm'), 'the scalar texture module is in the output');
 }
 
 const work = site();
 
 test('Vite production build: the worker client works with no configuration', async () => {
   execFileSync(bin('vite'), ['build', join(work, 'site'), '--outDir', join(work, 'dist-vite'), '--emptyOutDir', '--logLevel', 'warn']);
-  check(await open(join(work, 'dist-vite')));
+  check(await open(join(work, 'dist-vite')), join(work, 'dist-vite'));
 });
 
 test('webpack 5 production build: the worker client works with no configuration', async () => {
   execFileSync(bin('webpack'), ['--config', join(import.meta.dirname, 'webpack.config.cjs'), '--env', `work=${work}`], { stdio: 'pipe' });
   writeFileSync(join(work, 'dist-webpack/index.html'), readFileSync(join(work, 'site/index.html'), 'utf8').replace('type="module" ', ''));
-  check(await open(join(work, 'dist-webpack')));
+  check(await open(join(work, 'dist-webpack')), join(work, 'dist-webpack'));
 });
 
 test('esbuild bundle: the package files served beside it, the worker passed by URL', async () => {
@@ -107,7 +120,7 @@ test('esbuild bundle: the package files served beside it, the worker passed by U
     <script>globalThis.wasmUrl = new URL('./patternsynth/wasm/vector_bg.wasm', location.href);
       globalThis.makeClient = (Client) => new Client(new URL('./patternsynth/worker.js', location.href));</script>
     <script type="module" src="./main.js"></script>`);
-  check(await open(out));
+  check(await open(out), out);
 });
 
 test('a TypeScript consumer type-checks with tsc --strict against the shipped types', () => {
