@@ -6,7 +6,6 @@
 //! `cargo run --release --example bench_seamless [size]`
 #[path = "support/textures.rs"]
 mod textures;
-use patternsynth::raster::codec::encode_png;
 use patternsynth::seamless::measure::seam_score;
 use patternsynth::seamless::{seamless_tile, Method, SeamlessOptions};
 use patternsynth::Silent;
@@ -37,16 +36,8 @@ fn main() {
             let mean = seeds.iter().sum::<f64>() / seeds.len() as f64;
             let (lo, hi) = seeds.iter().fold((f64::MAX, f64::MIN), |(a, b), &v| (a.min(v), b.max(v)));
             let n = r.image.width;
-            // 2 x 2 repeat: the seams cross the middle.
-            let mut rep = vec![0u8; 4 * n * n * 4];
-            for y in 0..2 * n {
-                for x in 0..2 * n {
-                    let s = ((y % n) * n + x % n) * 4;
-                    rep[(y * 2 * n + x) * 4..][..4].copy_from_slice(&r.image.data[s..s + 4]);
-                }
-            }
             let m = format!("{method:?}").to_lowercase();
-            std::fs::write(format!("out/seamless/{name}-{m}.png"), encode_png(2 * n, 2 * n, &rep).unwrap()).unwrap();
+            textures::save_repeated(&r.image, &format!("out/seamless/{name}-{m}.png"));
             println!(
                 "{{\"exemplar\":\"{name}\",\"method\":\"{m}\",\"size\":{n},\"ms\":{:.1},\"restoration\":{:.4},\"seam\":{:.3},\"seams\":[{mean:.3},{lo:.3},{hi:.3}],\"naive\":{naive:.3},\"channel\":{:?},\"count_difference\":{:?},\"decisions\":{}}}",
                 times[1],

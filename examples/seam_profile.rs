@@ -42,16 +42,7 @@ fn main() {
             };
             let n = image.width;
             if seed == 1 {
-                // 2 x 2 repeat: the wrap crosses the middle.
-                let mut rep = vec![0u8; 16 * n * n];
-                for y in 0..2 * n {
-                    for x in 0..2 * n {
-                        let s = ((y % n) * n + x % n) * 4;
-                        rep[(y * 2 * n + x) * 4..][..4].copy_from_slice(&image.data[s..s + 4]);
-                    }
-                }
-                let png = patternsynth::raster::codec::encode_png(2 * n, 2 * n, &rep).unwrap();
-                std::fs::write(format!("out/seam-{name}-{}.png", a[2]), png).unwrap();
+                textures::save_repeated(&image, &format!("out/seam-{name}-{}.png", a[2]));
             }
             let out = Image::from_rgba8(n, n, &image.data).unwrap();
             energy += patch_energy(&out, &textures::load(name), 200, (0, n), seed);

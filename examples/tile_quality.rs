@@ -7,7 +7,6 @@
 //! `cargo run --release --example tile_quality [size] [fixture|all|path.png ...]`
 #[path = "support/textures.rs"]
 mod textures;
-use patternsynth::raster::codec::encode_png;
 use patternsynth::raster::energy::{colour_distance, patch_energy, repetition};
 use patternsynth::raster::Image;
 use patternsynth::seamless::{seamless_tile, Method, SeamlessOptions};
@@ -52,17 +51,11 @@ fn main() {
                 own += repetition(&ex, 24.min(ex.width / 4), 1);
                 s += t.seam_score;
                 if seed == 1 {
-                    let n = out.width;
-                    let mut rep = vec![0u8; 16 * n * n];
-                    for y in 0..2 * n {
-                        for x in 0..2 * n {
-                            let k = ((y % n) * n + x % n) * 4;
-                            rep[(y * 2 * n + x) * 4..][..4].copy_from_slice(&t.image.data[k..k + 4]);
-                        }
-                    }
                     let stem = name.rsplit('/').next().unwrap_or(name).trim_end_matches(".png");
-                    let file = format!("out/tiles/{stem}-{}.png", label.replace([' ', '(', ')'], ""));
-                    std::fs::write(file, encode_png(2 * n, 2 * n, &rep).unwrap()).unwrap();
+                    textures::save_repeated(
+                        &t.image,
+                        &format!("out/tiles/{stem}-{}.png", label.replace([' ', '(', ')'], "")),
+                    );
                 }
             }
             println!(

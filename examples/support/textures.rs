@@ -40,3 +40,17 @@ pub fn method(arg: &str) -> Method {
         _ => Method::Synthesis,
     }
 }
+
+/// Writes `tile` repeated 2 x 2 as a PNG at `path`: the wrap crosses the middle, where a
+/// seam would show.
+pub fn save_repeated(tile: &Rgba, path: &str) {
+    let (w, h) = (tile.width, tile.height);
+    let mut rep = vec![0u8; 16 * w * h];
+    for y in 0..2 * h {
+        for x in 0..2 * w {
+            let s = ((y % h) * w + x % w) * 4;
+            rep[(y * 2 * w + x) * 4..][..4].copy_from_slice(&tile.data[s..s + 4]);
+        }
+    }
+    std::fs::write(path, patternsynth::raster::codec::encode_png(2 * w, 2 * h, &rep).unwrap()).unwrap();
+}

@@ -88,8 +88,24 @@ impl Image {
 /// Row-major index of (x, y) in a `width x height` grid read on a torus.
 #[inline]
 pub fn torus_index(x: isize, y: isize, width: usize, height: usize) -> usize {
-    let (w, h) = (width as isize, height as isize);
-    (y.rem_euclid(h) * w + x.rem_euclid(w)) as usize
+    wrap(y, height) * width + wrap(x, width)
+}
+
+/// `v` read on a circle of `n`: `v mod n`, without a division for a value inside or one
+/// lap outside (a neighbour of a pixel near the wrap), which the synthesis reads for
+/// every neighbour of every pixel.
+#[inline(always)]
+pub fn wrap(v: isize, n: usize) -> usize {
+    let n = n as isize;
+    if (0..n).contains(&v) {
+        v as usize
+    } else if (-n..0).contains(&v) {
+        (v + n) as usize
+    } else if (n..2 * n).contains(&v) {
+        (v - n) as usize
+    } else {
+        v.rem_euclid(n) as usize
+    }
 }
 
 /// Rejects empty and over-large sizes with a message naming `what`.
