@@ -198,7 +198,7 @@ fn tile_size(opts: &SeamlessOptions, input: &Rgba) -> Result<(usize, usize)> {
             Ok((w, h))
         }
         (None, Some(s)) if !(s.is_power_of_two() && (MIN_TILE..=MAX_TILE).contains(&s)) => invalid(format!(
-            "The tile size must be a power of two from {MIN_TILE} to {MAX_TILE} (got {s}); method 'synthesis' takes any `width` and `height`."
+            "The tile size must be a power of two from {MIN_TILE} to {MAX_TILE} (got {s}); for any other size, pass `width` and `height` instead of `size` (method 'synthesis')."
         )),
         (None, Some(s)) => Ok((s, s)),
         (None, None) => {

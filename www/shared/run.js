@@ -15,8 +15,12 @@ export function runControls({ run, cancel, progress, say }) {
     async start(message, work) {
       abort?.abort();
       abort = new AbortController();
+      // A keyboard user who started the run keeps a focused control: Cancel while it
+      // runs, the run button again after (a disabled button drops focus to the page).
+      const keyboard = document.activeElement === run;
       run.disabled = true;
       cancel.disabled = false;
+      if (keyboard) cancel.focus();
       progress.value = 0;
       say(message);
       try {
@@ -28,8 +32,10 @@ export function runControls({ run, cancel, progress, say }) {
         progress.value = 0;
       } finally {
         abort = null;
+        const refocus = document.activeElement === cancel || (keyboard && document.activeElement === document.body);
         run.disabled = false;
         cancel.disabled = true;
+        if (refocus) run.focus();
       }
     },
   };
