@@ -3,7 +3,8 @@
 //! boundaries, and the mean patch energy: shows whether the wrap stands out from the
 //! lines inside. Saves seed 1's tile repeated 2 x 2 as out/seam-<exemplar>-<method>.png.
 //! `cargo run --release --example seam_profile <exemplar|all> <etfmcm|tfmcm|synthesis|bands> [size]`
-//! (`bands`: a tileable synthesis in the banded schedule, which workers share.)
+//! (`bands`: a tileable synthesis in the banded schedule, which workers share; `mend`: the
+//! fixture mended into a tile, its band `BAND`, default 0.25.)
 #[path = "support/textures.rs"]
 mod textures;
 use patternsynth::raster::energy::patch_energy;
@@ -35,6 +36,9 @@ fn main() {
                     ..Default::default()
                 };
                 synthesize_texture(&ex, &o, &mut Silent).unwrap()
+            } else if a[2] == "mend" {
+                let band = std::env::var("BAND").ok().and_then(|b| b.parse().ok()).unwrap_or(0.25);
+                patternsynth::seamless::mend::mend(&img, band, None, seed, &mut Silent).unwrap()
             } else {
                 seamless_tile(&img, &SeamlessOptions { method, size, seed, ..Default::default() }, &mut Silent)
                     .unwrap()

@@ -16,6 +16,9 @@ export const METHODS = {
   synthesizeTexture: { args: 2, progress: true, module: 'texture' },
   blendTextures: { args: 3, progress: true, module: 'texture' },
   seamlessTile: { args: 2, progress: true, module: 'texture' },
+  inpaintTexture: { args: 3, progress: true, module: 'texture' },
+  transferStyle: { args: 3, progress: true, module: 'texture' },
+  applyLayout: { args: 2, module: 'texture' },
   decodeImage: { args: 1, module: 'codec' },
   encodePng: { args: 1, module: 'codec' },
 };

@@ -1,6 +1,7 @@
 import type {
   Stroke, StrokeOptions, StrokeResult, TileOptions, TileResult, ParseSvgOptions, SvgImport, Classification, ClassifyOptions, SuggestOptions, Suggestions,
   Rgba, RgbaImage, TextureOptions, BlendOptions, SeamlessOptions, SeamlessResult,
+  Mask, Layout, TextureWithLayout, InpaintOptions, StyleOptions,
 } from './types.js';
 
 export interface CallOptions {
@@ -47,7 +48,11 @@ export class PatternSynthClient {
   synthesizeStrokes(strokes: Stroke[], opts: StrokeOptions, options?: CallOptions): Promise<StrokeResult>;
   strokeTile(strokes: Stroke[], opts?: TileOptions, options?: CallOptions): Promise<TileResult>;
   suggestStrokes(strokes: Stroke[], opts?: SuggestOptions, options?: CallOptions): Promise<Suggestions>;
-  synthesizeTexture(image: Rgba, opts: TextureOptions, options?: CallOptions): Promise<RgbaImage>;
+  synthesizeTexture(image: Rgba | Rgba[], opts: TextureOptions & { keepLayout: true }, options?: CallOptions): Promise<TextureWithLayout>;
+  synthesizeTexture(image: Rgba | Rgba[], opts: TextureOptions, options?: CallOptions): Promise<RgbaImage>;
+  inpaintTexture(image: Rgba, mask: Mask, opts?: InpaintOptions, options?: CallOptions): Promise<RgbaImage>;
+  transferStyle(style: Rgba, target: Rgba, opts?: StyleOptions, options?: CallOptions): Promise<RgbaImage>;
+  applyLayout(layout: Layout, maps: (Rgba | Rgba[])[], options?: CallOptions): Promise<RgbaImage[]>;
   blendTextures(a: Rgba, b: Rgba, opts: BlendOptions, options?: CallOptions): Promise<RgbaImage>;
   seamlessTile(image: Rgba, opts?: SeamlessOptions, options?: CallOptions): Promise<SeamlessResult>;
   decodeImage(bytes: Uint8Array | ArrayBuffer, options?: CallOptions): Promise<RgbaImage>;

@@ -14,7 +14,7 @@ export function diagnostics(): Diagnostics;
 export declare const initCodecs: Init;
 export declare const initCodecsSync: InitSync;
 export { version, parseSvg, parseSvgReport, classifyStrokes, synthesizeStrokes, strokeTile, suggestStrokes } from './vector.js';
-export { synthesizeTexture, blendTextures, seamlessTile } from './texture.js';
+export { synthesizeTexture, blendTextures, seamlessTile, inpaintTexture, transferStyle, applyLayout } from './texture.js';
 export { decodeImage, encodePng } from './codec.js';
 /** Whether this JavaScript engine runs wasm SIMD: `init()` then loads the SIMD build, else the
  *  scalar one (`*_scalar_bg.wasm`, the same images). A page passing its own wasm URL picks by it. */

@@ -35,6 +35,9 @@ export const suggestStrokes = full.method('suggestStrokes');
 export const synthesizeTexture = full.method('synthesizeTexture');
 export const blendTextures = full.method('blendTextures');
 export const seamlessTile = full.method('seamlessTile');
+export const inpaintTexture = full.method('inpaintTexture');
+export const transferStyle = full.method('transferStyle');
+export const applyLayout = full.method('applyLayout');
 /** The worker protocol of banded synthesis (bands.js and worker.js), not public API. */
 export const bands = Object.freeze({
   open: full.method('bandsOpen'),

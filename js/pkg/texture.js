@@ -27,6 +27,9 @@ export const version = texture.method('version');
 export const synthesizeTexture = texture.method('synthesizeTexture');
 export const blendTextures = texture.method('blendTextures');
 export const seamlessTile = texture.method('seamlessTile');
+export const inpaintTexture = texture.method('inpaintTexture');
+export const transferStyle = texture.method('transferStyle');
+export const applyLayout = texture.method('applyLayout');
 /** The worker protocol of banded synthesis (bands.js and worker.js), not public API. */
 export const bands = Object.freeze({
   open: texture.method('bandsOpen'),

@@ -84,6 +84,32 @@ export interface TextureOptions {
   /** Pixel order: 'bands' (several workers can share it; PatternSynthClient does), the
    *  paper's 'scanline', or 'auto' (default): bands from 512 x 512 output pixels. */
   schedule?: 'auto' | 'scanline' | 'bands';
+  /** Pixels of the exemplar never copied: a mask image of its size, opaque white where a
+   *  pixel is kept out; with several exemplars an array of one mask (or null) per exemplar. */
+  sampleMask?: Mask | (Mask | null)[];
+  /** Guide images: the output follows `target`'s light and dark where the exemplar's
+   *  own guide has them (luminance compared beside the colours; `weight` 1, the default,
+   *  counts it as much as all three colour channels). `exemplar`: one per exemplar. */
+  guides?: { exemplar: Rgba | Rgba[]; target: Rgba; weight?: number };
+  /** Also return the layout: which exemplar pixel each output pixel came from. */
+  keepLayout?: boolean;
+}
+/** A mask: an image where opaque white (alpha and luminance at least half) marks a pixel. */
+export type Mask = Rgba;
+/** Which exemplar pixel each output pixel came from: one entry per pixel, row major,
+ *  `exemplar << 24 | y << 12 | x` (read it as `v >>> 24`, `(v >>> 12) & 4095`, `v & 4095`). */
+export interface Layout { width: number; height: number; exemplars: [number, number][]; data: Uint32Array }
+export interface TextureWithLayout { image: RgbaImage; layout: Layout }
+export interface InpaintOptions {
+  seed?: number; levels?: number; neighbourhood?: number;
+  /** Pixels never copied into the hole (opaque white: kept out). */
+  sampleMask?: Mask;
+}
+export interface StyleOptions {
+  seed?: number;
+  /** How much the target's light and dark counts against the style's texture (default 1). */
+  weight?: number;
+  levels?: number; neighbourhood?: number;
 }
 export type Transition = 'linear' | 'ease' | 'steep';
 export interface BlendOptions extends TextureOptions {
@@ -94,6 +120,10 @@ export interface BlendOptions extends TextureOptions {
   angle?: number;
   /** Transfer applied to 'radial' or an angled ramp. */
   transfer?: Transition;
+  /** [mask of A, mask of B] (null for none). */
+  sampleMask?: (Mask | null)[];
+  guides?: never;
+  keepLayout?: never;
 }
 export interface TileOptions extends ClassifyOptions {
   variation?: boolean; seed?: number;
@@ -113,9 +143,15 @@ export interface TileResult {
   svg: string;
 }
 export interface SeamlessOptions {
-  /** 'etfmcm' (the paper, default), 'tfmcm' (its predecessor) or 'synthesis' (toroidal
-   *  neighbourhood synthesis: keeps structure). */
-  method?: 'etfmcm' | 'tfmcm' | 'synthesis';
+  /** 'etfmcm' (the paper, default), 'tfmcm' (its predecessor), 'synthesis' (toroidal
+   *  neighbourhood synthesis: keeps structure) or 'mend' (the image kept, any size, only a
+   *  band around its wrap re-made). */
+  method?: 'etfmcm' | 'tfmcm' | 'synthesis' | 'mend';
+  /** 'mend': the band's whole width as a share of each side, half along each edge
+   *  (default 0.25: the inner 75% x 75% kept bit for bit). */
+  band?: number;
+  /** 'synthesis' and 'mend': pixels of the image never copied (opaque white). */
+  sampleMask?: Mask;
   /** Tile side, a power of two from 8 to 512 (default: the largest the image allows). */
   size?: number; seed?: number;
   /** Method 'synthesis' only, in place of `size`: any width and height from 8 to 4096

@@ -49,9 +49,11 @@ async function restyle([style, preview]) {
 
 // Pixel buffers and previews go back by transfer, not by copy.
 const transferables = (r) => {
-  const image = r?.image ?? r;
   if (r instanceof Uint8Array) return [r.buffer];
-  const list = image?.data?.buffer instanceof ArrayBuffer ? [image.data.buffer] : [];
+  // An image, { image, layout } (keepLayout), or an array of images (applyLayout).
+  const images = Array.isArray(r) ? r : [r?.image ?? r];
+  const list = images.map((i) => i?.data?.buffer).filter((b) => b instanceof ArrayBuffer);
+  if (r?.layout?.data?.buffer instanceof ArrayBuffer) list.push(r.layout.data.buffer);
   if (typeof ImageBitmap === 'function' && r?.preview instanceof ImageBitmap) list.push(r.preview);
   return list;
 };

@@ -134,8 +134,7 @@ fn initial_row(job: &Job, level: usize, parent: &[Vec<u32>], e: usize, y: usize,
     }
     if level + 1 == job.levels {
         let mut rng = stream(job.params.seed, level, NOISE, y * job.exemplars() + e);
-        let n = job.positions(e, level);
-        out.extend((0..lw).map(|_| rng.below(n) as u32));
+        out.extend((0..lw).map(|_| job.random_position(e, level, &mut rng)));
         return;
     }
     let plw = job.sizes[level + 1].0;
@@ -238,6 +237,11 @@ pub fn store(job: &Job, step: Step, b: usize, rows: &[Vec<u32>], into: &mut [Vec
 /// The banded schedule run in this thread: the same image as any number of workers
 /// running the bands of each step (see `tests/texture.rs`).
 pub fn synthesize(job: &Job, progress: &mut Throttle) -> Result<Rgba> {
+    Ok(job.colours(&sources(job, progress)?))
+}
+
+/// `synthesize`'s finest level as exemplar positions (`synthesis::sources`).
+pub fn sources(job: &Job, progress: &mut Throttle) -> Result<Vec<Vec<u32>>> {
     let steps = steps(job);
     let total: usize = steps.iter().map(|s| job.sizes[s.level].1).sum();
     let mut done = 0usize;
@@ -263,5 +267,5 @@ pub fn synthesize(job: &Job, progress: &mut Throttle) -> Result<Rgba> {
         state = next;
     }
     progress.tick(1.0)?;
-    Ok(job.colours(&state))
+    Ok(state)
 }

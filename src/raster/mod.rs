@@ -11,9 +11,15 @@ pub mod coefficient;
 pub(crate) mod divisor;
 #[cfg(feature = "texture")]
 pub mod energy;
+#[cfg(feature = "texture")]
+pub mod guide;
 pub mod image;
 #[cfg(feature = "texture")]
+pub mod inpaint;
+#[cfg(feature = "texture")]
 pub mod neighbourhood;
+#[cfg(feature = "texture")]
+pub mod pool;
 #[cfg(feature = "texture")]
 pub mod pyramid;
 #[cfg(feature = "texture")]
@@ -26,5 +32,12 @@ pub mod texture;
 pub use self::image::{Image, Rgba};
 #[cfg(feature = "texture")]
 pub use texture::{
-    blend_job, blend_textures, synthesize_texture, texture_job, BlendOptions, Coefficient, TextureOptions,
+    blend_job, blend_textures, pool_job, synthesize_texture, synthesize_textures, texture_job, BlendOptions,
+    Coefficient, Guides, Synthesis, TextureOptions,
+};
+#[cfg(feature = "texture")]
+pub use {
+    guide::{transfer_style, StyleOptions},
+    inpaint::{inpaint_texture, InpaintOptions},
+    pool::{apply_layout, Layout},
 };

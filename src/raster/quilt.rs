@@ -45,8 +45,10 @@ impl Quilt {
     }
 
     /// Exemplar positions (row major in `ex`) for an output `lw` x `lh`, or `None` when
-    /// `window` is.
-    pub fn lay(&self, ex: &Image, lw: usize, lh: usize, rng: &mut Rng) -> Option<Vec<u32>> {
+    /// `window` is. With `allowed` (a sample mask), a window is drawn again (up to 16
+    /// times) while its corners or centre are not allowed; positions it still holds
+    /// that are not allowed are the caller's to replace.
+    pub fn lay(&self, ex: &Image, allowed: Option<&[bool]>, lw: usize, lh: usize, rng: &mut Rng) -> Option<Vec<u32>> {
         let (ew, eh) = (ex.width, ex.height);
         let b = self.window(ew, eh)?;
         let o = b / 4;
@@ -72,7 +74,20 @@ impl Quilt {
                 // pixels laid already.
                 let mut best = (f32::INFINITY, (0, 0));
                 for _ in 0..self.candidates.max(1) {
-                    let origin = (rng.below(ew - b + 1), rng.below(eh - b + 1));
+                    let mut origin = (rng.below(ew - b + 1), rng.below(eh - b + 1));
+                    if let Some(a) = allowed {
+                        let inside = |o: (usize, usize)| {
+                            [(0, 0), (b - 1, 0), (0, b - 1), (b - 1, b - 1), (b / 2, b / 2)]
+                                .iter()
+                                .all(|&(dx, dy)| a[pos(o, dx, dy) as usize])
+                        };
+                        for _ in 0..16 {
+                            if inside(origin) {
+                                break;
+                            }
+                            origin = (rng.below(ew - b + 1), rng.below(eh - b + 1));
+                        }
+                    }
                     let mut e = 0.0;
                     for dy in 0..b {
                         for dx in 0..b {
@@ -171,7 +186,7 @@ mod tests {
     fn every_pixel_copies_a_position_and_neighbours_mostly_continue() {
         let ex = gradient(32, 32);
         let (lw, lh) = (70, 45);
-        let q = Quilt::default().lay(&ex, lw, lh, &mut Rng::new(3)).unwrap();
+        let q = Quilt::default().lay(&ex, None, lw, lh, &mut Rng::new(3)).unwrap();
         assert_eq!(q.len(), lw * lh);
         assert!(q.iter().all(|&p| (p as usize) < 32 * 32));
         // Inside a window the right neighbour copies the next exemplar pixel; windows are
@@ -213,7 +228,7 @@ mod tests {
                 ex.data[y * 64 + x] = if x < 32 { [20.0; 3] } else { [rng.below(256) as f32; 3] };
             }
         }
-        let q = Quilt::default().lay(&ex, 128, 128, &mut Rng::new(1)).unwrap();
+        let q = Quilt::default().lay(&ex, None, 128, 128, &mut Rng::new(1)).unwrap();
         let left = q.iter().filter(|&&p| (p % 64) < 32).count() as f64 / q.len() as f64;
         assert!((0.3..0.7).contains(&left), "left share {left}");
     }

@@ -4,6 +4,7 @@
 use super::bands;
 use super::coefficient::{self, Transfer};
 use super::image::{Image, Rgba};
+use super::pool::{self, Layout, Pool};
 use super::synthesis::{self, Job, Params, Schedule, Sources};
 use crate::error::{invalid, Result};
 use crate::progress::{Progress, Throttle};
@@ -25,6 +26,31 @@ pub struct TextureOptions {
     /// seamless tile's refined E-TFMCM; not an option of the JS API).
     #[serde(skip)]
     pub start: Option<Image>,
+    /// Per exemplar, which of its pixels may be copied (the JS `sampleMask`, read by
+    /// the wasm layer: a mask image is opaque white where a pixel is kept out).
+    #[serde(skip)]
+    pub sample_masks: Vec<Option<Vec<bool>>>,
+    /// A guide (the JS `guides`, read by the wasm layer), one exemplar guide per
+    /// exemplar.
+    #[serde(skip)]
+    pub guides: Option<Guides>,
+    /// Return the layout too (`Synthesis::layout`).
+    pub keep_layout: bool,
+}
+
+/// Guide images: grey values (luminance) of each exemplar's and of the output's size,
+/// and the weight of their difference against the colours' (see `synthesis::Guide`).
+#[derive(Clone, Debug)]
+pub struct Guides {
+    pub exemplars: Vec<Image>,
+    pub target: Image,
+    pub weight: f32,
+}
+
+/// What a synthesis gives: the image and, when asked, its layout.
+pub struct Synthesis {
+    pub image: Rgba,
+    pub layout: Option<Layout>,
 }
 
 impl Default for TextureOptions {
@@ -40,6 +66,9 @@ impl Default for TextureOptions {
             neighbourhood: p.neighbourhood,
             schedule: p.schedule,
             start: None,
+            sample_masks: Vec::new(),
+            guides: None,
+            keep_layout: false,
         }
     }
 }
@@ -82,6 +111,7 @@ impl TextureOptions {
             tileable: self.tileable,
             schedule: self.schedule,
             start: self.start.clone(),
+            constraints: synthesis::Constraints { allowed: self.sample_masks.clone(), ..Default::default() },
             ..Params::default()
         }
     }
@@ -89,20 +119,92 @@ impl TextureOptions {
 
 /// More of one texture: a `width x height` image that looks like `exemplar`.
 pub fn synthesize_texture(exemplar: &Image, opts: &TextureOptions, progress: &mut dyn Progress) -> Result<Rgba> {
-    run(&texture_job(exemplar, opts)?, &mut Throttle::new(progress))
+    Ok(synthesize_textures(std::slice::from_ref(exemplar), opts, progress)?.image)
+}
+
+/// More of a material seen in one or several exemplars: each output pixel is drawn
+/// from any of them (`pool`), by the options' sample masks and guide; with
+/// `keep_layout`, also which exemplar pixel each output pixel came from.
+pub fn synthesize_textures(
+    exemplars: &[Image],
+    opts: &TextureOptions,
+    progress: &mut dyn Progress,
+) -> Result<Synthesis> {
+    let (job, pool) = pool_job(exemplars, opts)?;
+    let src = sources(&job, &mut Throttle::new(progress))?;
+    let layout = opts.keep_layout.then(|| Layout::new(&pool, opts.width, opts.height, &src[0]));
+    Ok(Synthesis { image: job.colours(&src), layout })
 }
 
 /// `synthesize_texture`'s work, prepared (for running its bands on several workers).
 pub fn texture_job(exemplar: &Image, opts: &TextureOptions) -> Result<Job> {
-    Job::new(Sources::One(exemplar), &opts.params())
+    Ok(pool_job(std::slice::from_ref(exemplar), opts)?.0)
+}
+
+/// `synthesize_textures`' work, prepared, and the pool its positions are in.
+pub fn pool_job(exemplars: &[Image], opts: &TextureOptions) -> Result<(Job, Pool)> {
+    if exemplars.is_empty() {
+        return invalid("No exemplar given: pass an image, or an array of images.");
+    }
+    super::image::check_output(opts.width, opts.height)?;
+    let mut params = opts.params();
+    let pooled = exemplars.len() > 1;
+    if pooled {
+        for e in exemplars {
+            super::image::check_size(e.width, e.height, "exemplar")?;
+        }
+        // The levels the exemplars themselves call for, which the gutters then fit.
+        let refs: Vec<&Image> = exemplars.iter().collect();
+        let side = opts.neighbourhood;
+        params.levels = Some(
+            opts.levels
+                .unwrap_or_else(|| synthesis::default_levels(&refs, opts.width, opts.height, side, opts.tileable)),
+        );
+    }
+    let gutter = pool::gutter(params.levels.unwrap_or(1), opts.neighbourhood);
+    let pool = pool::pool(exemplars, &opts.sample_masks, gutter)?;
+    params.constraints.allowed = vec![pool.allowed.clone()];
+    if let Some(g) = &opts.guides {
+        if g.exemplars.len() != exemplars.len() {
+            return invalid(format!(
+                "{} exemplar guides for {} exemplars: give one per exemplar, in their order.",
+                g.exemplars.len(),
+                exemplars.len()
+            ));
+        }
+        for (i, (ge, e)) in g.exemplars.iter().zip(exemplars).enumerate() {
+            if (ge.width, ge.height) != (e.width, e.height) {
+                return invalid(format!(
+                    "Exemplar guide {} is {}x{}; its exemplar is {}x{}.",
+                    i + 1,
+                    ge.width,
+                    ge.height,
+                    e.width,
+                    e.height
+                ));
+            }
+        }
+        params.constraints.guide = Some(synthesis::Guide {
+            exemplar: pool::pool(&g.exemplars, &[], gutter)?.image,
+            target: g.target.clone(),
+            weight: g.weight,
+        });
+    }
+    let job = Job::new(Sources::One(&pool.image), &params)?;
+    Ok((job, pool))
 }
 
 /// Runs a job in the schedule its parameters ask for.
 pub fn run(job: &Job, progress: &mut Throttle) -> Result<Rgba> {
+    Ok(job.colours(&sources(job, progress)?))
+}
+
+/// A job's finest sources, in the schedule its parameters ask for.
+pub fn sources(job: &Job, progress: &mut Throttle) -> Result<Vec<Vec<u32>>> {
     if job.params.banded() {
-        bands::synthesize(job, progress)
+        bands::sources(job, progress)
     } else {
-        synthesis::synthesize(job, progress)
+        synthesis::sources(job, progress)
     }
 }
 

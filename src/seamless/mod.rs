@@ -6,6 +6,7 @@ pub mod cooccurrence;
 pub mod density;
 pub mod etfmcm;
 pub mod measure;
+pub mod mend;
 pub mod order;
 pub mod tile;
 

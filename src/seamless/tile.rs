@@ -32,6 +32,8 @@ pub enum Method {
     Tfmcm,
     /// Toroidal neighbourhood synthesis (ours).
     Synthesis,
+    /// The image kept, a band around its wrap re-made (`mend`).
+    Mend,
 }
 
 #[derive(Clone, Debug, Deserialize)]
@@ -52,6 +54,13 @@ pub struct SeamlessOptions {
     /// E-TFMCM and TFMCM: refine the co-occurrence tile with toroidal synthesis (see
     /// `refine`); `false` gives the paper's tile as it is.
     pub refine: bool,
+    /// Mend: the re-made band's whole width as a share of each side (half along each
+    /// edge); by default `mend::DEFAULT_BAND`.
+    pub band: Option<f64>,
+    /// Which pixels of the image may be copied (the JS `sampleMask`, read by the wasm
+    /// layer; methods 'synthesis' and 'mend').
+    #[serde(skip)]
+    pub sample_mask: Option<Vec<bool>>,
 }
 
 impl Default for SeamlessOptions {
@@ -64,6 +73,8 @@ impl Default for SeamlessOptions {
             seed: 1,
             max_count_difference: 50.0,
             refine: true,
+            band: None,
+            sample_mask: None,
         }
     }
 }
@@ -93,6 +104,17 @@ const MIN_TILE: usize = 8;
 
 /// A seamless tile from `input` (RGBA).
 pub fn seamless_tile(input: &Rgba, opts: &SeamlessOptions, progress: &mut dyn Progress) -> Result<SeamlessResult> {
+    if opts.method == Method::Mend {
+        return mended(input, opts, progress);
+    }
+    if opts.band.is_some() {
+        return invalid("`band` is an option of method 'mend' (the image kept, a band around its wrap re-made).");
+    }
+    if opts.sample_mask.is_some() && opts.method != Method::Synthesis {
+        return invalid(
+            "sampleMask applies to methods 'synthesis' and 'mend' (E-TFMCM's statistics are of the whole image).",
+        );
+    }
     let mut warnings = Vec::new();
     // Synthesis makes a tile of any size from the image at its own scale; E-TFMCM's
     // tile is its exemplar's size, so the image is scaled to it.
@@ -108,10 +130,26 @@ pub fn seamless_tile(input: &Rgba, opts: &SeamlessOptions, progress: &mut dyn Pr
             let mut progress = Throttle::new(progress);
             let img =
                 Image { width: ex_side, height: ex_side, data: rgb.iter().map(|p| p.map(|v| v as f32)).collect() };
-            let o = TextureOptions { width, height, seed: opts.seed, tileable: true, ..Default::default() };
+            // The sample mask cropped and scaled as the image was: a pixel is kept out
+            // where any pixel of its footprint was.
+            let sample_masks = match &opts.sample_mask {
+                None => Vec::new(),
+                Some(m) => {
+                    if m.len() != input.width * input.height {
+                        return invalid("The sample mask is not of the image's size.");
+                    }
+                    let out: Vec<u8> = m.iter().flat_map(|&a| if a { [0, 0, 0, 255] } else { [255; 4] }).collect();
+                    let out = Rgba { width: input.width, height: input.height, data: out };
+                    let (_, _, scaled) = prepare(&out, width.max(height), false, &mut Vec::new())?;
+                    vec![Some(scaled.iter().map(|p| p[0] == 0).collect())]
+                }
+            };
+            let o =
+                TextureOptions { width, height, seed: opts.seed, tileable: true, sample_masks, ..Default::default() };
             let out = synthesize_texture(&img, &o, &mut |f| progress.tick(f).is_ok())?;
             (out.rgb(), None, None, None)
         }
+        Method::Mend => unreachable!("made by `mended`"),
         Method::Etfmcm | Method::Tfmcm => {
             // The channel whose histogram is least crowded.
             let channels: Vec<Grey> =
@@ -151,6 +189,36 @@ pub fn seamless_tile(input: &Rgba, opts: &SeamlessOptions, progress: &mut dyn Pr
         channel,
         count_difference,
         decisions,
+    })
+}
+
+/// Method 'mend': the image itself, any size, a band around its wrap re-made.
+fn mended(input: &Rgba, opts: &SeamlessOptions, progress: &mut dyn Progress) -> Result<SeamlessResult> {
+    let (w, h) = (input.width, input.height);
+    crate::raster::image::check_size(w, h, "image")?;
+    if input.data.len() != w * h * 4 {
+        return invalid(format!("The image data has {} bytes; {w}x{h} RGBA needs {}.", input.data.len(), w * h * 4));
+    }
+    if w < MIN_TILE || h < MIN_TILE {
+        return invalid(format!("The image is {w}x{h}; a seamless tile needs at least {MIN_TILE} pixels on a side."));
+    }
+    if opts.size.is_some() || opts.width.is_some() || opts.height.is_some() {
+        return invalid("Method 'mend' keeps the image's own size: leave out `size`, `width` and `height`.");
+    }
+    let band = opts.band.unwrap_or(super::mend::DEFAULT_BAND);
+    if opts.sample_mask.as_ref().is_some_and(|m| m.len() != w * h) {
+        return invalid("The sample mask is not of the image's size.");
+    }
+    let image = super::mend::mend(input, band, opts.sample_mask.clone(), opts.seed, progress)?;
+    let rgb = image.rgb();
+    Ok(SeamlessResult {
+        restoration_rate: restoration_rgb(&input.rgb(), &rgb),
+        seam_score: seam_score(&rgb, w, h),
+        image,
+        warnings: Vec::new(),
+        channel: None,
+        count_difference: None,
+        decisions: None,
     })
 }
 

@@ -52,8 +52,12 @@ fn with<T>(handle: u32, f: impl FnOnce(&mut Open) -> Result<T, JsValue>) -> Resu
 pub fn bands_open(method: &str, args: js_sys::Array) -> Result<JsValue, JsValue> {
     let job = match method {
         "synthesizeTexture" => {
-            let (ex, opts) = texture_args(args.get(0), args.get(1))?;
-            raster::texture_job(&ex, &opts)
+            let (exemplars, opts) = texture_args(args.get(0), args.get(1))?;
+            if opts.keep_layout {
+                // The layout is the sources, which banded workers turn into colours.
+                return Ok(JsValue::NULL);
+            }
+            raster::pool_job(&exemplars, &opts).map(|(job, _)| job)
         }
         "blendTextures" => {
             let (a, b, opts) = blend_args(args.get(0), args.get(1), args.get(2))?;

@@ -20,6 +20,8 @@ mod bands;
 #[cfg(feature = "codec")]
 mod codec;
 mod heap;
+#[cfg(feature = "texture")]
+mod masks;
 mod read;
 #[cfg(any(feature = "texture", feature = "codec"))]
 mod rgba;

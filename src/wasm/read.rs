@@ -242,7 +242,7 @@ fn plain(v: &JsValue, what: &str, depth: usize, budget: &mut usize) -> Result<Js
 }
 
 /// An object's own string keys (`Reflect.ownKeys`, which a Proxy trap may make throw).
-fn own_keys(v: &JsValue, what: &str) -> Result<Vec<String>, JsValue> {
+pub fn own_keys(v: &JsValue, what: &str) -> Result<Vec<String>, JsValue> {
     let keys = js_sys::Reflect::own_keys(v.unchecked_ref())
         .map_err(|e| error(&format!("Listing the {what}' keys threw: {}", thrown(&e))))?;
     Ok(keys.iter().filter_map(|k| k.as_string()).collect())

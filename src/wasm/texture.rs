@@ -1,40 +1,100 @@
 //! Engines 2 and 3's entry points: texture synthesis, blends, seamless tiles.
 
+use super::masks;
 use super::read::{self, options};
-use super::rgba::{rgba_from_js, rgba_to_js};
+use super::rgba::rgba_to_js;
 use super::{error, js_error, to_js, JsProgress};
 use crate::raster::{self, coefficient::Transfer, Coefficient, Image};
 use crate::seamless;
 use wasm_bindgen::prelude::*;
 
-/// Reads `{ width, height, data }` (RGBA bytes) from JS into an engine image.
-fn image_from_js(v: &JsValue, what: &str) -> Result<Image, JsValue> {
-    let (w, h, bytes) = rgba_from_js(v, what)?;
-    Image::from_rgba8(w, h, &bytes).map_err(js_error)
-}
-
 /// The options that carry the output size.
 const SIZE: [&str; 2] = ["width", "height"];
 
-/// More of one texture ("make more of this texture").
+/// The texture options read by hand beside `TextureOptions`' own (images: see `masks`).
+const TEXTURE_KEYS: [&str; 2] = ["sampleMask", "guides"];
+
+/// More of a texture, from one exemplar or several ("make more of this material").
+/// With `keepLayout`, `{ image, layout }`.
 #[wasm_bindgen(js_name = synthesizeTexture)]
 pub fn synthesize_texture(image: JsValue, opts: JsValue, on_progress: JsValue) -> Result<JsValue, JsValue> {
-    let (ex, opts) = texture_args(image, opts)?;
+    let (exemplars, opts) = texture_args(image, opts)?;
     let mut progress = JsProgress::from_js(on_progress)?;
-    let res = raster::synthesize_texture(&ex, &opts, &mut progress);
+    let res = raster::synthesize_textures(&exemplars, &opts, &mut progress);
+    let out = progress.finish(res)?;
+    let image = rgba_to_js(out.image.width, out.image.height, &out.image.data);
+    match &out.layout {
+        None => Ok(image),
+        Some(layout) => {
+            let o = js_sys::Object::new();
+            js_sys::Reflect::set(&o, &"image".into(), &image)?;
+            js_sys::Reflect::set(&o, &"layout".into(), &masks::layout_to_js(layout))?;
+            Ok(o.into())
+        }
+    }
+}
+
+/// `synthesizeTexture`'s arguments read.
+pub(super) fn texture_args(image: JsValue, opts: JsValue) -> Result<(Vec<Image>, raster::TextureOptions), JsValue> {
+    let exemplars = masks::images(&image, "image")?;
+    let mut o: raster::TextureOptions = options(&opts, "texture options", &TEXTURE_KEYS, &SIZE)?;
+    if !(opts.is_undefined() || opts.is_null()) {
+        let sizes: Vec<(usize, usize)> = exemplars.iter().map(|e| (e.width, e.height)).collect();
+        o.sample_masks = masks::sample_masks(&read::get(&opts, "sampleMask", "texture options")?, &sizes)?;
+        o.guides =
+            masks::guides(&read::get(&opts, "guides", "texture options")?, exemplars.len(), (o.width, o.height))?;
+    }
+    Ok((exemplars, o))
+}
+
+/// The pixels of `image` where `mask` is opaque white filled from the rest of it; every
+/// other pixel kept byte for byte.
+#[wasm_bindgen(js_name = inpaintTexture)]
+pub fn inpaint_texture(image: JsValue, mask: JsValue, opts: JsValue, on_progress: JsValue) -> Result<JsValue, JsValue> {
+    let input = masks::rgba(&image, "image")?;
+    let size = (input.width, input.height);
+    let hole = masks::mask(&mask, "mask", size)?;
+    let mut o: raster::InpaintOptions = options(&opts, "inpaint options", &["sampleMask"], &[])?;
+    if !(opts.is_undefined() || opts.is_null()) {
+        let m = read::get(&opts, "sampleMask", "inpaint options")?;
+        o.sample_mask = masks::sample_masks(&m, &[size])?.pop().flatten();
+    }
+    let mut progress = JsProgress::from_js(on_progress)?;
+    let res = raster::inpaint_texture(&input, &hole, &o, &mut progress);
     let out = progress.finish(res)?;
     Ok(rgba_to_js(out.width, out.height, &out.data))
 }
 
-/// `synthesizeTexture`'s arguments read.
-pub(super) fn texture_args(image: JsValue, opts: JsValue) -> Result<(Image, raster::TextureOptions), JsValue> {
-    let ex = image_from_js(&image, "image")?;
-    Ok((ex, options(&opts, "texture options", &[], &SIZE)?))
+/// An image of `target`'s size in `style`'s texture, following `target`'s light and dark.
+#[wasm_bindgen(js_name = transferStyle)]
+pub fn transfer_style(
+    style: JsValue,
+    target: JsValue,
+    opts: JsValue,
+    on_progress: JsValue,
+) -> Result<JsValue, JsValue> {
+    let style = masks::image(&style, "style image")?;
+    let target = masks::image(&target, "target image")?;
+    let o: raster::StyleOptions = options(&opts, "style options", &[], &[])?;
+    let mut progress = JsProgress::from_js(on_progress)?;
+    let res = raster::transfer_style(&style, &target, &o, &mut progress);
+    let out = progress.finish(res)?;
+    Ok(rgba_to_js(out.width, out.height, &out.data))
+}
+
+/// Replays a synthesis's layout on other maps of its exemplars (normal, roughness,
+/// height): one image per map.
+#[wasm_bindgen(js_name = applyLayout)]
+pub fn apply_layout(layout: JsValue, maps: JsValue) -> Result<JsValue, JsValue> {
+    let layout = masks::layout_from_js(&layout)?;
+    let maps = masks::maps(&maps, layout.exemplars.len())?;
+    let out = raster::apply_layout(&layout, &maps).map_err(js_error)?;
+    Ok(masks::images_to_js(&out))
 }
 
 /// The blend options' own keys beside those of `TextureOptions` (read by hand:
 /// `coefficient` may be a string or a Float32Array).
-const BLEND_KEYS: [&str; 3] = ["coefficient", "angle", "transfer"];
+const BLEND_KEYS: [&str; 4] = ["coefficient", "angle", "transfer", "sampleMask"];
 
 fn transfer(name: &str) -> Result<Transfer, JsValue> {
     match name {
@@ -61,9 +121,13 @@ pub(super) fn blend_args(
     b: JsValue,
     opts: JsValue,
 ) -> Result<(Image, Image, raster::BlendOptions), JsValue> {
-    let a = image_from_js(&a, "first image (A)")?;
-    let b = image_from_js(&b, "second image (B)")?;
-    let base: raster::TextureOptions = options(&opts, "blend options", &BLEND_KEYS, &SIZE)?;
+    let a = masks::image(&a, "first image (A)")?;
+    let b = masks::image(&b, "second image (B)")?;
+    let mut base: raster::TextureOptions = options(&opts, "blend options", &BLEND_KEYS, &SIZE)?;
+    if !(opts.is_undefined() || opts.is_null()) {
+        let sizes = [(a.width, a.height), (b.width, b.height)];
+        base.sample_masks = masks::sample_masks(&read::get(&opts, "sampleMask", "blend options")?, &sizes)?;
+    }
     let key = |k: &str| read::get(&opts, k, "blend options");
     let (coefficient_js, angle_js, transfer_js) = (key("coefficient")?, key("angle")?, key("transfer")?);
     let angle = match angle_js.as_f64() {
@@ -98,9 +162,14 @@ pub(super) fn blend_args(
 /// A seamless tile (SPEC 3): E-TFMCM, TFMCM or toroidal synthesis.
 #[wasm_bindgen(js_name = seamlessTile)]
 pub fn seamless_tile(image: JsValue, opts: JsValue, on_progress: JsValue) -> Result<JsValue, JsValue> {
-    let (width, height, data) = rgba_from_js(&image, "image")?;
-    let opts: seamless::SeamlessOptions = options(&opts, "seamless tile options", &[], &[])?;
-    let input = raster::Rgba { width, height, data };
+    let input = masks::rgba(&image, "image")?;
+    let mut o: seamless::SeamlessOptions = options(&opts, "seamless tile options", &["sampleMask"], &[])?;
+    if !(opts.is_undefined() || opts.is_null()) {
+        let size = [(input.width, input.height)];
+        let m = read::get(&opts, "sampleMask", "seamless tile options")?;
+        o.sample_mask = masks::sample_masks(&m, &size)?.pop().flatten();
+    }
+    let opts = o;
     let mut progress = JsProgress::from_js(on_progress)?;
     let res = seamless::seamless_tile(&input, &opts, &mut progress);
     let res = progress.finish(res)?;

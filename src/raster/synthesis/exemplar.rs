@@ -3,24 +3,78 @@
 //! pixels, and over the parent level's weighted by `PARENT_WEIGHT`.
 
 use super::lanes::{px, Px, Sum};
+use super::mask;
+use crate::error::{invalid, Result};
 use crate::raster::divisor::Divisor;
 use crate::raster::image::Image;
 use crate::raster::neighbourhood::Shape;
 use crate::raster::pyramid::{self, Edge};
+use crate::rng::Rng;
 
-/// One level of an exemplar, its pixels padded to four lanes (`lanes`).
+/// One level of an exemplar, its pixels padded to four lanes (`lanes`): the colour,
+/// and in the fourth lane the guide (scaled by its weight; 0 without a guide).
 pub(crate) struct Plane {
     pub width: usize,
     pub height: usize,
     pub data: Vec<Px>,
     /// The width, to turn positions into columns and rows.
     pub columns: Divisor,
+    /// The positions that may be copied, when not all may (a sample mask).
+    allowed: Option<Allowed>,
+}
+
+/// Positions that may be copied: as a mask, and listed (to draw from at random).
+struct Allowed {
+    mask: Vec<bool>,
+    list: Vec<u32>,
 }
 
 impl Plane {
     fn new(img: &Image) -> Plane {
         let data = img.data.iter().map(|&c| px(c)).collect();
-        Plane { width: img.width, height: img.height, data, columns: Divisor::new(img.width) }
+        Plane { width: img.width, height: img.height, data, columns: Divisor::new(img.width), allowed: None }
+    }
+
+    /// Sets the guide lane from a grey image of the plane's size, times `scale`.
+    fn guide(&mut self, grey: &Image, scale: f32) {
+        for (p, g) in self.data.iter_mut().zip(&grey.data) {
+            p[3] = scale * g[0];
+        }
+    }
+
+    /// Whether position `pos` may be copied.
+    #[inline(always)]
+    pub fn allows(&self, pos: u32) -> bool {
+        self.allowed.as_ref().is_none_or(|a| a.mask[pos as usize])
+    }
+
+    /// A position that may be copied, at random (without a mask, `rng.below` of the
+    /// pixel count, as before masks existed).
+    #[inline]
+    pub fn random(&self, rng: &mut Rng) -> u32 {
+        match &self.allowed {
+            None => rng.below(self.data.len()) as u32,
+            Some(a) => a.list[rng.below(a.list.len())],
+        }
+    }
+
+    /// How many positions may be copied.
+    pub fn allowed_count(&self) -> usize {
+        self.allowed.as_ref().map_or(self.data.len(), |a| a.list.len())
+    }
+
+    /// The mask of positions that may be copied, if some may not.
+    pub fn allowed_mask(&self) -> Option<&[bool]> {
+        self.allowed.as_ref().map(|a| a.mask.as_slice())
+    }
+
+    /// Calls `f` with every position that may be copied, in order.
+    #[inline]
+    pub fn each_allowed(&self, mut f: impl FnMut(u32)) {
+        match &self.allowed {
+            None => (0..self.data.len() as u32).for_each(f),
+            Some(a) => a.list.iter().for_each(|&p| f(p)),
+        }
     }
 
     /// Back to an image (the quilt reads the coarsest level as one).
@@ -37,7 +91,7 @@ impl Plane {
 
     /// The pixel at (x, y) with coordinates clamped to the plane.
     #[inline]
-    fn clamped(&self, x: isize, y: isize) -> &Px {
+    pub fn clamped(&self, x: isize, y: isize) -> &Px {
         let x = x.clamp(0, self.width as isize - 1) as usize;
         let y = y.clamp(0, self.height as isize - 1) as usize;
         &self.data[y * self.width + x]
@@ -53,11 +107,43 @@ pub(crate) struct Exemplar {
 }
 
 impl Exemplar {
-    pub fn new(img: &Image, levels: usize) -> Exemplar {
+    /// `img`'s pyramid. `allowed` (one flag per pixel) keeps positions out of copying:
+    /// their colours are first filled from around them (`mask::fill`), so that coarser
+    /// levels do not carry them, and each level's allowed positions are eroded from the
+    /// finer one's (`mask::pyramid`). `guide`: a grey image of `img`'s size and its
+    /// lane's scale (see `Guide`).
+    pub fn new(img: &Image, levels: usize, allowed: Option<&[bool]>, guide: Option<(&Image, f32)>) -> Result<Exemplar> {
+        let filled;
+        let img = match allowed {
+            Some(a) => {
+                filled = mask::fill(img, a);
+                &filled
+            }
+            None => img,
+        };
         let images = pyramid::build(img, levels, Edge::Clamp);
-        let upsampled = images.windows(2).map(|w| Plane::new(&pyramid::upsample(&w[1], w[0].width, w[0].height)));
-        let upsampled = upsampled.collect();
-        Exemplar { levels: images.iter().map(Plane::new).collect(), upsampled }
+        let upsample = |w: &[Image]| pyramid::upsample(&w[1], w[0].width, w[0].height);
+        let mut planes: Vec<Plane> = images.iter().map(Plane::new).collect();
+        let mut upsampled: Vec<Plane> = images.windows(2).map(|w| Plane::new(&upsample(w))).collect();
+        if let Some((grey, scale)) = guide {
+            let greys = pyramid::build(grey, levels, Edge::Clamp);
+            planes.iter_mut().zip(&greys).for_each(|(p, g)| p.guide(g, scale));
+            upsampled.iter_mut().zip(greys.windows(2)).for_each(|(p, w)| p.guide(&upsample(w), scale));
+        }
+        if let Some(a) = allowed {
+            for (l, m) in mask::pyramid(a.to_vec(), img.width, img.height, levels, false).into_iter().enumerate() {
+                let list: Vec<u32> = (0..m.len() as u32).filter(|&p| m[p as usize]).collect();
+                if list.is_empty() {
+                    return invalid(format!(
+                        "The sample mask leaves no {} to copy from{}: keep more of the image.",
+                        if l == 0 { "pixel".to_string() } else { "region".to_string() },
+                        if l == 0 { String::new() } else { format!(" at 1/{} scale", 1 << l) }
+                    ));
+                }
+                planes[l].allowed = Some(Allowed { mask: m, list });
+            }
+        }
+        Ok(Exemplar { levels: planes, upsampled })
     }
 }
 

@@ -1,8 +1,9 @@
 //! A synthesis prepared: the exemplars' pyramids, the mixing weights, the level sizes
 //! and the neighbourhood shapes, which both schedules run their passes over.
 
-use super::exemplar::{distance, Exemplar, Offsets};
+use super::exemplar::{distance, Exemplar, Offsets, Plane};
 use super::lanes::{px, Px};
+use super::mask;
 use super::mixer::{Mixer, MU_ONE};
 use super::pass::Pass;
 use super::{default_levels, Params, Sources};
@@ -41,6 +42,10 @@ pub struct Job {
     start: Option<Start>,
     /// The coarsest level's starting maps, made once (`starts`).
     starts: OnceLock<Vec<Vec<u32>>>,
+    /// The known output pixels at each level, finest first (`Constraints::known`).
+    pub(crate) known: Option<Vec<Vec<bool>>>,
+    /// The target guide at each level, finest first, scaled as the exemplars' guide lane.
+    pub(crate) target: Option<Vec<Vec<f32>>>,
 }
 
 /// How the coarsest level starts when it is not grown from noise.
@@ -51,6 +56,9 @@ enum Start {
     /// (centre included) best matches the picture's there, at the coarsest level, read
     /// on the torus. The picture's own colours are never copied.
     Layout(Vec<Px>),
+    /// Known pixels kept, the others filled from the edge of the known region inwards
+    /// (`onion`).
+    Onion,
 }
 
 impl Job {
@@ -100,8 +108,67 @@ impl Job {
             }
         }
         let half = (side / 2) as isize;
-        let exs: Vec<Exemplar> = exemplars.iter().map(|e| Exemplar::new(e, levels)).collect();
+        let c = &params.constraints;
+        if c.allowed.len() > exemplars.len() {
+            return invalid(format!("{} sample masks for {} exemplars.", c.allowed.len(), exemplars.len()));
+        }
+        for (i, (e, a)) in exemplars.iter().zip(&c.allowed).enumerate() {
+            if a.as_ref().is_some_and(|a| a.len() != e.width * e.height) {
+                return invalid(format!(
+                    "Sample mask {} does not match its exemplar ({}x{}).",
+                    i + 1,
+                    e.width,
+                    e.height
+                ));
+            }
+        }
+        let e0 = exemplars[0];
+        if let Some(known) = &c.known {
+            if known.len() != width * height || (e0.width, e0.height) != (width, height) {
+                return invalid("Known pixels need an exemplar of the output's size, and one flag per pixel.");
+            }
+            if exemplars.len() > 1 {
+                return invalid("Known pixels come from one exemplar.");
+            }
+        }
+        let guide = match &c.guide {
+            None => None,
+            Some(g) => {
+                if exemplars.len() > 1 {
+                    return invalid("A guide applies to one exemplar (blends take none).");
+                }
+                if (g.exemplar.width, g.exemplar.height) != (e0.width, e0.height) {
+                    return invalid(format!(
+                        "The exemplar's guide is {}x{}; the exemplar is {}x{}.",
+                        g.exemplar.width, g.exemplar.height, e0.width, e0.height
+                    ));
+                }
+                if (g.target.width, g.target.height) != (width, height) {
+                    return invalid(format!(
+                        "The target guide is {}x{}; the output is {width}x{height}.",
+                        g.target.width, g.target.height
+                    ));
+                }
+                Some(g)
+            }
+        };
+        let exs: Vec<Exemplar> = exemplars
+            .iter()
+            .enumerate()
+            .map(|(i, e)| {
+                let allowed = c.allowed.get(i).and_then(|a| a.as_deref());
+                Exemplar::new(e, levels, allowed, guide.map(|g| (&g.exemplar, g.scale())))
+            })
+            .collect::<Result<_>>()?;
         let sizes: Vec<_> = (0..levels).map(|l| (width.div_ceil(1 << l), height.div_ceil(1 << l))).collect();
+        let known = c.known.as_ref().map(|k| mask::pyramid(k.clone(), width, height, levels, params.tileable));
+        let target = guide.map(|g| {
+            let scale = g.scale();
+            pyramid::build(&g.target, levels, Edge::Clamp)
+                .into_iter()
+                .map(|l| l.data.iter().map(|p| scale * p[0]).collect())
+                .collect()
+        });
         let quilt = quilt_params();
         let quiltable = exs.iter().all(|ex| {
             let coarsest = &ex.levels[levels - 1];
@@ -119,6 +186,7 @@ impl Job {
                 debug_assert_eq!((coarsest.width, coarsest.height), sizes[levels - 1]);
                 Some(Start::Layout(coarsest.data.iter().map(|&c| px(c)).collect()))
             }
+            None if known.is_some() => Some(Start::Onion),
             None => (quiltable && (!params.tileable || tile_quilt())).then_some(Start::Quilt(quilt)),
         };
         Ok(Job {
@@ -130,6 +198,8 @@ impl Job {
             full: Shape::full(half),
             start,
             starts: OnceLock::new(),
+            known,
+            target,
         })
     }
 
@@ -168,10 +238,18 @@ impl Job {
                     .enumerate()
                     .map(|(e, ex)| {
                         let mut rng = Rng::new(self.params.seed ^ (0x51 << 56) ^ e as u64);
-                        quilt.lay(&ex.levels[level].image(), lw, lh, &mut rng).expect("Job::new checked the window")
+                        let plane = &ex.levels[level];
+                        let mut map = quilt
+                            .lay(&plane.image(), plane.allowed_mask(), lw, lh, &mut rng)
+                            .expect("Job::new checked the window");
+                        // Windows that still reach masked positions: those pixels start
+                        // anywhere allowed, and the passes join them.
+                        map.iter_mut().filter(|p| !plane.allows(**p)).for_each(|p| *p = plane.random(&mut rng));
+                        map
                     })
                     .collect(),
                 Some(Start::Layout(picture)) => exs.map(|ex| self.layout(ex, level, picture)).collect(),
+                Some(Start::Onion) => vec![self.onion(level)],
             }
         })
     }
@@ -194,12 +272,12 @@ impl Job {
                     shape.own.iter().map(|&(dx, dy)| picture[torus_index(x as isize + dx, y as isize + dy, lw, lh)]),
                 );
                 let mut best = (f32::INFINITY, 0u32);
-                for pos in 0..ex.levels[level].data.len() as u32 {
+                ex.levels[level].each_allowed(|pos| {
                     let d = distance(ex, level, pos, &shape, &off, &feature, best.0);
                     if d < best.0 {
                         best = (d, pos);
                     }
-                }
+                });
                 out.push(best.1);
             }
         }
@@ -230,6 +308,28 @@ impl Job {
     /// Positions in exemplar `e` at `level`.
     pub(crate) fn positions(&self, e: usize, level: usize) -> usize {
         self.mix.exs[e].levels[level].data.len()
+    }
+
+    /// Exemplar `e` at `level`.
+    pub(crate) fn plane(&self, e: usize, level: usize) -> &Plane {
+        &self.mix.exs[e].levels[level]
+    }
+
+    /// Positions of exemplar `e` at `level` that may be copied.
+    pub(crate) fn allowed_positions(&self, e: usize, level: usize) -> usize {
+        self.mix.exs[e].levels[level].allowed_count()
+    }
+
+    /// A position of exemplar `e` at `level` that may be copied, at random (the noise a
+    /// level grows from).
+    pub(crate) fn random_position(&self, e: usize, level: usize, rng: &mut Rng) -> u32 {
+        self.mix.exs[e].levels[level].random(rng)
+    }
+
+    /// Whether output pixel `i` of `level` is known (pinned to the same exemplar pixel).
+    #[inline]
+    pub(crate) fn is_known(&self, level: usize, i: usize) -> bool {
+        self.known.as_ref().is_some_and(|k| k[level][i])
     }
 
     /// One pass over `level`, whose parent level's sources are `parent_src` (empty at the
@@ -265,6 +365,7 @@ impl Job {
             jitter: self.params.tileable,
             parent_src,
             offsets,
+            target: self.target.as_ref().map(|t| (&t[level][..], t.get(level + 1).map_or(&[][..], |p| &p[..]))),
         }
     }
 

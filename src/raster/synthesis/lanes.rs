@@ -1,14 +1,15 @@
 //! Pixels as four `f32` lanes (red, green, blue, and a zero), and the sum of squared
 //! differences between neighbourhoods, the synthesis's inner loop.
 //!
-//! The fourth lane pads a pixel to 16 bytes so that one SIMD instruction subtracts,
-//! squares and adds a whole pixel: built with `simd128` the wasm module uses `f32x4`
-//! (4 lanes), a native build the portable loop below, which LLVM turns into SSE. The
-//! module for browsers without SIMD adds three lanes one by one, as before. Every build
-//! sums each channel in its own lane and adds the lanes in one order at the end, so all
-//! three give the same sums to the bit, and the same images.
+//! The fourth lane holds a guide's value (`synthesis::Guide`; 0 without one) and pads a
+//! pixel to 16 bytes, so that one SIMD instruction subtracts, squares and adds a whole
+//! pixel: built with `simd128` the wasm module uses `f32x4`, a native build the
+//! portable loop below, which LLVM turns into SSE, and the module for browsers without
+//! SIMD adds the four lanes one by one. Every build sums each lane on its own and adds
+//! the lanes in one order at the end, so all three give the same sums to the bit, and
+//! the same images.
 
-/// One pixel: red, green, blue on the 0-255 scale, and 0.
+/// One pixel: red, green, blue on the 0-255 scale, and the guide (or 0).
 pub type Px = [f32; 4];
 
 /// A colour padded to a pixel.
@@ -26,11 +27,8 @@ type Acc = core::arch::wasm32::v128;
 #[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
 type Acc = [f32; 4];
 
-/// Lanes added one by one without SIMD: wasm without `simd128` has no vector
-/// instructions, and there the zero lane would cost a quarter more work for nothing.
-#[cfg(all(target_arch = "wasm32", not(target_feature = "simd128")))]
-const LANES: usize = 3;
-#[cfg(not(target_arch = "wasm32"))]
+/// Lanes added one by one where there is no SIMD (all four: the guide's too).
+#[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
 const LANES: usize = 4;
 
 impl Sum {
@@ -60,7 +58,7 @@ impl Sum {
         }
     }
 
-    /// The lanes added: red, then green, then blue (then the zero lane).
+    /// The lanes added: red, then green, then blue, then the guide.
     #[inline(always)]
     pub fn total(self) -> f32 {
         #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]

@@ -25,8 +25,10 @@
 mod exemplar;
 mod job;
 mod lanes;
+mod mask;
 mod mixer;
 mod pass;
+mod pinned;
 mod reuse;
 
 pub use job::Job;
@@ -61,6 +63,41 @@ pub struct Params {
     /// A picture of the output's size whose layout the coarsest level starts from
     /// (`Job::started`): the seamless tile's E-TFMCM field, refined.
     pub start: Option<Image>,
+    /// Masks and guides (inpainting, mending a tile, sample masks, guided synthesis).
+    pub constraints: Constraints,
+}
+
+/// What constrains a synthesis besides its exemplars: one neighbourhood search that
+/// knows masks and guides (issue 30), rather than one special case per verb.
+#[derive(Clone, Debug, Default)]
+pub struct Constraints {
+    /// Per exemplar, which of its pixels may be copied (`None`, or a missing entry: all).
+    pub allowed: Vec<Option<Vec<bool>>>,
+    /// Output pixels that are known (row major): each is pinned to the same pixel of
+    /// exemplar 0, which must then be of the output's size, and conditions its
+    /// neighbours at every level. The other pixels are synthesized (a hole filled, a
+    /// tile's band mended); see `synthesize`.
+    pub known: Option<Vec<bool>>,
+    pub guide: Option<Guide>,
+}
+
+/// A guide: grey images of the exemplar's and of the output's size whose values are
+/// compared, weighted, beside the colours in every neighbourhood (the fourth lane of a
+/// pixel, `lanes`): the output then follows the target's layout.
+#[derive(Clone, Debug)]
+pub struct Guide {
+    pub exemplar: Image,
+    pub target: Image,
+    /// 1 counts a guide's difference as much as the same difference in all three
+    /// colour channels.
+    pub weight: f32,
+}
+
+impl Guide {
+    /// The guide lane's scale: its squared difference is `weight` times three channels'.
+    pub(crate) fn scale(&self) -> f32 {
+        (3.0 * self.weight.max(0.0)).sqrt()
+    }
 }
 
 /// The order in which a level's pixels are synthesized.
@@ -83,6 +120,8 @@ impl Params {
     /// Whether this synthesis runs in the banded order.
     pub fn banded(&self) -> bool {
         match self.schedule {
+            // Known pixels are filled in their own order (`pinned`), in one thread.
+            _ if self.constraints.known.is_some() => false,
             Schedule::Auto => self.width * self.height >= BANDS_FROM,
             Schedule::Scanline => false,
             Schedule::Bands => true,
@@ -104,6 +143,7 @@ impl Default for Params {
             corrections: 1,
             schedule: Schedule::Auto,
             start: None,
+            constraints: Constraints::default(),
         }
     }
 }
@@ -120,7 +160,7 @@ impl Default for Params {
 /// A tile keeps 16: the exhaustive coarsest level is what joins long structures across
 /// the wrap, and at 32 (searched coherently) brick's tiles broke their mortar lines
 /// there (seam score 1.51 over 8 seeds, against 0.93).
-fn default_levels(exemplars: &[&Image], width: usize, height: usize, side: usize, tileable: bool) -> usize {
+pub(crate) fn default_levels(exemplars: &[&Image], width: usize, height: usize, side: usize, tileable: bool) -> usize {
     let ex = exemplars.iter().map(|e| e.width.min(e.height)).min().unwrap_or(1);
     let out = width.min(height);
     let coarsest = if tileable { 16 } else { 32 };
@@ -152,6 +192,15 @@ pub enum Sources<'a> {
 /// level's starting maps (`Job::starts`: 4 bytes per pixel of that level and exemplar, a
 /// quarter of a byte per output pixel with three levels, 4 with one).
 pub fn synthesize(job: &Job, progress: &mut Throttle) -> Result<Rgba> {
+    Ok(job.colours(&sources(job, progress)?))
+}
+
+/// `synthesize`'s finest level as exemplar positions, one map per exemplar (what
+/// `Job::colours` reads; the layout that other maps of the exemplar can replay).
+pub fn sources(job: &Job, progress: &mut Throttle) -> Result<Vec<Vec<u32>>> {
+    if job.known.is_some() {
+        return pinned::sources(job, progress);
+    }
     let params = &job.params;
     let mut rng = Rng::new(params.seed);
     let total: usize = job.sizes.iter().map(|(w, h)| w * h).sum::<usize>() * (1 + params.corrections);
@@ -168,10 +217,7 @@ pub fn synthesize(job: &Job, progress: &mut Throttle) -> Result<Rgba> {
             job.starts().to_vec()
         } else {
             (0..job.exemplars())
-                .map(|e| {
-                    let n = job.positions(e, level);
-                    (0..lw * lh).map(|_| rng.below(n) as u32).collect()
-                })
+                .map(|e| (0..lw * lh).map(|_| job.random_position(e, level, &mut rng)).collect())
                 .collect()
         };
         let uses = Uses::count(job, level, |e, y, out| out.extend_from_slice(&src[e][y * lw..(y + 1) * lw]));
@@ -213,5 +259,5 @@ pub fn synthesize(job: &Job, progress: &mut Throttle) -> Result<Rgba> {
     }
     // The finest level's sources are `parent_src` now.
     progress.tick(1.0)?;
-    Ok(job.colours(&parent_src))
+    Ok(parent_src)
 }

@@ -103,6 +103,9 @@ pub(crate) struct Pass<'a> {
     pub(super) parent_src: &'a [Vec<u32>],
     /// Index deltas per exemplar, for the causal shape and the full one.
     pub(super) offsets: Vec<(Offsets, Offsets)>,
+    /// The target guide at this level and at the parent's (`Job::target`), which the
+    /// output's features carry in their fourth lane.
+    pub(super) target: Option<(&'a [f32], &'a [f32])>,
 }
 
 impl Pass<'_> {
@@ -113,6 +116,11 @@ impl Pass<'_> {
             // One exemplar: colours need no pixel position to mix by.
             let (src, data) = (&map.src[0], &self.mix.exs[0].levels[self.level].data);
             f.extend(shape.own.iter().map(|&(dx, dy)| data[src[map.around(centre, x, y, dx, dy)] as usize]));
+            if let Some((target, _)) = self.target {
+                for (p, &(dx, dy)) in f.iter_mut().zip(&shape.own) {
+                    p[3] = target[wrap(y as isize + dy, self.lh) * self.lw + wrap(x as isize + dx, self.lw)];
+                }
+            }
         } else {
             for &(dx, dy) in &shape.own {
                 let (nx, ny) = (x as isize + dx, y as isize + dy);
@@ -123,7 +131,11 @@ impl Pass<'_> {
         if self.with_parent {
             let pw = self.parent_size.0;
             self.parent_feature(shape, x, y, f, |nx, ny| {
-                self.mix.colour(self.level + 1, self.parent_src, ny * pw + nx, nx, ny)
+                let mut c = self.mix.colour(self.level + 1, self.parent_src, ny * pw + nx, nx, ny);
+                if let Some((_, parent)) = self.target {
+                    c[3] = parent[ny * pw + nx];
+                }
+                c
             });
         }
     }
@@ -204,13 +216,13 @@ impl Pass<'_> {
             };
             let best = if self.exhaustive {
                 let mut best = (f32::INFINITY, 0u32);
-                for pos in 0..img.data.len() as u32 {
+                img.each_allowed(|pos| {
                     let p = map.uses.as_ref().map_or(1.0, |u| u.factor(e, pos as usize));
                     let d = distance(ex, level, pos, shape, off, f, best.0 / p) * p;
                     if d < best.0 {
                         best = (d, pos);
                     }
-                }
+                });
                 best.1
             } else {
                 self.coherent_candidates(map, centre, e, shape, x, y, img, rng, cands);
@@ -292,9 +304,11 @@ impl Pass<'_> {
     ) {
         cands.clear();
         let (ew, eh) = (img.width as isize, img.height as isize);
+        // Positions a sample mask keeps out are never candidates.
         let push = |c: u32, cands: &mut Vec<(u32, u16)>| match cands.iter_mut().find(|(q, _)| *q == c) {
             Some((_, votes)) => *votes += 1,
-            None => cands.push((c, 1)),
+            None if img.allows(c) => cands.push((c, 1)),
+            None => {}
         };
         for &(dx, dy) in &shape.own {
             let (sx, sy) = img.xy(map.src[e][map.around(centre, x, y, dx, dy)]);
@@ -317,7 +331,7 @@ impl Pass<'_> {
             }
         }
         for _ in 0..self.random.max(usize::from(cands.is_empty())) {
-            push(rng.below(img.data.len()) as u32, cands);
+            push(img.random(rng), cands);
         }
     }
 }

@@ -72,9 +72,12 @@ impl Uses {
                 buf.iter().for_each(|&s| c[s as usize] += 1);
             }
             counts.push(c);
-            scale.push(w * n as f32 / pixels);
+            // The mean over the positions that may be copied (a sample mask's others
+            // are never used).
+            let allowed = job.allowed_positions(e, level) as f32;
+            scale.push(w * allowed / pixels);
             // A tile's penalty starts at the first use.
-            free.push(if job.params.tileable { 0.0 } else { pixels / n as f32 });
+            free.push(if job.params.tileable { 0.0 } else { pixels / allowed });
         }
         Some(Uses { counts, scale, free })
     }

@@ -1,0 +1,78 @@
+//! Guides: grey images that say where the output should be what (a path of stones,
+//! moss thinning out, a letter's shape), compared beside the colours in every
+//! neighbourhood (`synthesis::Guide`); and style transfer, whose guides are derived
+//! from the two images (as Hertzmann et al.'s image analogies and texture-synthesis
+//! do): the style image's luminance, and the target's luminance matched to the style's
+//! mean and spread, both blurred a little, so that the output is the style's texture
+//! laid out as the target's light and dark.
+
+use super::image::{Image, Rgba};
+use super::pyramid::{self, Edge};
+use super::texture::{synthesize_textures, Guides, TextureOptions};
+use crate::error::Result;
+use crate::progress::Progress;
+use serde::Deserialize;
+
+/// The luminance (Rec. 601) of each pixel, in all three channels.
+pub fn luminance(img: &Image) -> Image {
+    let data = img.data.iter().map(|c| [0.299 * c[0] + 0.587 * c[1] + 0.114 * c[2]; 3]).collect();
+    Image { width: img.width, height: img.height, data }
+}
+
+/// Options of `transfer_style`.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(rename_all = "camelCase", default, deny_unknown_fields)]
+pub struct StyleOptions {
+    pub seed: u64,
+    /// How much the target's layout counts against the style's texture (the guide's
+    /// weight; see `synthesis::Guide`).
+    pub weight: f32,
+    pub levels: Option<usize>,
+    pub neighbourhood: usize,
+}
+
+impl Default for StyleOptions {
+    fn default() -> Self {
+        StyleOptions { seed: 1, weight: STYLE_WEIGHT, levels: None, neighbourhood: 5 }
+    }
+}
+
+/// The default weight of the target's layout in style transfer.
+pub const STYLE_WEIGHT: f32 = 1.0;
+
+/// An image of `target`'s size in `style`'s texture, following `target`'s light and
+/// dark.
+pub fn transfer_style(style: &Image, target: &Image, opts: &StyleOptions, progress: &mut dyn Progress) -> Result<Rgba> {
+    let (ls, lt) = (soft(&luminance(style)), soft(&luminance(target)));
+    let stats = |img: &Image| {
+        let n = img.data.len() as f64;
+        let mean = img.data.iter().map(|p| p[0] as f64).sum::<f64>() / n;
+        let var = img.data.iter().map(|p| (p[0] as f64 - mean).powi(2)).sum::<f64>() / n;
+        (mean, var.sqrt().max(1e-3))
+    };
+    let ((ms, ss), (mt, st)) = (stats(&ls), stats(&lt));
+    let matched = Image {
+        width: lt.width,
+        height: lt.height,
+        data: lt.data.iter().map(|p| [((p[0] as f64 - mt) * ss / st + ms) as f32; 3]).collect(),
+    };
+    let o = TextureOptions {
+        width: target.width,
+        height: target.height,
+        seed: opts.seed,
+        levels: opts.levels,
+        neighbourhood: opts.neighbourhood,
+        guides: Some(Guides { exemplars: vec![ls], target: matched, weight: opts.weight }),
+        ..TextureOptions::default()
+    };
+    Ok(synthesize_textures(std::slice::from_ref(style), &o, progress)?.image)
+}
+
+/// The image blurred once by the pyramid's filter and brought back to its size: a
+/// guide of the large shapes, not of every grain.
+fn soft(img: &Image) -> Image {
+    if img.width < 4 || img.height < 4 {
+        return img.clone();
+    }
+    pyramid::upsample(&pyramid::downsample(img, Edge::Clamp), img.width, img.height)
+}

@@ -1,0 +1,276 @@
+//! Synthesis around known pixels (`Constraints::known`): a hole filled, a tile's band
+//! mended. Known pixels are pinned, at every level, to the same pixel of the exemplar
+//! (the image itself), so they keep their colours exactly and condition their
+//! neighbours' matches; only the free pixels are searched.
+//!
+//! The coarsest level is filled from the edge of the known region inwards (onion
+//! peeling, as in Criminisi et al. 2004 and Harrison's resynthesizer): each free pixel
+//! takes the exemplar position that best matches the pixels around it already set, so
+//! a hole's fill continues the structure at its border rather than growing from noise.
+//! Each finer level starts from its parent's positions upsampled (Lefebvre and Hoppe
+//! 2005) and every pass matches full neighbourhoods, alternately forwards and in
+//! reverse: a free pixel sees known pixels on every side. Work is in proportion to
+//! the free pixels, not the image.
+
+use super::exemplar::Plane;
+use super::job::Job;
+use super::lanes::{Px, Sum};
+use super::pass::{Map, Scratch};
+use super::reuse::Uses;
+use crate::error::Result;
+use crate::progress::Throttle;
+use crate::raster::image::wrap;
+use crate::rng::Rng;
+use std::collections::VecDeque;
+
+/// Passes over the free pixels at each level beyond the job's `1 + corrections`: they
+/// cost only the free pixels, and each spreads the known border's structure further in.
+const EXTRA_PASSES: usize = 2;
+
+/// Free pixels x allowed positions x neighbours up to which the onion start searches
+/// every allowed position; above it, each free pixel compares the continuations of its
+/// set neighbours' positions and `ONION_RANDOM` random ones.
+const ONION_EXHAUSTIVE_BUDGET: usize = 64 << 20;
+const ONION_RANDOM: usize = 48;
+
+/// `synthesis::sources` for a job with known pixels (one exemplar, scanline order).
+pub(super) fn sources(job: &Job, progress: &mut Throttle) -> Result<Vec<Vec<u32>>> {
+    let known = job.known.as_ref().expect("a job with known pixels");
+    let params = &job.params;
+    let mut rng = Rng::new(params.seed);
+    let passes = 1 + params.corrections + EXTRA_PASSES;
+    let free: Vec<Vec<u32>> = known.iter().map(|k| (0..k.len() as u32).filter(|&i| !k[i as usize]).collect()).collect();
+    let total = free.iter().map(Vec::len).sum::<usize>().max(1) * passes;
+    let mut done = 0usize;
+    let mut parent_src: Vec<Vec<u32>> = Vec::new();
+    for level in (0..job.levels).rev() {
+        let (lw, lh) = job.sizes[level];
+        let src =
+            if job.started(level) { job.starts()[0].clone() } else { upsampled(job, level, &parent_src[0], &mut rng) };
+        let uses = Uses::count(job, level, |_, y, out| out.extend_from_slice(&src[y * lw..(y + 1) * lw]));
+        let mut map = Map::whole(vec![src], uses, lw, lh);
+        let pass = job.pass(level, &parent_src);
+        let mut scratch = Scratch::new(&job.full);
+        let free = &free[level];
+        for p in 0..passes {
+            for k in 0..free.len() {
+                let i = free[if p % 2 == 1 { free.len() - 1 - k } else { k }] as usize;
+                pass.pixel(&mut map, &job.full, true, i % lw, i / lw, &mut rng, &mut scratch);
+                if k % lw == lw - 1 {
+                    progress.tick((done + k) as f64 / total as f64)?;
+                }
+            }
+            done += free.len();
+        }
+        debug_assert!((0..lw * lh).all(|i| !job.is_known(level, i) || map.src[0][i] == i as u32));
+        parent_src = map.src;
+    }
+    progress.tick(1.0)?;
+    Ok(parent_src)
+}
+
+/// A finer level's start: known pixels at themselves, free ones at the child of their
+/// parent's position (clamped to the exemplar), or anywhere allowed when that child is
+/// masked.
+fn upsampled(job: &Job, level: usize, parent: &[u32], rng: &mut Rng) -> Vec<u32> {
+    let (lw, lh) = job.sizes[level];
+    let plw = job.sizes[level + 1].0;
+    let plane = job.plane(0, level);
+    let (ew, eh) = (plane.width, plane.height);
+    let pw = job.plane(0, level + 1).width;
+    let mut out = Vec::with_capacity(lw * lh);
+    for y in 0..lh {
+        for x in 0..lw {
+            let i = y * lw + x;
+            if job.is_known(level, i) {
+                out.push(i as u32);
+                continue;
+            }
+            let s = parent[(y / 2) * plw + x / 2] as usize;
+            let sx = (2 * (s % pw) + x % 2).min(ew - 1);
+            let sy = (2 * (s / pw) + y % 2).min(eh - 1);
+            let c = (sy * ew + sx) as u32;
+            out.push(if plane.allows(c) { c } else { plane.random(rng) });
+        }
+    }
+    out
+}
+
+impl Job {
+    /// The coarsest level's start for a job with known pixels (`Start::Onion`; see the
+    /// module): known pixels at themselves, free ones in order of their distance from
+    /// the known region, each matched over the neighbours already set.
+    pub(super) fn onion(&self, level: usize) -> Vec<u32> {
+        let (lw, lh) = self.sizes[level];
+        let known = &self.known.as_ref().expect("a job with known pixels")[level];
+        let plane = self.plane(0, level);
+        let target = self.target.as_ref().map(|t| &t[level]);
+        let torus = self.params.tileable;
+        let neighbour = |x: usize, y: usize, dx: isize, dy: isize| -> Option<usize> {
+            let (nx, ny) = (x as isize + dx, y as isize + dy);
+            if torus {
+                Some(wrap(ny, lh) * lw + wrap(nx, lw))
+            } else {
+                ((0..lw as isize).contains(&nx) && (0..lh as isize).contains(&ny))
+                    .then(|| ny as usize * lw + nx as usize)
+            }
+        };
+        let half = self.full.half;
+        let order = peel(known, lw, lh, neighbour);
+        let exhaustive = order.len().saturating_mul(plane.allowed_count()).saturating_mul(self.full.own.len())
+            <= ONION_EXHAUSTIVE_BUDGET;
+        let mut rng = Rng::new(self.params.seed ^ 0x0_4A10_4E00);
+        let mut src: Vec<u32> = (0..(lw * lh) as u32).collect();
+        let mut set = known.clone();
+        let mut points: Vec<((isize, isize), Px)> = Vec::new();
+        let mut cands: Vec<u32> = Vec::new();
+        for i in order {
+            let (x, y) = (i % lw, i / lw);
+            points.clear();
+            for dy in -half..=half {
+                for dx in -half..=half {
+                    if let Some(j) = neighbour(x, y, dx, dy).filter(|&j| j != i && set[j]) {
+                        let mut c = plane.data[src[j] as usize];
+                        if let Some(t) = target {
+                            c[3] = t[j];
+                        }
+                        points.push(((dx, dy), c));
+                    }
+                }
+            }
+            // The target guide at the pixel itself: with nothing set around it, it is all
+            // there is to match.
+            if let Some(t) = target {
+                points.push(((0, 0), [0.0, 0.0, 0.0, t[i]]));
+            }
+            let score = |pos: u32, bound: f32| masked_distance(plane, pos, &points, bound);
+            let mut best = (f32::INFINITY, u32::MAX);
+            if points.is_empty() {
+                best.1 = plane.random(&mut rng);
+            } else if exhaustive {
+                plane.each_allowed(|pos| {
+                    let d = score(pos, best.0);
+                    if d < best.0 {
+                        best = (d, pos);
+                    }
+                });
+            } else {
+                cands.clear();
+                for &((dx, dy), _) in &points {
+                    if let Some(j) = neighbour(x, y, dx, dy).filter(|&j| set[j]) {
+                        let (sx, sy) = plane.xy(src[j]);
+                        let (cx, cy) = (sx - dx, sy - dy);
+                        if (0..plane.width as isize).contains(&cx) && (0..plane.height as isize).contains(&cy) {
+                            let c = (cy as usize * plane.width + cx as usize) as u32;
+                            if plane.allows(c) {
+                                cands.push(c);
+                            }
+                        }
+                    }
+                }
+                cands.extend((0..ONION_RANDOM).map(|_| plane.random(&mut rng)));
+                for &pos in &cands {
+                    let d = score(pos, best.0);
+                    if d < best.0 {
+                        best = (d, pos);
+                    }
+                }
+            }
+            src[i] = best.1;
+            set[i] = true;
+        }
+        src
+    }
+}
+
+/// Squared distance over `points` (offsets with the colour set there, and the target
+/// guide in the fourth lane) between the output and the exemplar around `pos`, read
+/// clamped to the plane; at the centre, the guide alone. Stops past `bound`.
+fn masked_distance(plane: &Plane, pos: u32, points: &[((isize, isize), Px)], bound: f32) -> f32 {
+    let (x, y) = plane.xy(pos);
+    let mut sum = Sum::zero();
+    for (k, &((dx, dy), c)) in points.iter().enumerate() {
+        let e = plane.clamped(x + dx, y + dy);
+        if (dx, dy) == (0, 0) {
+            sum.add(&[0.0, 0.0, 0.0, e[3]], &[0.0, 0.0, 0.0, c[3]]);
+        } else {
+            sum.add(e, &c);
+        }
+        if k % 8 == 7 && sum.total() > bound {
+            break;
+        }
+    }
+    sum.total()
+}
+
+/// The free pixels (not `known`) in order of their distance, in 8-neighbour steps, from
+/// the known ones (`neighbour` reads a neighbour of (x, y), or `None` past an edge);
+/// when nothing is known, from the first free pixel.
+fn peel(
+    known: &[bool],
+    lw: usize,
+    lh: usize,
+    neighbour: impl Fn(usize, usize, isize, isize) -> Option<usize>,
+) -> Vec<usize> {
+    let mut seen = known.to_vec();
+    let mut queue: VecDeque<usize> = VecDeque::new();
+    let mut order = Vec::with_capacity(known.iter().filter(|&&k| !k).count());
+    let ring = |i: usize, seen: &mut Vec<bool>, queue: &mut VecDeque<usize>| {
+        for dy in -1..=1 {
+            for dx in -1..=1 {
+                if let Some(j) = neighbour(i % lw, i / lw, dx, dy) {
+                    if !seen[j] {
+                        seen[j] = true;
+                        queue.push_back(j);
+                    }
+                }
+            }
+        }
+    };
+    for i in (0..lw * lh).filter(|&i| known[i]) {
+        ring(i, &mut seen, &mut queue);
+    }
+    loop {
+        while let Some(i) = queue.pop_front() {
+            order.push(i);
+            ring(i, &mut seen, &mut queue);
+        }
+        // Free pixels no known one reaches (nothing known, or an island): start anew.
+        match seen.iter().position(|&s| !s) {
+            Some(i) => {
+                seen[i] = true;
+                queue.push_back(i);
+            }
+            None => break,
+        }
+    }
+    order
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn peels_from_the_known_border_inwards() {
+        // 5 x 5, the middle 3 x 3 free: the ring of 8 before the centre.
+        let mut known = vec![true; 25];
+        for y in 1..4 {
+            for x in 1..4 {
+                known[y * 5 + x] = false;
+            }
+        }
+        let n = |x: usize, y: usize, dx: isize, dy: isize| {
+            let (nx, ny) = (x as isize + dx, y as isize + dy);
+            ((0..5).contains(&nx) && (0..5).contains(&ny)).then(|| ny as usize * 5 + nx as usize)
+        };
+        let order = peel(&known, 5, 5, n);
+        assert_eq!(order.len(), 9);
+        assert_eq!(*order.last().unwrap(), 12);
+        // Nothing known: every pixel, once.
+        let order = peel(&[false; 25], 5, 5, n);
+        let mut sorted = order.clone();
+        sorted.sort();
+        assert_eq!(sorted, (0..25).collect::<Vec<_>>());
+    }
+}
