@@ -3,6 +3,7 @@ import { PatternSynthClient } from './pkg/client.js';
 import { mountStrokes } from './features/strokes/client/index.js';
 import { mountBlend } from './features/blend/client/index.js';
 import { mountSeamless } from './features/seamless/client/index.js';
+import { mountRetouch } from './features/retouch/client/index.js';
 import { exportSession, importSession } from './shared/session.js';
 import { onTrouble, ready } from './shared/storage.js';
 
@@ -17,7 +18,7 @@ onTrouble((message) => {
   status.className = 'session-status error';
   status.textContent = message;
 });
-const features = { strokes: mountStrokes, blend: mountBlend, seamless: mountSeamless };
+const features = { strokes: mountStrokes, blend: mountBlend, seamless: mountSeamless, retouch: mountRetouch };
 for (const section of document.querySelectorAll('[data-feature]')) {
   features[section.dataset.feature]?.(section, client);
 }
