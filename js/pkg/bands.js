@@ -6,7 +6,7 @@
 // image the one-call API gives.
 
 /** The calls that have a banded schedule (for outputs from 512 x 512 pixels). */
-export const BANDED = new Set(['synthesizeTexture', 'blendTextures']);
+export const BANDED = new Set(['synthesizeTexture', 'blendTextures', 'transferStyle']);
 
 /** What `runBands` returns when the call runs in scanline order instead (small outputs). */
 export const NOT_BANDED = Symbol('not banded');

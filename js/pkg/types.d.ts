@@ -78,22 +78,26 @@ export interface Diagnostics { restarts: number; renewals: number; memoryBytes: 
 export interface Rgba { width: number; height: number; data: Uint8Array | Uint8ClampedArray }
 /** An image out: `new ImageData(out.data, out.width, out.height)` works. */
 export interface RgbaImage { width: number; height: number; data: Uint8ClampedArray<ArrayBuffer> }
-export interface TextureOptions {
+export interface TextureBase {
   width: number; height: number; seed?: number; tileable?: boolean; exhaustive?: boolean;
   levels?: number; neighbourhood?: number;
   /** Pixel order: 'bands' (several workers can share it; PatternSynthClient does), the
    *  paper's 'scanline', or 'auto' (default): bands from 512 x 512 output pixels. */
   schedule?: 'auto' | 'scanline' | 'bands';
+}
+export interface TextureOptions extends TextureBase {
   /** Pixels of the exemplar never copied: a mask image of its size, opaque white where a
    *  pixel is kept out; with several exemplars an array of one mask (or null) per exemplar. */
   sampleMask?: Mask | (Mask | null)[];
   /** Guide images: the output follows `target`'s light and dark where the exemplar's
    *  own guide has them (luminance compared beside the colours; `weight` 1, the default,
    *  counts it as much as all three colour channels). `exemplar`: one per exemplar. */
-  guides?: { exemplar: Rgba | Rgba[]; target: Rgba; weight?: number };
+  guides?: Guides;
   /** Also return the layout: which exemplar pixel each output pixel came from. */
   keepLayout?: boolean;
 }
+/** Guide images (luminance is read): one per exemplar, and the output's. */
+export interface Guides { exemplar: Rgba | Rgba[]; target: Rgba; weight?: number }
 /** A mask: an image where opaque white (alpha and luminance at least half) marks a pixel. */
 export type Mask = Rgba;
 /** Which exemplar pixel each output pixel came from: one entry per pixel, row major,
@@ -112,7 +116,7 @@ export interface StyleOptions {
   levels?: number; neighbourhood?: number;
 }
 export type Transition = 'linear' | 'ease' | 'steep';
-export interface BlendOptions extends TextureOptions {
+export interface BlendOptions extends TextureBase {
   /** mu, the weight of A: 'linear' (1 at the top, 0 at the bottom, as in the paper), its
    *  'ease' and 'steep' transfers, 'radial' (A at the centre), or one value per pixel. */
   coefficient?: Transition | 'radial' | Float32Array;
@@ -122,8 +126,6 @@ export interface BlendOptions extends TextureOptions {
   transfer?: Transition;
   /** [mask of A, mask of B] (null for none). */
   sampleMask?: (Mask | null)[];
-  guides?: never;
-  keepLayout?: never;
 }
 export interface TileOptions extends ClassifyOptions {
   variation?: boolean; seed?: number;

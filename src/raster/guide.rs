@@ -8,9 +8,10 @@
 
 use super::image::{Image, Rgba};
 use super::pyramid::{self, Edge};
-use super::texture::{synthesize_textures, Guides, TextureOptions};
+use super::synthesis::Job;
+use super::texture::{pool_job, run, Guides, TextureOptions};
 use crate::error::Result;
-use crate::progress::Progress;
+use crate::progress::{Progress, Throttle};
 use serde::Deserialize;
 
 /// The luminance (Rec. 601) of each pixel, in all three channels.
@@ -43,6 +44,11 @@ pub const STYLE_WEIGHT: f32 = 1.0;
 /// An image of `target`'s size in `style`'s texture, following `target`'s light and
 /// dark.
 pub fn transfer_style(style: &Image, target: &Image, opts: &StyleOptions, progress: &mut dyn Progress) -> Result<Rgba> {
+    run(&style_job(style, target, opts)?, &mut Throttle::new(progress))
+}
+
+/// `transfer_style`'s work, prepared (for running its bands on several workers).
+pub fn style_job(style: &Image, target: &Image, opts: &StyleOptions) -> Result<Job> {
     let (ls, lt) = (soft(&luminance(style)), soft(&luminance(target)));
     let stats = |img: &Image| {
         let n = img.data.len() as f64;
@@ -65,7 +71,7 @@ pub fn transfer_style(style: &Image, target: &Image, opts: &StyleOptions, progre
         guides: Some(Guides { exemplars: vec![ls], target: matched, weight: opts.weight }),
         ..TextureOptions::default()
     };
-    Ok(synthesize_textures(std::slice::from_ref(style), &o, progress)?.image)
+    Ok(pool_job(std::slice::from_ref(style), &o)?.0)
 }
 
 /// The image blurred once by the pyramid's filter and brought back to its size: a

@@ -37,7 +37,7 @@ pub use texture::{
 };
 #[cfg(feature = "texture")]
 pub use {
-    guide::{transfer_style, StyleOptions},
+    guide::{style_job, transfer_style, StyleOptions},
     inpaint::{inpaint_texture, InpaintOptions},
     pool::{apply_layout, Layout},
 };

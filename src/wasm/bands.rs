@@ -3,7 +3,7 @@
 //! starting state, and returns the rows of its bands of the last step as colours. Jobs
 //! live in this instance between calls, under a handle.
 
-use super::texture::{blend_args, texture_args};
+use super::texture::{blend_args, style_args, texture_args};
 use super::{error, js_error, JsProgress};
 use crate::progress::Throttle;
 use crate::raster::{self, bands, synthesis::Job, synthesis::Uses};
@@ -45,7 +45,7 @@ fn with<T>(handle: u32, f: impl FnOnce(&mut Open) -> Result<T, JsValue>) -> Resu
     })
 }
 
-/// Prepares `method(...args)` (`synthesizeTexture` or `blendTextures`) for banded runs:
+/// Prepares `method(...args)` (`synthesizeTexture`, `blendTextures` or `transferStyle`) for banded runs:
 /// `{ handle, exemplars, steps: [{ level, pass, width, height, bands: [[first, rows]...] }] }`,
 /// or `null` when the call runs in scanline order (small outputs), in one call.
 #[wasm_bindgen(js_name = bandsOpen)]
@@ -58,6 +58,10 @@ pub fn bands_open(method: &str, args: js_sys::Array) -> Result<JsValue, JsValue>
                 return Ok(JsValue::NULL);
             }
             raster::pool_job(&exemplars, &opts).map(|(job, _)| job)
+        }
+        "transferStyle" => {
+            let (style, target, opts) = style_args(args.get(0), args.get(1), args.get(2))?;
+            raster::style_job(&style, &target, &opts)
         }
         "blendTextures" => {
             let (a, b, opts) = blend_args(args.get(0), args.get(1), args.get(2))?;

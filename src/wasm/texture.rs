@@ -73,13 +73,22 @@ pub fn transfer_style(
     opts: JsValue,
     on_progress: JsValue,
 ) -> Result<JsValue, JsValue> {
-    let style = masks::image(&style, "style image")?;
-    let target = masks::image(&target, "target image")?;
-    let o: raster::StyleOptions = options(&opts, "style options", &[], &[])?;
+    let (style, target, o) = style_args(style, target, opts)?;
     let mut progress = JsProgress::from_js(on_progress)?;
     let res = raster::transfer_style(&style, &target, &o, &mut progress);
     let out = progress.finish(res)?;
     Ok(rgba_to_js(out.width, out.height, &out.data))
+}
+
+/// `transferStyle`'s arguments read.
+pub(super) fn style_args(
+    style: JsValue,
+    target: JsValue,
+    opts: JsValue,
+) -> Result<(Image, Image, raster::StyleOptions), JsValue> {
+    let style = masks::image(&style, "style image")?;
+    let target = masks::image(&target, "target image")?;
+    Ok((style, target, options(&opts, "style options", &[], &[])?))
 }
 
 /// Replays a synthesis's layout on other maps of its exemplars (normal, roughness,
@@ -124,6 +133,9 @@ pub(super) fn blend_args(
     let a = masks::image(&a, "first image (A)")?;
     let b = masks::image(&b, "second image (B)")?;
     let mut base: raster::TextureOptions = options(&opts, "blend options", &BLEND_KEYS, &SIZE)?;
+    if base.keep_layout {
+        return Err(error("keepLayout applies to synthesizeTexture (a blend mixes two sources per pixel)."));
+    }
     if !(opts.is_undefined() || opts.is_null()) {
         let sizes = [(a.width, a.height), (b.width, b.height)];
         base.sample_masks = masks::sample_masks(&read::get(&opts, "sampleMask", "blend options")?, &sizes)?;

@@ -74,3 +74,41 @@ test('any number of workers gives the same image, with progress, and aborts clea
     await close();
   }
 });
+
+test("issue 30's syntheses share the workers too: a sample mask with a guide, and a style transfer", async () => {
+  const { page, close } = await openPlayground();
+  try {
+    const out = await page.evaluate(async () => {
+      const { PatternSynthClient } = await import('./pkg/client.js');
+      const ps = await import('./pkg/patternsynth.js');
+      await ps.default();
+      const bmp = await createImageBitmap(await (await fetch('./textures/brick.png')).blob());
+      const ctx = new OffscreenCanvas(bmp.width, bmp.height).getContext('2d');
+      ctx.drawImage(bmp, 0, 0);
+      const brick = ctx.getImageData(0, 0, bmp.width, bmp.height);
+      const image = (w, h, f) => {
+        const d = new Uint8ClampedArray(w * h * 4);
+        for (let i = 0; i < w * h; i++) { const v = f(i % w, Math.floor(i / w)); d.set([v, v, v, 255], 4 * i); }
+        return { width: w, height: h, data: d };
+      };
+      const same = (a, b) => a.width === b.width && a.data.length === b.data.length && a.data.every((v, i) => v === b.data[i]);
+      const opts = {
+        width: 256, height: 200, seed: 2, schedule: 'bands',
+        sampleMask: image(128, 128, (x) => (x < 32 ? 255 : 0)),
+        guides: { exemplar: image(128, 128, (x) => 2 * x), target: image(256, 200, (x, y) => (Math.hypot(x - 128, y - 100) < 60 ? 255 : 0)) },
+      };
+      const target = image(512, 512, (x, y) => ((x + y) % 128 < 64 ? 220 : 30));
+      const client = new PatternSynthClient(undefined, { workers: 2 });
+      const guided = await client.synthesizeTexture(brick, opts);
+      const styled = await client.transferStyle(brick, target, { seed: 1 });
+      const helpers = client.helpers.length;
+      client.terminate();
+      return { guidedSame: same(guided, ps.synthesizeTexture(brick, opts)), styleSame: same(styled, ps.transferStyle(brick, target, { seed: 1 })), helpers };
+    });
+    assert.ok(out.guidedSame, 'a masked, guided synthesis on 2 workers: the one-call image');
+    assert.ok(out.styleSame, 'a 512² style transfer on 2 workers: the one-call image');
+    assert.equal(out.helpers, 1, 'the second worker was used');
+  } finally {
+    await close();
+  }
+});

@@ -165,18 +165,24 @@ test('the option types declare exactly the options the engine reads', () => {
   };
   const img = { width: 8, height: 8, data: new Uint8Array(256) };
   const grid = [{ points: [[0, 0], [4, 4]], width: 1, stroke: '#000000' }];
-  const blendOwn = ['angle', 'coefficient', 'transfer'];
+  // Options read by hand beside those serde reads (images, and the blend's coefficient).
   const cases = [
     ['ParseSvgOptions', (o) => ps.parseSvg('<svg xmlns="http://www.w3.org/2000/svg"/>', o)],
     ['ClassifyOptions', (o) => ps.classifyStrokes(grid, o)],
     ['StrokeOptions', (o) => ps.synthesizeStrokes(grid, { width: 9, height: 9, ...o })],
     ['TileOptions', (o) => ps.strokeTile(grid, o)],
-    ['TextureOptions', (o) => ps.synthesizeTexture(img, { width: 9, height: 9, ...o })],
-    ['SeamlessOptions', (o) => ps.seamlessTile(img, o)],
+    ['TextureOptions', (o) => ps.synthesizeTexture(img, { width: 9, height: 9, ...o }), ['guides', 'sampleMask']],
+    ['SeamlessOptions', (o) => ps.seamlessTile(img, o), ['sampleMask']],
+    ['InpaintOptions', (o) => ps.inpaintTexture(img, img, o), ['sampleMask']],
+    ['StyleOptions', (o) => ps.transferStyle(img, img, o)],
   ];
-  for (const [name, call] of cases) assert.deepEqual(keys(name), known(call), name);
-  // Blend options: the texture options (read by serde) and three read by hand.
-  assert.deepEqual(keys('BlendOptions'), [...known((o) => ps.blendTextures(img, img, { width: 9, height: 9, ...o })), ...blendOwn].sort());
+  for (const [name, call, own = []] of cases) assert.deepEqual(keys(name), [...known(call), ...own].sort(), name);
+  // Blend options: the texture options serde reads but the layout (which blends refuse),
+  // and four read by hand.
+  const blendOwn = ['angle', 'coefficient', 'sampleMask', 'transfer'];
+  const blendKnown = known((o) => ps.blendTextures(img, img, { width: 9, height: 9, ...o })).filter((k) => k !== 'keepLayout');
+  assert.deepEqual(keys('BlendOptions'), [...blendKnown, ...blendOwn].sort());
+  assert.throws(() => ps.blendTextures(img, img, { width: 9, height: 9, keepLayout: true }), /keepLayout applies to synthesizeTexture/);
 });
 
 test('the packed package holds every file its modules import or fetch', async () => {
