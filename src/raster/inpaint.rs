@@ -122,6 +122,9 @@ impl Fill {
                 out.data[4 * i..4 * i + 4].copy_from_slice(&image.data[s..s + 4]);
             }
         }
+        // The copies keep their detail; a smooth correction takes away the colour step
+        // at the hole's edge (`heal`).
+        super::heal::heal(&mut out, image, &src[0], known, params.tileable);
         Ok(out)
     }
 }

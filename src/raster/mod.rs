@@ -13,6 +13,8 @@ pub(crate) mod divisor;
 pub mod energy;
 #[cfg(feature = "texture")]
 pub mod guide;
+#[cfg(feature = "texture")]
+pub mod heal;
 pub mod image;
 #[cfg(feature = "texture")]
 pub mod inpaint;

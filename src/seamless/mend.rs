@@ -11,8 +11,10 @@ use crate::raster::inpaint::Fill;
 use crate::raster::Rgba;
 
 /// The band's default share of each side: the outer 12.5% of each side re-made, the
-/// inner 75% x 75% kept (measured: see `DEFAULT_BAND`'s note in the README's figures
-/// and `examples/mend_band`).
+/// inner 75% x 75% kept. Over the ten fixture photographs (seeds 1-8,
+/// `examples/seam_profile <fixture> mend` with `BAND`), 9 wraps score 0.8-1.2 at 0.25,
+/// 8 at 0.125 and 8 at 0.375; brick's, whose band fills with brick faces between
+/// vertical joints, scores 0.2-0.4 at each.
 pub const DEFAULT_BAND: f64 = 0.25;
 
 /// The mask of re-made pixels for an image `width x height` and a band of `band`:

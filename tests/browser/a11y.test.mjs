@@ -12,7 +12,7 @@ import { createRequire } from 'node:module';
 import { openPlayground } from './harness.mjs';
 
 const AXE = readFileSync(createRequire(import.meta.url).resolve('axe-core/axe.min.js'), 'utf8');
-const TABS = ['strokes', 'blend', 'seamless'];
+const TABS = ['strokes', 'blend', 'seamless', 'retouch'];
 mkdirSync('out', { recursive: true });
 
 const opened = [];
@@ -76,6 +76,8 @@ test('every tab: no axe violations, no unnamed control; file pickers are buttons
   const { page } = await open();
   for (const tab of TABS) {
     await page.click(`[data-tab="${tab}"]`);
+    // The maps' picker shows with the action that uses them.
+    if (tab === 'retouch') await page.selectOption('#ret-action', 'more');
     await page.waitForTimeout(300);
     assert.deepEqual(await axe(page), [], `axe on ${tab}`);
     assert.deepEqual(await unnamed(page), [], `unnamed controls on ${tab}`);
@@ -88,18 +90,18 @@ test('tabs follow the WAI-ARIA pattern: one in the Tab order, arrows and Home/En
   const { page } = await open();
   await page.focus('[data-tab="strokes"]');
   const state = () => page.evaluate(() => [...document.querySelectorAll('[role="tab"]')].map((t) => `${t.dataset.tab}:${t.getAttribute('aria-selected')}:${t.tabIndex}:${document.getElementById(t.getAttribute('aria-controls')).hidden}`));
-  assert.deepEqual(await state(), ['strokes:true:0:false', 'blend:false:-1:true', 'seamless:false:-1:true']);
+  assert.deepEqual(await state(), ['strokes:true:0:false', 'blend:false:-1:true', 'seamless:false:-1:true', 'retouch:false:-1:true']);
   await page.keyboard.press('ArrowRight');
-  assert.deepEqual(await state(), ['strokes:false:-1:true', 'blend:true:0:false', 'seamless:false:-1:true']);
+  assert.deepEqual(await state(), ['strokes:false:-1:true', 'blend:true:0:false', 'seamless:false:-1:true', 'retouch:false:-1:true']);
   assert.match(await focused(page), /Blend textures/);
   await page.keyboard.press('End');
-  assert.equal((await state())[2], 'seamless:true:0:false');
+  assert.equal((await state())[3], 'retouch:true:0:false');
   await page.keyboard.press('ArrowRight');
   assert.equal((await state())[0], 'strokes:true:0:false', 'wraps around');
   await page.keyboard.press('Tab');
-  assert.doesNotMatch(await focused(page), /Blend textures|Seamless tile/, 'Tab leaves the tab list');
+  assert.doesNotMatch(await focused(page), /Blend textures|Seamless tile|Fill & mend/, 'Tab leaves the tab list');
   const panels = await page.$$eval('[role="tabpanel"]', (ps) => ps.map((p) => document.getElementById(p.getAttribute('aria-labelledby'))?.textContent));
-  assert.deepEqual(panels, ['Vector strokes', 'Blend textures', 'Seamless tile']);
+  assert.deepEqual(panels, ['Vector strokes', 'Blend textures', 'Seamless tile', 'Fill & mend']);
 });
 
 test('a phone: targets of at least 24 px, a tap is not a stroke, hints without keys', async () => {
@@ -109,6 +111,7 @@ test('a phone: targets of at least 24 px, a tap is not a stroke, hints without k
     // Controls shown only in some states, shown: a layout set by hand, a tile of any size.
     if (tab === 'strokes') await page.selectOption('#repeat-type', 'oblique');
     if (tab === 'seamless') await page.selectOption('#seam-size', 'custom');
+    if (tab === 'retouch') await page.selectOption('#ret-action', 'more');
     const small = await page.evaluate(() => [...document.querySelectorAll('button, a.button, input:not([type=hidden]), select, [role=tab]')]
       .filter((e) => e.offsetParent !== null && !e.hidden)
       .map((e) => ({ e, r: e.getBoundingClientRect() }))

@@ -81,3 +81,61 @@ export function onDropFile(zone, handle) {
     if (e.dataTransfer.files[0]) handle(e.dataTransfer.files[0]);
   });
 }
+
+/**
+ * One picture input of a raster tab: a select of built-in photographs, an Open… file
+ * input and a drop zone; a picture the person opened is kept under `key` and comes
+ * back after a reload, a built-in one is named in `settings.texture` ('' for an opened
+ * one). `show(rgba)` puts it on `canvas` (what is kept); `say(text, kind)` reports.
+ */
+export function imagePicker({ select, file, drop, canvas, textures, fallback, maxSide, key, settings, save, say, show, noun = 'image' }) {
+  select.append(new Option('Built-in…', ''), ...textures.map((t) => new Option(t, t)));
+  /** Shows a bitmap, scaled down to the cap; returns the note saying so (empty when it fits). */
+  function use(bitmap, name) {
+    const { rgba, scaledFrom } = rgbaOf(bitmap, maxSide);
+    const note = scaledFrom ? `${name}: scaled from ${scaledFrom[0]}×${scaledFrom[1]} to fit ${maxSide} px.` : '';
+    if (note) say(note, 'warn');
+    show(rgba);
+    return note;
+  }
+  async function builtin(name) {
+    try {
+      use(await builtinBitmap(name), name);
+    } catch (e) {
+      say(`Could not load the built-in ${noun} '${name}': ${e.message}`, 'error');
+    }
+  }
+  async function open(f) {
+    const bitmap = await fileBitmap(f);
+    if (!bitmap) return say(`${f.name} is not an image this browser can read (use PNG or JPEG).`, 'error');
+    const note = use(bitmap, f.name);
+    select.value = '';
+    settings.texture = '';
+    save();
+    const kept = await keepImage(key, f.name, canvas);
+    say(`Loaded ${f.name}.${note ? ` ${note}` : ''}${kept ? '' : ' (This browser would not keep it: it will not survive a reload.)'}`, kept && !note ? '' : 'warn');
+  }
+  select.addEventListener('change', () => {
+    if (!select.value) return;
+    settings.texture = select.value;
+    save();
+    forgetImage(key);
+    builtin(select.value);
+  });
+  file.addEventListener('change', async (e) => {
+    if (e.target.files[0]) await open(e.target.files[0]);
+    e.target.value = '';
+  });
+  onDropFile(drop, open);
+  return {
+    /** Shows the picture the settings name, the one kept, or `fallback`. */
+    async start() {
+      if (!settings.texture) {
+        const kept = await keptImage(key);
+        if (kept) return void use(kept.bitmap, kept.name);
+      }
+      select.value = settings.texture || fallback;
+      await builtin(select.value);
+    },
+  };
+}

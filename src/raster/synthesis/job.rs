@@ -366,6 +366,9 @@ impl Job {
             parent_src,
             offsets,
             target: self.target.as_ref().map(|t| (&t[level][..], t.get(level + 1).map_or(&[][..], |p| &p[..]))),
+            // Around known pixels the bias grew one coherent patch over the whole hole and
+            // kept it against the hole's border (see `pinned::PINNED_COHERENCE`).
+            coherence: if self.known.is_some() { super::pinned::PINNED_COHERENCE } else { super::pass::COHERENCE },
         }
     }
 

@@ -15,7 +15,7 @@ use crate::rng::Rng;
 /// match; fewer seams, hence lower patch energy. Over 6 seeds on the four photographs
 /// (with the reversed correction pass), 2 lowered the mean energy from 8.12 to 7.27 and
 /// every photograph's; 4 and 8 cost brick more than they gained elsewhere.
-const COHERENCE: f32 = 2.0;
+pub(super) const COHERENCE: f32 = 2.0;
 
 /// Source positions of one level's pixels, per exemplar, over rows `first .. first +
 /// rows` (mod the level's height) of the torus: the whole level, or a band of it with
@@ -106,6 +106,8 @@ pub(crate) struct Pass<'a> {
     /// The target guide at this level and at the parent's (`Job::target`), which the
     /// output's features carry in their fourth lane.
     pub(super) target: Option<(&'a [f32], &'a [f32])>,
+    /// The coherence bias: `COHERENCE`, or none around known pixels (`pinned`).
+    pub(super) coherence: f32,
 }
 
 impl Pass<'_> {
@@ -229,7 +231,7 @@ impl Pass<'_> {
                 let n = shape.own.len() as f32;
                 let mut best = (f32::INFINITY, cands[0].0);
                 for &(pos, votes) in cands.iter() {
-                    let mut bias = 1.0 + COHERENCE * (votes - 1) as f32 / n;
+                    let mut bias = 1.0 + self.coherence * (votes - 1) as f32 / n;
                     if let Some(u) = &map.uses {
                         bias /= u.factor(e, pos as usize);
                     }

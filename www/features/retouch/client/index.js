@@ -6,7 +6,7 @@ import { actionHelp, actions, defaultOptions, imageKey, maskKey, maxInputSide, s
 import { load, store } from '../../../shared/storage.js';
 import { offerDownload, runControls, withdrawDownload } from '../../../shared/run.js';
 import { maskPainter } from '../../../shared/mask.js';
-import { builtinBitmap, fileBitmap, forgetImage, keepImage, keptImage, onDropFile, rgbaOf } from '../../../shared/images.js';
+import { fileBitmap, imagePicker } from '../../../shared/images.js';
 
 export function mountRetouch(root, client) {
   const $ = (id) => root.querySelector(`#${id}`);
@@ -32,54 +32,20 @@ export function mountRetouch(root, client) {
     onChange: () => { $('ret-mask-info').textContent = mask.painted() ? 'painted' : 'nothing painted'; },
     onError: (e) => say(`The mask could not be kept (${e.message}): it lasts until this page closes.`, 'warn'),
   });
-  function show(rgba, keepPainted) {
+  function show(rgba) {
     source.width = rgba.width;
     source.height = rgba.height;
     source.getContext('2d').putImageData(new ImageData(new Uint8ClampedArray(rgba.data), rgba.width, rgba.height), 0, 0);
-    mask.resize(rgba.width, rgba.height, keepPainted);
+    mask.resize(rgba.width, rgba.height);
     image = rgba;
     maps = maps.filter((m) => m.rgba.width === rgba.width && m.rgba.height === rgba.height);
     showMaps();
     $('ret-source-info').textContent = `${rgba.width}×${rgba.height}`;
   }
-  function useBitmap(bitmap, name, keepPainted = false) {
-    const { rgba, scaledFrom } = rgbaOf(bitmap, maxInputSide);
-    const note = scaledFrom ? `${name}: scaled from ${scaledFrom[0]}×${scaledFrom[1]} to fit ${maxInputSide} px.` : '';
-    if (note) say(note, 'warn');
-    show(rgba, keepPainted);
-    return note;
-  }
-  const select = $('ret-texture');
-  select.append(new Option('Built-in…', ''), ...textures.map((t) => new Option(t, t)));
-  async function loadBuiltin(name, keepPainted = false) {
-    try {
-      useBitmap(await builtinBitmap(name), name, keepPainted);
-    } catch (e) {
-      say(`Could not load the built-in photograph '${name}': ${e.message}`, 'error');
-    }
-  }
-  async function loadFile(file) {
-    const bitmap = await fileBitmap(file);
-    if (!bitmap) return say(`${file.name} is not an image this browser can read (use PNG or JPEG).`, 'error');
-    const note = useBitmap(bitmap, file.name);
-    select.value = '';
-    settings.texture = '';
-    save();
-    const kept = await keepImage(imageKey, file.name, source);
-    say(`Loaded ${file.name}.${note ? ` ${note}` : ''}${kept ? '' : ' (This browser would not keep it: it will not survive a reload.)'}`, kept && !note ? '' : 'warn');
-  }
-  select.addEventListener('change', () => {
-    if (!select.value) return;
-    settings.texture = select.value;
-    save();
-    forgetImage(imageKey);
-    loadBuiltin(select.value);
+  const picker = imagePicker({
+    select: $('ret-texture'), file: $('ret-file'), drop: $('ret-drop'), canvas: source, textures, fallback: defaultOptions.texture,
+    maxSide: maxInputSide, key: imageKey, settings, save, say, show, noun: 'photograph',
   });
-  $('ret-file').addEventListener('change', async (e) => {
-    if (e.target.files[0]) await loadFile(e.target.files[0]);
-    e.target.value = '';
-  });
-  onDropFile($('ret-drop'), loadFile);
 
   // --- the material's other maps ---
   function showMaps() {
@@ -199,11 +165,6 @@ export function mountRetouch(root, client) {
   // --- start ---
   showAction();
   showMaps();
-  const restoreMask = () => mask.restore();
-  const builtin = () => {
-    select.value = settings.texture || defaultOptions.texture;
-    return loadBuiltin(select.value).then(restoreMask);
-  };
-  if (settings.texture) builtin();
-  else keptImage(imageKey).then((kept) => (kept ? (useBitmap(kept.bitmap, kept.name), restoreMask()) : builtin()));
+  // The photograph first, then its mask over it.
+  picker.start().then(() => mask.restore());
 }

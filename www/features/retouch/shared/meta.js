@@ -8,8 +8,8 @@ export const defaultOptions = {
   // 'more': more of the photograph at any size, the painted pixels never copied, and
   // the material's other maps laid out the same way (synthesizeTexture + applyLayout).
   action: 'fill',
-  // The mend's band (whole width as a share of each side): 0.25 put 8 of the 10 fixture
-  // photographs' wraps in 0.8-1.2 (0.125: 6, 0.375: 7; examples/seam_profile mend).
+  // The mend's band (whole width as a share of each side): 0.25 put 9 of the 10 fixture
+  // photographs' wraps in 0.8-1.2 (0.125: 8, 0.375: 8; examples/seam_profile mend).
   band: 0.25,
   width: 512,
   height: 512,

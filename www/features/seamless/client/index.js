@@ -5,7 +5,7 @@ import { load, store } from '../../../shared/storage.js';
 import { runControls } from '../../../shared/run.js';
 import { zoomable } from '../../../shared/zoom.js';
 import { tilePanel } from '../../../shared/tile.js';
-import { builtinBitmap, fileBitmap, forgetImage, keepImage, keptImage, onDropFile, rgbaOf } from '../../../shared/images.js';
+import { imagePicker } from '../../../shared/images.js';
 
 export function mountSeamless(root, client) {
   const $ = (id) => root.querySelector(`#${id}`);
@@ -21,8 +21,6 @@ export function mountSeamless(root, client) {
   let resultUrl = null;
 
   // --- the exemplar ---
-  const select = $('seam-texture');
-  select.append(new Option('Built-in…', ''), ...textures.map((t) => new Option(t, t)));
   function show(rgba) {
     const c = $('seam-source');
     c.width = rgba.width;
@@ -31,44 +29,10 @@ export function mountSeamless(root, client) {
     image = rgba;
     $('seam-source-info').textContent = `${rgba.width}×${rgba.height}`;
   }
-  /** Shows a bitmap, scaled down to the cap; returns the note saying so (empty when it
-   *  fits), which is also shown. */
-  function useBitmap(bitmap, name) {
-    const { rgba, scaledFrom } = rgbaOf(bitmap, maxInputSide);
-    const note = scaledFrom ? `${name}: scaled from ${scaledFrom[0]}×${scaledFrom[1]} to fit ${maxInputSide} px.` : '';
-    if (note) say(note, 'warn');
-    show(rgba);
-    return note;
-  }
-  async function loadBuiltin(name) {
-    try {
-      useBitmap(await builtinBitmap(name), name);
-    } catch (e) {
-      say(`Could not load the built-in texture '${name}': ${e.message}`, 'error');
-    }
-  }
-  async function loadFile(file) {
-    const bitmap = await fileBitmap(file);
-    if (!bitmap) return say(`${file.name} is not an image this browser can read (use PNG or JPEG).`, 'error');
-    const note = useBitmap(bitmap, file.name);
-    select.value = '';
-    settings.texture = '';
-    save();
-    const kept = await keepImage(imageKey, file.name, $('seam-source'));
-    say(`Loaded ${file.name}.${note ? ` ${note}` : ''}${kept ? '' : ' (This browser would not keep it: it will not survive a reload.)'}`, kept && !note ? '' : 'warn');
-  }
-  select.addEventListener('change', () => {
-    if (!select.value) return;
-    settings.texture = select.value;
-    save();
-    forgetImage(imageKey);
-    loadBuiltin(select.value);
+  const picker = imagePicker({
+    select: $('seam-texture'), file: $('seam-file'), drop: $('seam-drop'), canvas: $('seam-source'), textures,
+    fallback: defaultOptions.texture, maxSide: maxInputSide, key: imageKey, settings, save, say, show, noun: 'texture',
   });
-  $('seam-file').addEventListener('change', async (e) => {
-    if (e.target.files[0]) await loadFile(e.target.files[0]);
-    e.target.value = '';
-  });
-  onDropFile($('seam-drop'), loadFile);
 
   // --- settings ---
   const method = $('seam-method');
@@ -138,10 +102,5 @@ export function mountSeamless(root, client) {
 
   // --- start ---
   showMethod();
-  const builtin = () => {
-    select.value = settings.texture || defaultOptions.texture;
-    loadBuiltin(select.value);
-  };
-  if (settings.texture) builtin();
-  else keptImage(imageKey).then((kept) => (kept ? useBitmap(kept.bitmap, kept.name) : builtin()));
+  picker.start();
 }
