@@ -1,6 +1,7 @@
 //! The edge a fill leaves at its hole's boundary: the mean colour step across the
 //! boundary over the mean step between neighbours just outside it (about 1: no edge;
-//! the measure of the issue-30 peer comparison), with the fill's patch energy, for
+//! the measure of the issue-30 peer comparison), and the fill's patch energy (windows in
+//! the hole against windows wholly outside it), for
 //! photographs and hole masks given as PNG pairs (`photo.png:hole.png`, white = hole),
 //! over seeds 1-3. `cargo run --release --example inpaint_edge -- a.png:a_hole.png ...`
 use patternsynth::raster::codec::{decode_image, encode_png};
@@ -42,6 +43,48 @@ fn edge_ratio(im: &Rgba, hole: &[bool], r: isize) -> f64 {
     (bs / bn as f64) / (rs / rn as f64)
 }
 
+/// RMS distance of 7 x 7 windows centred in the hole (every 3rd pixel) to their best
+/// match among the windows wholly outside it (the peer comparison's fill energy).
+fn fill_energy(out: &Rgba, img: &Rgba, hole: &[bool]) -> f64 {
+    let (w, h) = (img.width, img.height);
+    let px = |im: &Rgba, x: usize, y: usize, c: usize| im.data[4 * (y * w + x) + c] as f64;
+    let mut sources = Vec::new();
+    for y in 3..h - 3 {
+        for x in 3..w - 3 {
+            if (0..7).all(|j| (0..7).all(|i| !hole[(y + j - 3) * w + x + i - 3])) {
+                sources.push((x, y));
+            }
+        }
+    }
+    let (mut total, mut n) = (0.0, 0);
+    for y in (3..h - 3).step_by(3) {
+        for x in (3..w - 3).step_by(3) {
+            if !hole[y * w + x] {
+                continue;
+            }
+            let mut best = f64::INFINITY;
+            for &(sx, sy) in &sources {
+                let mut acc = 0.0;
+                'win: for j in 0..7 {
+                    for i in 0..7 {
+                        for c in 0..3 {
+                            let d = px(out, x + i - 3, y + j - 3, c) - px(img, sx + i - 3, sy + j - 3, c);
+                            acc += d * d;
+                        }
+                    }
+                    if acc > best {
+                        break 'win;
+                    }
+                }
+                best = best.min(acc);
+            }
+            total += best / 147.0;
+            n += 1;
+        }
+    }
+    (total / n as f64).sqrt()
+}
+
 fn main() {
     let mut all = Vec::new();
     for arg in std::env::args().skip(1) {
@@ -50,10 +93,12 @@ fn main() {
         let m = decode_image(&std::fs::read(mask).unwrap()).unwrap();
         let hole: Vec<bool> = m.data.chunks_exact(4).map(|p| p[0] > 127).collect();
         let mut ratios = Vec::new();
+        let mut energies = Vec::new();
         for seed in 1..=3 {
             let out =
                 inpaint_texture(&img, &hole, &InpaintOptions { seed, ..Default::default() }, &mut Silent).unwrap();
             ratios.push(edge_ratio(&out, &hole, 8));
+            energies.push(fill_energy(&out, &img, &hole));
             if seed == 1 {
                 let name = std::path::Path::new(photo).file_stem().unwrap().to_string_lossy().to_string();
                 std::fs::create_dir_all("out/fill").unwrap();
@@ -65,9 +110,20 @@ fn main() {
             }
         }
         ratios.sort_by(f64::total_cmp);
-        println!("{photo}: edge ratio {:.2} (photo's own {:.2})", ratios[1], edge_ratio(&img, &hole, 8));
-        all.push(ratios[1]);
+        energies.sort_by(f64::total_cmp);
+        println!(
+            "{photo}: edge ratio {:.2} (photo's own {:.2}), fill energy {:.2} (photo's own {:.2})",
+            ratios[1],
+            edge_ratio(&img, &hole, 8),
+            energies[1],
+            fill_energy(&img, &img, &hole)
+        );
+        all.push((ratios[1], energies[1]));
     }
-    all.sort_by(f64::total_cmp);
-    println!("median {:.2}", all[all.len() / 2]);
+    let median = |k: usize| {
+        let mut v: Vec<f64> = all.iter().map(|a| if k == 0 { a.0 } else { a.1 }).collect();
+        v.sort_by(f64::total_cmp);
+        v[v.len() / 2]
+    };
+    println!("median edge ratio {:.2}, fill energy {:.2}", median(0), median(1));
 }

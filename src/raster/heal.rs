@@ -11,6 +11,14 @@
 //! ones). Successive over-relaxation solves it, started from zero; the steps being
 //! those of one texture against itself, a few hundred sweeps take off the colour offset
 //! that makes a fill show, which is what the eye sees; a finer residual stays.
+//!
+//! The price: the filled pixels are no longer verbatim copies, so patch energy (which
+//! rewards copies) rises. Over the eight photographs of the peer comparison the fill's
+//! energy went from 6.10 to 9.92 (texture-synthesis 8.40, the photograph's own content
+//! 12.57) while the step at the hole's edge went from 2.05 times the steps around it to
+//! 1.05 (texture-synthesis 1.21). Fading the correction out with the distance from the
+//! edge (e^(-d/4)) lowered the energy by a tenth only, and left a brighter or darker
+//! fill inside a ring.
 
 use super::image::{wrap, Rgba};
 
