@@ -14,8 +14,10 @@
 //! cut through each overlap (a path found by dynamic programming), so windows meet along
 //! their most alike pixels rather than along straight lines.
 //!
-//! Windows are clipped at the output's edges: a tile's coarsest level is not quilted
-//! (see `Job::quilted`).
+//! Windows are clipped at the output's edges, or, for a tile, laid round the torus:
+//! spread evenly so that every gap is at most a step, each row's last window cut against
+//! its first as well as its left neighbour, and the last row against the first as well
+//! as the row above, so that the wrap is one more overlap, joined like the others.
 
 use super::image::Image;
 use crate::rng::Rng;
@@ -44,13 +46,29 @@ impl Quilt {
         (b >= 4).then_some(b)
     }
 
+    /// The window side for an output `lw` x `lh` from an exemplar `ew` x `eh`: on a
+    /// torus also at most half the output's side, so that a window never meets itself
+    /// across the wrap.
+    pub fn window_for(&self, (ew, eh): (usize, usize), (lw, lh): (usize, usize), torus: bool) -> Option<usize> {
+        let b = self.window(ew, eh)?;
+        let b = if torus { b.min(lw / 2).min(lh / 2) } else { b };
+        (b >= 4).then_some(b)
+    }
+
     /// Exemplar positions (row major in `ex`) for an output `lw` x `lh`, or `None` when
-    /// `window` is. With `allowed` (a sample mask), a window is drawn again (up to 16
+    /// `window_for` is. With `allowed` (a sample mask), a window is drawn again (up to 16
     /// times) while its corners or centre are not allowed; positions it still holds
     /// that are not allowed are the caller's to replace.
-    pub fn lay(&self, ex: &Image, allowed: Option<&[bool]>, lw: usize, lh: usize, rng: &mut Rng) -> Option<Vec<u32>> {
+    pub fn lay(
+        &self,
+        ex: &Image,
+        allowed: Option<&[bool]>,
+        (lw, lh): (usize, usize),
+        torus: bool,
+        rng: &mut Rng,
+    ) -> Option<Vec<u32>> {
         let (ew, eh) = (ex.width, ex.height);
-        let b = self.window(ew, eh)?;
+        let b = self.window_for((ew, eh), (lw, lh), torus)?;
         let o = b / 4;
         let step = b - o;
         const FREE: u32 = u32::MAX;
@@ -61,14 +79,22 @@ impl Quilt {
             (0..3).map(|k| (c[k] - d[k]) * (c[k] - d[k])).sum::<f32>()
         };
         let pos = |(ox, oy): (usize, usize), dx: usize, dy: usize| ((oy + dy) * ew + ox + dx) as u32;
-        let rows = starts(lh, b, step, 0);
+        let along =
+            |len: usize, shift: usize| if torus { around(len, step, shift) } else { starts(len, b, step, shift) };
+        // Round a torus the rows start anywhere too: rows from 0 would put the last
+        // row's cut against the first just below the wrap, on every tile.
+        let rows = along(lh, if torus { rng.below(step) } else { 0 });
         for (r, &y0) in rows.iter().enumerate() {
-            let cols = starts(lw, b, step, rng.below(step));
+            let cols = along(lw, rng.below(step));
             for (k, &x0) in cols.iter().enumerate() {
-                // The window's pixel (dx, dy) in the output, if inside.
+                // The window's pixel (dx, dy) in the output, if inside (on a torus, always).
                 let at = |dx: usize, dy: usize| -> Option<usize> {
                     let (x, y) = (x0 + dx as isize, y0 + dy as isize);
-                    (x >= 0 && (x as usize) < lw && (y as usize) < lh).then(|| y as usize * lw + x as usize)
+                    if torus {
+                        Some(y.rem_euclid(lh as isize) as usize * lw + x.rem_euclid(lw as isize) as usize)
+                    } else {
+                        (x >= 0 && (x as usize) < lw && (y as usize) < lh).then(|| y as usize * lw + x as usize)
+                    }
                 };
                 // The best of a few random origins by the squared difference over the
                 // pixels laid already.
@@ -111,14 +137,23 @@ impl Quilt {
                     }
                 }
                 // A cut through each side that meets laid pixels: the left one (every
-                // window but a row's first) and the top one (every row but the first).
-                // Each gives, per row or column, how far in the old side reaches.
-                let left = if k > 0 { cut(b, o, |t, j| err[t * b + j]) } else { vec![0; b] };
-                let top = if r > 0 { cut(b, o, |t, j| err[j * b + t]) } else { vec![0; b] };
-                for (dy, &l) in left.iter().enumerate() {
-                    for (dx, &t) in top.iter().enumerate() {
+                // window but a row's first) and the top one (every row but the first);
+                // on a torus also the right one (a row's last window meets its first)
+                // and the bottom one (the last row meets the first). Each gives, per row
+                // or column, how far in the old side reaches.
+                let none = || vec![0; b];
+                let left = if k > 0 { cut(b, o, |t, j| err[t * b + j]) } else { none() };
+                let top = if r > 0 { cut(b, o, |t, j| err[j * b + t]) } else { none() };
+                let right =
+                    if torus && k + 1 == cols.len() { cut(b, o, |t, j| err[t * b + b - 1 - j]) } else { none() };
+                let bottom =
+                    if torus && r + 1 == rows.len() { cut(b, o, |t, j| err[(b - 1 - j) * b + t]) } else { none() };
+                for dy in 0..b {
+                    for dx in 0..b {
+                        let new =
+                            dx >= left[dy] && dy >= top[dx] && b - 1 - dx >= right[dy] && b - 1 - dy >= bottom[dx];
                         match at(dx, dy) {
-                            Some(i) if out[i] == FREE || (dx >= l && dy >= t) => out[i] = pos(origin, dx, dy),
+                            Some(i) if out[i] == FREE || new => out[i] = pos(origin, dx, dy),
                             _ => {}
                         }
                     }
@@ -138,6 +173,14 @@ fn starts(len: usize, b: usize, step: usize, shift: usize) -> Vec<isize> {
         v.push(x + step as isize);
     }
     v
+}
+
+/// Where `n` windows start round a torus side of length `len`, from `shift` on, spread
+/// evenly with `n` the fewest that leave no gap over `step` (so every overlap, the one
+/// across the wrap too, is at least the window side less `step`).
+fn around(len: usize, step: usize, shift: usize) -> Vec<isize> {
+    let n = len.div_ceil(step);
+    (0..n).map(|k| (shift + (k * len + n / 2) / n) as isize).collect()
 }
 
 /// The least-difference cut through an overlap strip `o` wide along a window side `b`
@@ -186,7 +229,7 @@ mod tests {
     fn every_pixel_copies_a_position_and_neighbours_mostly_continue() {
         let ex = gradient(32, 32);
         let (lw, lh) = (70, 45);
-        let q = Quilt::default().lay(&ex, None, lw, lh, &mut Rng::new(3)).unwrap();
+        let q = Quilt::default().lay(&ex, None, (lw, lh), false, &mut Rng::new(3)).unwrap();
         assert_eq!(q.len(), lw * lh);
         assert!(q.iter().all(|&p| (p as usize) < 32 * 32));
         // Inside a window the right neighbour copies the next exemplar pixel; windows are
@@ -196,6 +239,31 @@ mod tests {
             .filter(|&(x, y)| q[y * lw + x + 1] == q[y * lw + x] + 1)
             .count();
         assert!(continued * 4 >= 3 * lh * (lw - 1), "{continued} of {}", lh * (lw - 1));
+    }
+
+    #[test]
+    fn a_torus_quilt_continues_across_the_wrap() {
+        // Laid round the torus, the pixels either side of the wrap are most often one
+        // window's neighbours, as inside; clipped, they never are.
+        let ex = gradient(64, 64);
+        let (lw, lh) = (72, 40);
+        let across = |q: &[u32]| {
+            let right = (0..lh).filter(|&y| q[y * lw] == q[y * lw + lw - 1] + 1).count();
+            let down = (0..lw).filter(|&x| q[x] == q[(lh - 1) * lw + x] + 64).count();
+            (right as f64 / lh as f64, down as f64 / lw as f64)
+        };
+        for seed in 1..=3 {
+            let q = Quilt::default().lay(&ex, None, (lw, lh), true, &mut Rng::new(seed)).unwrap();
+            assert!(q.iter().all(|&p| (p as usize) < 64 * 64));
+            let (right, down) = across(&q);
+            assert!(right >= 0.5 && down >= 0.5, "seed {seed}: across the wrap {right:.2} {down:.2}");
+            let clipped = Quilt::default().lay(&ex, None, (lw, lh), false, &mut Rng::new(seed)).unwrap();
+            let (right, down) = across(&clipped);
+            assert!(right < 0.2 && down < 0.2, "clipped, seed {seed}: {right:.2} {down:.2}");
+        }
+        // A window never meets itself: on a 20 px torus it is at most 10.
+        assert_eq!(Quilt::default().window_for((64, 64), (20, 40), true), Some(10));
+        assert_eq!(Quilt::default().window_for((64, 64), (6, 40), true), None);
     }
 
     #[test]
@@ -228,7 +296,7 @@ mod tests {
                 ex.data[y * 64 + x] = if x < 32 { [20.0; 3] } else { [rng.below(256) as f32; 3] };
             }
         }
-        let q = Quilt::default().lay(&ex, None, 128, 128, &mut Rng::new(1)).unwrap();
+        let q = Quilt::default().lay(&ex, None, (128, 128), false, &mut Rng::new(1)).unwrap();
         let left = q.iter().filter(|&&p| (p % 64) < 32).count() as f64 / q.len() as f64;
         assert!((0.3..0.7).contains(&left), "left share {left}");
     }

@@ -172,7 +172,7 @@ impl Job {
         let quilt = quilt_params();
         let quiltable = exs.iter().all(|ex| {
             let coarsest = &ex.levels[levels - 1];
-            quilt.window(coarsest.width, coarsest.height).is_some()
+            quilt.window_for((coarsest.width, coarsest.height), sizes[levels - 1], params.tileable).is_some()
         });
         let start = match &params.start {
             Some(picture) => {
@@ -216,10 +216,7 @@ impl Job {
     /// Whether `level` starts from a map made whole (`starts`) and so needs no causal
     /// pass: the coarsest level, when it starts from a picture's layout, or when its
     /// exemplars are large enough to quilt and the output is not a tile. A tile's
-    /// coarsest level is otherwise grown causally: quilted (windows wrapped round the
-    /// torus, cut against the first ones), tissue's 256 tiles kept its make-up better
-    /// (colour distance 0.63 -> 0.31 over seeds 1-3) but print's wrap became a seam
-    /// (`seam_lines`: 1.07 -> 1.22-1.47 over seeds 1-8, against the 1.2).
+    /// coarsest level is otherwise grown causally (`tile_quilt` says why).
     pub(crate) fn started(&self, level: usize) -> bool {
         level + 1 == self.levels && self.start.is_some()
     }
@@ -240,7 +237,7 @@ impl Job {
                         let mut rng = Rng::new(self.params.seed ^ (0x51 << 56) ^ e as u64);
                         let plane = &ex.levels[level];
                         let mut map = quilt
-                            .lay(&plane.image(), plane.allowed_mask(), lw, lh, &mut rng)
+                            .lay(&plane.image(), plane.allowed_mask(), (lw, lh), self.params.tileable, &mut rng)
                             .expect("Job::new checked the window");
                         // Windows that still reach masked positions: those pixels start
                         // anywhere allowed, and the passes join them.
@@ -396,10 +393,15 @@ impl Job {
     }
 }
 
-/// Whether tiles quilt too (a probe's setting, `PATTERNSYNTH_TILE_QUILT=1`). Measured
-/// with examples/tile_quality at 128, seeds 1-3: clouds' colour distance 0.298 -> 0.162
-/// and tissue's 0.68 -> 0.34, but print's wrap became a seam again (0.99 -> 1.26; 1.34
-/// and 1.45 with two and three correction passes), so tiles still grow from noise.
+/// Whether tiles quilt too (a probe's setting, `PATTERNSYNTH_TILE_QUILT=1`), round the
+/// torus. Clipped at the edges, the quilt put a cut on the wrap, and laid round the
+/// torus with rows from 0 it still did (print's wrap 1.53 at 128, seeds 1-3); with rows
+/// shifted at random, the ten photographs at 128 (examples/tile_quality, seeds 1-3)
+/// keep colours closer (mean distance 0.160 -> 0.137; tissue 0.68 -> 0.31) at about the
+/// same patch energy (6.11 -> 6.22), but over seeds 1-8 (examples/seam_lines) print's
+/// wrap stays a seam (1.07 from noise, 1.46 quilted, 1.37 without the wrap's extra
+/// pass, 1.34 with a causal first pass over the quilt; its inner lines 0.88-1.18) while
+/// the other nine stay within 0.81-1.09. So tiles still grow from noise.
 fn tile_quilt() -> bool {
     cfg!(feature = "test-support") && std::env::var("PATTERNSYNTH_TILE_QUILT").is_ok_and(|v| v == "1")
 }
