@@ -181,8 +181,14 @@ export interface SeamlessResult {
 }
 export interface StrokeResult {
   strokes: Stroke[]; classes: number[]; sources: number[]; classification: Classification; svg: string;
-  /** The periods the output repeats on (found, fitted or given); null when grown freely. */
+  /** The periods the output repeats on (found, fitted or given; a ring's rosettes are
+   *  laid on a hexagonal lattice); null when grown freely or along a curve. */
   periods: Periods | null;
+  /** What the drawing was repeated on: 'lattice' (translations), 'ring' (copies turned
+   *  round a centre: completed, and repeated as rosettes where small beside the output),
+   *  'curve' (continued along an arc), 'sequence' (each copy turned and scaled from the
+   *  last: a spiral), 'irregular' (no repeat: a mosaic of the drawing, or a mesh). */
+  structure: 'lattice' | 'ring' | 'curve' | 'sequence' | 'irregular';
   growingPoints: number; skippedFull: number; passedOver: number;
 }
 

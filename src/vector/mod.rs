@@ -1,5 +1,6 @@
 //! Engine 1: near-regular vector pattern synthesis from example strokes (SPEC section 1).
 
+pub mod chain;
 pub mod classify;
 pub mod color;
 pub mod element;
@@ -21,6 +22,7 @@ pub mod regularity;
 pub mod replay;
 #[cfg(feature = "test-support")]
 pub mod sequences;
+pub mod similarity;
 pub mod spatial;
 pub mod stroke;
 pub mod suggest;

@@ -1,6 +1,7 @@
 //! The vector engine end to end: classify, grow, dress the grown elements with strokes,
 //! write SVG. This is the entry point the wasm layer and the tests call.
 
+use super::chain::{self, Chain, Structure};
 use super::classify::{classify, propose_tolerances, Tolerances};
 use super::grow::{find_periods, fit_lattice, grow, Element, GrowOptions, Grown};
 use super::mesh::Mesh;
@@ -98,6 +99,10 @@ pub struct StrokeResult {
     /// The periods the output repeats on (found, fitted or given), `[[ax, ay], [bx, by]]`;
     /// none when it was grown freely (irregular input).
     pub periods: Option<[[f64; 2]; 2]>,
+    /// What the drawing was repeated on: a lattice, a ring (completed, and repeated as
+    /// a rosette where it is small beside the output), a curve or a sequence (continued
+    /// along its step), or nothing (irregular: a mosaic or a mesh).
+    pub structure: Structure,
     pub growing_points: usize,
     pub skipped_full: usize,
     pub passed_over: usize,
@@ -246,6 +251,18 @@ pub fn synthesize_strokes(
         Some(mesh) => mesh.synthesize(strokes, area, &grow_opts, &mut throttle).map_err(explain)?,
         None => None,
     };
+    // A drawing with no lattice may repeat along a similarity step: a ring, an arc, a
+    // spiral (`chain`).
+    // A rosette (copies turned round a centre close by) is taken before a lattice: a
+    // lattice read from a handful of petals is a chance one.
+    let along = (joined.is_none() && periods.is_none() && motifs.copies.is_none())
+        .then(|| chain::find(strokes))
+        .flatten()
+        .filter(|c| c.closes.is_some() && 3 * c.members.len() >= 2 * strokes.len() || !translates(&elements));
+    if let Some(chain) = along {
+        return along_chain(strokes, classification, chain, opts, max_elements, progress);
+    }
+    let structure = if joined.is_some() { Structure::Irregular } else { Structure::Lattice };
     let (out, classes, sources, stats, periods) = if let Some(j) = joined {
         let classes = j.sources.iter().map(|&s| classification.classes[s as usize]).collect();
         (j.strokes, classes, j.sources, j.grown.stats, j.grown.periods)
@@ -264,8 +281,87 @@ pub fn synthesize_strokes(
         classification,
         svg,
         periods: periods.map(|(a, b)| [[a.x, a.y], [b.x, b.y]]),
+        structure: if periods.is_some() { structure } else { Structure::Irregular },
         growing_points: stats.growing_points,
         skipped_full: stats.skipped_full,
         passed_over: stats.passed_over,
+    })
+}
+
+/// Whether the motif elements repeat by translation (exact periods, or a hand's lattice):
+/// only a drawing that does not is searched for a chain.
+fn translates(elements: &[Element]) -> bool {
+    elements.len() > chain::MAX_STROKES
+        || (elements.len() >= 2
+            && (find_periods(elements).ok().flatten().is_some()
+                || fit_lattice(elements).ok().flatten().and_then(|l| l.periods(elements)).is_some()))
+}
+
+/// The drawing repeated along its `chain`, centred in the output. A ring small beside
+/// the output (its diameter at most half the output's short side) is completed and
+/// repeated as a rosette on a hexagonal lattice its diameter and a tenth apart; a
+/// larger ring, a curve or a sequence is continued both ways across the output (a ring
+/// until it closes). Other strokes stay as drawn (in a rosette, they repeat with it).
+fn along_chain(
+    strokes: &[Stroke],
+    classification: Classification,
+    chain: Chain,
+    opts: &StrokeOptions,
+    max_elements: usize,
+    progress: &mut dyn Progress,
+) -> Result<StrokeResult> {
+    let area = kurbo::Rect::new(0.0, 0.0, opts.width, opts.height);
+    let bounds = strokes.iter().skip(1).fold(strokes[0].bounds(), |r, s| r.union(s.bounds()));
+    let v = area.center() - bounds.center();
+    let drawn: Vec<Stroke> = strokes.iter().map(|s| s.translated(v.x, v.y)).collect();
+    let chain = chain.moved(v);
+    let seed = opts.variation.then_some(opts.seed);
+    let mut out = drawn.clone();
+    let mut sources: Vec<u32> = (0..strokes.len() as u32).collect();
+    if let Some(c) = chain.centre() {
+        for (s, from) in chain.complete(&drawn, seed) {
+            out.push(s);
+            sources.push(from as u32);
+        }
+        let radius = out
+            .iter()
+            .flat_map(|s| s.points.iter().map(move |&[x, y]| c.distance(kurbo::Point::new(x, y)) + 0.5 * s.width))
+            .fold(0.0, f64::max);
+        if 4.0 * radius <= opts.width.min(opts.height) {
+            // (A large ring is continued across the output like a curve, below.)
+            let s = 2.2 * radius;
+            let hexagonal = [[s, 0.0], [0.5 * s, 0.5 * 3f64.sqrt() * s]];
+            let mut r =
+                synthesize_strokes(&out, &StrokeOptions { periods: Some(hexagonal), ..opts.clone() }, progress)?;
+            r.sources = r.sources.iter().map(|&i| sources[i as usize]).collect();
+            r.classes = r.sources.iter().map(|&i| classification.classes[i as usize]).collect();
+            r.svg = to_svg(&r.strokes, &r.classes, opts.width, opts.height);
+            r.classification = classification;
+            r.structure = Structure::Ring;
+            return Ok(r);
+        }
+        out.truncate(strokes.len());
+        sources.truncate(strokes.len());
+    }
+    let room = max_elements.saturating_sub(out.len());
+    for (s, from) in chain.extend(&drawn, area, seed, room) {
+        out.push(s);
+        sources.push(from as u32);
+    }
+    let classes: Vec<u32> = sources.iter().map(|&i| classification.classes[i as usize]).collect();
+    let svg = to_svg(&out, &classes, opts.width, opts.height);
+    let structure = chain.structure();
+    Throttle::new(progress).tick(1.0)?;
+    Ok(StrokeResult {
+        strokes: out,
+        classes,
+        sources,
+        classification,
+        svg,
+        periods: None,
+        structure,
+        growing_points: 0,
+        skipped_full: 0,
+        passed_over: 0,
     })
 }

@@ -18,12 +18,9 @@
 //! stroke are carried on.
 
 use super::{Suggestions, TOLERANCE};
-use crate::vector::frechet::resample_count;
+use crate::vector::similarity::{self, centroid, mul, samples, Similarity};
 use crate::vector::stroke::Stroke;
 use kurbo::{Point, Rect, Vec2};
-
-/// Samples per stroke for the similarity fit.
-const SAMPLES: usize = 24;
 /// Strokes looked back over for the two copies before the latest.
 const LOOK_BACK: usize = 12;
 /// A copy is the same shape when the best similarity leaves an rms residual of at most
@@ -43,66 +40,10 @@ const MIN_ERROR: f64 = 0.02;
 /// ...counted as this many observed misses.
 const PRIOR_COPIES: f64 = 3.0;
 
-/// `z -> a z + b`, with `a` a complex number (`x` real, `y` imaginary).
-#[derive(Clone, Copy, Debug)]
-struct Similarity {
-    a: Vec2,
-    b: Vec2,
-}
-
-fn mul(a: Vec2, z: Vec2) -> Vec2 {
-    Vec2::new(a.x * z.x - a.y * z.y, a.x * z.y + a.y * z.x)
-}
-
-impl Similarity {
-    fn apply(&self, p: Point) -> Point {
-        (mul(self.a, p.to_vec2()) + self.b).to_point()
-    }
-
-    /// The least-squares similarity carrying `from` onto `to` (paired points) and its
-    /// rms residual.
-    fn fit(from: &[Point], to: &[Point]) -> (Similarity, f64) {
-        let n = from.len() as f64;
-        let zc = from.iter().fold(Vec2::ZERO, |s, p| s + p.to_vec2()) / n;
-        let wc = to.iter().fold(Vec2::ZERO, |s, p| s + p.to_vec2()) / n;
-        let (mut num, mut den) = (Vec2::ZERO, 0.0);
-        for (z, w) in from.iter().zip(to) {
-            let (z, w) = (z.to_vec2() - zc, w.to_vec2() - wc);
-            // conj(z) w
-            num += Vec2::new(z.x * w.x + z.y * w.y, z.x * w.y - z.y * w.x);
-            den += z.hypot2();
-        }
-        let a = if den > 0.0 { num / den } else { Vec2::new(1.0, 0.0) };
-        let t = Similarity { a, b: wc - mul(a, zc) };
-        let rms = (from.iter().zip(to).map(|(z, w)| t.apply(*z).distance_squared(*w)).sum::<f64>() / n).sqrt();
-        (t, rms)
-    }
-}
-
-/// A stroke's path at `SAMPLES` points.
-fn samples(s: &Stroke) -> Vec<Point> {
-    let pts: Vec<Point> = s.points.iter().map(|&[x, y]| Point::new(x, y)).collect();
-    resample_count(&pts, SAMPLES)
-}
-
-/// The similarity carrying `from` onto `to` (either way round along `to`), with its
-/// residual as a share of `from`'s size, when they are the same shape.
+/// The similarity carrying `from` onto `to`, with its residual as a share of `size`,
+/// when they are the same shape (`similarity::relate` with this module's bounds).
 fn relate(from: &[Point], to: &[Point], size: f64) -> Option<(Similarity, f64)> {
-    if from.len() != to.len() || from.len() < 2 || size <= 0.0 {
-        return None;
-    }
-    let reversed: Vec<Point> = to.iter().rev().copied().collect();
-    let fits = [Similarity::fit(from, to), Similarity::fit(from, &reversed)];
-    // A shape that looks the same either way round (a line, an ellipse) fits both: the
-    // smaller turn is the step (a line's next copy is not the line turned half round).
-    let best = fits[0].1.min(fits[1].1);
-    let turn = |t: &Similarity| (t.a - Vec2::new(1.0, 0.0)).hypot();
-    let (t, rms) = fits
-        .into_iter()
-        .filter(|f| f.1 <= (1.5 * best).max(0.02 * size))
-        .min_by(|x, y| turn(&x.0).total_cmp(&turn(&y.0)))?;
-    let scale = t.a.hypot();
-    (rms <= SHAPE * size && (1.0 / MAX_SCALE..=MAX_SCALE).contains(&scale)).then_some((t, rms / size))
+    similarity::relate(from, to, size, SHAPE, MAX_SCALE).map(|(t, r, _)| (t, r))
 }
 
 /// Proposals continuing the sequence that ends with the latest of `strokes` (none, with
@@ -154,11 +95,7 @@ pub(super) fn propose(
     }
     // The first step must carry the second copy onto the latest: the miss of its centre
     // (where a copy is matched).
-    let carry = |t: &Similarity, i: usize| {
-        let mut s = strokes[i].clone();
-        s.points = s.points.iter().map(|&[x, y]| t.apply(Point::new(x, y))).map(|p| [p.x, p.y]).collect();
-        s.reference_point()
-    };
+    let carry = |t: &Similarity, i: usize| t.carry(&strokes[i]).reference_point();
     if carry(&one, second).distance(centre(last)) > PLACE * step {
         return None;
     }
@@ -185,9 +122,8 @@ pub(super) fn propose(
     // The mean step, placed so that it carries the second copy's centre of mass onto the
     // latest's.
     let a = (one.a + two.a) * 0.5;
-    let mean = |s: &[Point]| s.iter().fold(Vec2::ZERO, |m, p| m + p.to_vec2()) / s.len() as f64;
     let (s2, s3) = (sampled[second].as_ref()?, sampled[last].as_ref()?);
-    let t = Similarity { a, b: mean(s3) - mul(a, mean(s2)) };
+    let t = Similarity { a, b: centroid(s3).to_vec2() - mul(a, centroid(s2).to_vec2()) };
     let tol = TOLERANCE * step;
     let mut out = Suggestions::default();
     // From the latest stroke (a copy accepted after the last hand-drawn one is the

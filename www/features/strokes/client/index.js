@@ -13,6 +13,15 @@ import { checkStyle, restyleSvg } from '../../../pkg/restyle.js';
 
 const SETTINGS_KEY = 'patternsynth.strokes.settings.v1';
 
+/** How the result tells which structure the drawing was repeated on. */
+const STRUCTURE = {
+  lattice: 'repeated on a lattice, ',
+  ring: 'completed as a ring, ',
+  curve: 'continued along its curve, ',
+  sequence: 'continued as a sequence, ',
+  irregular: 'no repeat (a mosaic of the drawing), ',
+};
+
 export function mountStrokes(root, client) {
   const $ = (id) => root.querySelector(`#${id}`);
   const canvas = $('draw');
@@ -267,7 +276,7 @@ export function mountStrokes(root, client) {
       const { background, opacity } = currentStyle();
       const preview = { width: Math.ceil(width * fit), height: Math.ceil(height * fit), background: background ?? undefined, opacity };
       const strokes = transformStrokes(drawing.strokes, turn);
-      const r = await client.synthesizeStrokes(strokes, opts, { ...call, fields: ['svgBlob', 'classes', 'classification', 'periods'], preview, keep: true });
+      const r = await client.synthesizeStrokes(strokes, opts, { ...call, fields: ['svgBlob', 'classes', 'classification', 'periods', 'structure'], preview, keep: true });
       // (In the drawing's own frame: a layout set by hand starts from them.)
       layout.found(transformPeriods(r.periods, { scale: 1 / turn.scale, degrees: -turn.degrees }));
       shownResult = { strokes, opts, preview, classification: r.classification };
@@ -280,7 +289,7 @@ export function mountStrokes(root, client) {
       // A style chosen before (a palette, a background) applies to the new result too
       // (the preview was drawn with its background and opacity, not the SVG).
       if (styleChanged()) await restyle();
-      $('result-info').textContent = `${r.classes.length} strokes, ${r.classification.count} classes, ${width}×${height}, ${ms.toFixed(0)} ms`;
+      $('result-info').textContent = `${r.classes.length} strokes, ${r.classification.count} classes, ${STRUCTURE[r.structure] ?? ''}${width}×${height}, ${ms.toFixed(0)} ms`;
       say('Done.');
     });
     scheduleClassify(0);

@@ -1,0 +1,445 @@
+//! Repetition along a similarity step, where the drawing holds no lattice (issue 27):
+//! petals round a centre, leaves along a curved stem, hatching that turns, a spiral.
+//! Each copy is the one before under one step `z -> a z + b` (`similarity`); the step
+//! turns (a ring, or an arc: a turn about a far centre) or scales (a spiral).
+//!
+//! Finding it: strokes of one shape up to rotation and scale are related pairwise; each
+//! relation between two of them is a candidate step, and the step kept is the one that
+//! carries the most of them onto another (the shortest such, so that a double step is
+//! not taken for the step). Following it from a copy no other copy steps onto gives the
+//! chain; it must hold at least three copies and two thirds of its shape's strokes (the
+//! petals of one flower among several are a flower's, not the drawing's, repetition).
+//! The step is then fitted by least squares over every consecutive pair, and where its
+//! turn is close to a whole fraction of a turn (and it does not scale) the ring closes:
+//! the turn is snapped to it.
+//!
+//! Continuing it: copies further along, both ways, each a drawn copy carried by the step
+//! as many times as it lies from it (with variation, a random drawn copy, so the hand's
+//! own differences recur; without, the nearest end), until a copy would leave the area,
+//! land on one placed already (a circle closing), or shrink or grow past sense.
+//!
+//! Departs from the seed paper (which repeats by translation only, comparing shapes up
+//! to translation); follows Xing et al. 2014's local similarity, read globally from all
+//! the drawn copies since synthesis sees the whole drawing at once.
+
+use super::similarity::{centroid, mul, relate, samples, Similarity};
+use super::stroke::Stroke;
+use crate::rng::Rng;
+use kurbo::{Point, Rect, Vec2};
+use serde::Serialize;
+use std::f64::consts::TAU;
+
+/// Which structure a synthesis repeated the drawing on.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Structure {
+    /// Translations (rows and grids; an exact tile).
+    Lattice,
+    /// Copies turned round a centre, closing after a whole number of steps.
+    Ring,
+    /// Copies along an arc (a turn about a far centre that does not close in view).
+    Curve,
+    /// Copies each turned and scaled from the last (a spiral, hatching that widens).
+    Sequence,
+    /// No repetition: a mosaic of the drawing's own windows, or a mesh joined afresh.
+    Irregular,
+}
+
+/// Drawings with more strokes than this are not searched for a chain (each pair of
+/// strokes of one shape is related; hand-drawn rings and curves are small).
+pub const MAX_STROKES: usize = 160;
+/// Same shape: the best similarity leaves an rms residual of at most this share of
+/// the stroke's size, and scales by at most `MAX_SCALE` either way.
+const SHAPE: f64 = 0.15;
+const MAX_SCALE: f64 = 1.3;
+/// Two relations are the same step when their `a` differ by at most this share of `|a|`.
+const TURN: f64 = 0.12;
+/// A step carries a copy onto another when it puts its centre within this share of the
+/// step's length.
+const PLACE: f64 = 0.3;
+/// A step turns or scales by at least this much (`|a - 1|`, about 1°): one that does
+/// not is a row's, which the lattice reads.
+const MIN_TURN: f64 = 0.02;
+/// Once the step is chosen, the chain follows it from copy to copy within this share
+/// of its length (a hand's copy may stray further than the candidates are held to:
+/// one line of sixteen hatching lines off by a third of their spacing).
+const FOLLOW: f64 = 0.5;
+/// Candidate steps relate each copy to this many of its nearest of the same shape.
+const NEAREST: usize = 4;
+/// A rosette closes when its steps round a whole turn are within this of a whole number
+/// (or a tenth of it).
+const CLOSE: f64 = 0.3;
+/// Copies whose centre of turn is within this many of their sizes are a rosette.
+const ROSETTE: f64 = 1.5;
+/// The most steps a chain is followed either way.
+const MAX_STEPS: i64 = 400;
+/// The most copies round a ring.
+const MAX_RING: usize = 72;
+
+/// The drawn copies in order along the step, and the step.
+#[derive(Clone, Debug)]
+pub struct Chain {
+    /// Strokes of the drawn copies, in order: `step` carries each onto the next.
+    pub members: Vec<usize>,
+    pub step: Similarity,
+    /// Copies round the whole ring, when it closes (a rosette: petals round a centre
+    /// within `ROSETTE` copy sizes).
+    pub closes: Option<usize>,
+}
+
+/// The chain of `strokes`, if they repeat along a similarity step.
+pub fn find(strokes: &[Stroke]) -> Option<Chain> {
+    let n = strokes.len();
+    if !(3..=MAX_STROKES).contains(&n) {
+        return None;
+    }
+    let sampled: Vec<Vec<Point>> = strokes.iter().map(samples).collect();
+    let centre: Vec<Point> = sampled.iter().map(|s| centroid(s)).collect();
+    let size: Vec<f64> = strokes.iter().map(|s| s.bounds().size().to_vec2().hypot()).collect();
+    let mut rel: Vec<Option<(Similarity, bool)>> = vec![None; n * n];
+    for i in 0..n {
+        for j in 0..n {
+            let ratio = size[j] / size[i].max(1e-9);
+            if i != j && (1.0 / MAX_SCALE..=MAX_SCALE).contains(&ratio) {
+                rel[i * n + j] = relate(&sampled[i], &sampled[j], size[i], SHAPE, MAX_SCALE).map(|(t, _, b)| (t, b));
+            }
+        }
+    }
+    // Shape groups: strokes related to one another, directly or through others.
+    let mut group: Vec<usize> = (0..n).collect();
+    fn root(g: &mut [usize], mut i: usize) -> usize {
+        while g[i] != i {
+            g[i] = g[g[i]];
+            i = g[i];
+        }
+        i
+    }
+    for i in 0..n {
+        for j in 0..n {
+            if rel[i * n + j].is_some() {
+                let (a, b) = (root(&mut group, i), root(&mut group, j));
+                group[a] = b;
+            }
+        }
+    }
+    let groups: Vec<usize> = (0..n).map(|i| root(&mut group, i)).collect();
+    // Where `t` carries copy `k`: the copy of its shape it lands on, related to it by
+    // about the same step.
+    let onto = |t: &Similarity, k: usize, reach: f64| -> Option<usize> {
+        let p = t.apply(centre[k]);
+        (0..n)
+            .filter(|&m| m != k && groups[m] == groups[k])
+            .filter(|&m| rel[k * n + m].is_some_and(|(r, _)| (r.a - t.a).hypot() <= TURN * t.a.hypot()))
+            .map(|m| (m, centre[m].distance(p)))
+            .filter(|&(_, d)| d <= reach)
+            .min_by(|x, y| x.1.total_cmp(&y.1))
+            .map(|(m, _)| m)
+    };
+    // The candidate step that carries the most copies onto another, the shortest first;
+    // candidates relate each copy to its nearest few of its shape (a step joins
+    // neighbours along the chain).
+    let mut best: Option<(usize, f64, Similarity)> = None;
+    for i in 0..n {
+        let mut near: Vec<usize> = (0..n).filter(|&j| rel[i * n + j].is_some()).collect();
+        near.sort_by(|&x, &y| centre[i].distance(centre[x]).total_cmp(&centre[i].distance(centre[y])));
+        for &j in near.iter().take(NEAREST) {
+            let Some((t, _)) = rel[i * n + j] else { continue };
+            let d = centre[i].distance(centre[j]);
+            if (t.a - Vec2::new(1.0, 0.0)).hypot() < MIN_TURN || d < 0.05 * size[i] {
+                continue;
+            }
+            let carried =
+                (0..n).filter(|&k| groups[k] == groups[i]).filter(|&k| onto(&t, k, PLACE * d).is_some()).count();
+            let better = match &best {
+                None => carried >= 2,
+                Some(b) => carried > b.0 || (carried == b.0 && d < b.1),
+            };
+            if better {
+                best = Some((carried, d, t));
+            }
+        }
+    }
+    let (_, d, t) = best?;
+    let next: Vec<Option<usize>> = (0..n).map(|k| onto(&t, k, FOLLOW * d)).collect();
+    // The longest run along the step, from a copy no other steps onto (a closed ring:
+    // from its first-drawn copy).
+    let mut chain: Vec<usize> = Vec::new();
+    for s in 0..n {
+        if next[s].is_none() && !next.contains(&Some(s)) {
+            continue;
+        }
+        let starts = !next.contains(&Some(s));
+        if !starts && !chain.is_empty() {
+            continue;
+        }
+        let mut run = vec![s];
+        let mut at = s;
+        while let Some(m) = next[at] {
+            if run.contains(&m) {
+                break;
+            }
+            run.push(m);
+            at = m;
+        }
+        if run.len() > chain.len() {
+            chain = run;
+        }
+    }
+    let shape_count = (0..n).filter(|&k| groups[k] == groups[chain[0]]).count();
+    if chain.len() < 3 || 3 * chain.len() < 2 * shape_count {
+        return None;
+    }
+    // The step: its turn and scale from the copies' shapes (the mean over consecutive
+    // pairs, each fitted on its own, so that where the hand put each copy does not
+    // leak into how it turned it), its shift from where the copies are (the mean of
+    // what each pair needs, given the turn).
+    let pairs: Vec<Similarity> = chain
+        .windows(2)
+        .map(|w| {
+            let (_, back) = rel[w[0] * n + w[1]].expect("consecutive copies are related");
+            let to: Vec<Point> =
+                if back { sampled[w[1]].iter().rev().copied().collect() } else { sampled[w[1]].clone() };
+            Similarity::fit(&sampled[w[0]], &to).0
+        })
+        .collect();
+    let shift_for = |a: Vec2| {
+        let b = chain.windows(2).fold(Vec2::ZERO, |s, w| s + centre[w[1]].to_vec2() - mul(a, centre[w[0]].to_vec2()));
+        Similarity { a, b: b / pairs.len() as f64 }
+    };
+    let mut step = shift_for(pairs.iter().fold(Vec2::ZERO, |s, t| s + t.a) / pairs.len() as f64);
+    // A turn without scale is read from where the copies are as well: the mean angle
+    // each pair of copies makes at the centre, averaged with the shapes' turn (each
+    // alone errs about as much: a petal's angle as its place round the centre).
+    if let (true, Some(c)) = ((step.scale() - 1.0).abs() < 0.04, step.fixed_point()) {
+        let angle = |p: Point| (p.y - c.y).atan2(p.x - c.x);
+        let placed = chain
+            .windows(2)
+            .map(|w| {
+                (angle(centre[w[1]]) - angle(centre[w[0]]) + 3.0 * std::f64::consts::PI).rem_euclid(TAU)
+                    - std::f64::consts::PI
+            })
+            .sum::<f64>()
+            / pairs.len() as f64;
+        let turn = 0.5 * (step.turn() + placed);
+
+        // (Within 4%, a scale is the hand's: a curve's copies stay its size.)
+        step = shift_for(Vec2::new(turn.cos(), turn.sin()));
+    }
+    if (step.a - Vec2::new(1.0, 0.0)).hypot() < MIN_TURN {
+        return None;
+    }
+    // Every consecutive pair within reach of the fitted step.
+    let len = chain.windows(2).map(|w| centre[w[0]].distance(centre[w[1]])).sum::<f64>() / (chain.len() - 1) as f64;
+    if chain.windows(2).any(|w| step.apply(centre[w[0]]).distance(centre[w[1]]) > FOLLOW * len) {
+        return None;
+    }
+    // A ring: copies round a centre close by (petals: the centre within about a copy's
+    // size), no scale, and a whole number of steps round, however the hand's wobble has
+    // put the turn (three petals of twelve at 3% of the step read the turn 4% off): the
+    // nearest whole number within a tenth of it, to which the turn is snapped. Copies
+    // round a far centre (leaves along an arc) are a curve: snapping 25.7 steps round
+    // to 26 would put the 8th leaf on from the drawn ones 9% of a step off its arc.
+    let turns = TAU / step.turn().abs();
+    let whole = turns.round();
+    let rosette = step.fixed_point().is_some_and(|c| {
+        let radius = chain.iter().map(|&k| centre[k].distance(c)).sum::<f64>() / chain.len() as f64;
+        let size = chain.iter().map(|&k| size[k]).sum::<f64>() / chain.len() as f64;
+        radius <= ROSETTE * size
+    });
+    let closes = (rosette
+        && (step.scale() - 1.0).abs() < 0.04
+        && (turns - whole).abs() <= CLOSE.max(0.1 * whole)
+        && (3.0..=MAX_RING as f64).contains(&whole))
+    .then_some(whole as usize);
+    if let Some(k) = closes {
+        // The turn snapped, and the shift read again for it.
+        let turn = TAU / k as f64 * step.turn().signum();
+        step = shift_for(Vec2::new(turn.cos(), turn.sin()));
+    }
+    Some(Chain { members: chain, step, closes })
+}
+
+impl Chain {
+    /// The structure the chain makes.
+    pub fn structure(&self) -> Structure {
+        if self.closes.is_some() {
+            Structure::Ring
+        } else if (self.step.scale() - 1.0).abs() < 0.04 {
+            Structure::Curve
+        } else {
+            Structure::Sequence
+        }
+    }
+
+    /// The chain with its drawing moved by `v`: the step conjugated by the move.
+    pub fn moved(&self, v: Vec2) -> Chain {
+        let t = self.step;
+        Chain { step: Similarity { a: t.a, b: t.b + v - mul(t.a, v) }, ..self.clone() }
+    }
+
+    /// The centre a ring turns about.
+    pub fn centre(&self) -> Option<Point> {
+        self.closes.and(self.step.fixed_point())
+    }
+
+    /// The copy `t` steps from the first drawn one (the drawn copies are 0 to
+    /// `members - 1`), carried from drawn copy `from`.
+    fn copy(&self, strokes: &[Stroke], t: i64, from: usize) -> Option<Stroke> {
+        Some(self.step.power(t - from as i64)?.carry(&strokes[self.members[from]]))
+    }
+
+    /// The drawn copy to carry to position `t`: a random one with variation (`rng`),
+    /// else the nearest end.
+    fn source(&self, t: i64, rng: &mut Option<Rng>) -> usize {
+        let l = self.members.len();
+        match rng {
+            Some(r) => r.below(l),
+            None => t.clamp(0, l as i64 - 1) as usize,
+        }
+    }
+
+    /// The copies missing round a closed ring (none for an open chain), each with the
+    /// drawn copy it was carried from.
+    ///
+    /// A copy that lies on a stroke of the drawing (or on one completed before it) is
+    /// left out: bars through one centre (an asterisk's) read as a ring of twice as many
+    /// steps, each bar its own copy half a turn on.
+    pub fn complete(&self, strokes: &[Stroke], seed: Option<u64>) -> Vec<(Stroke, usize)> {
+        let Some(k) = self.closes else { return Vec::new() };
+        let mut rng = seed.map(Rng::new);
+        let mut placed: Vec<Vec<Point>> = strokes.iter().map(samples).collect();
+        let mut out = Vec::new();
+        for t in self.members.len()..k {
+            let from = self.source(t as i64, &mut rng);
+            let Some(copy) = self.copy(strokes, t as i64, from) else { continue };
+            let s = samples(&copy);
+            let size = copy.bounds().size().to_vec2().hypot();
+            let on = |p: &Vec<Point>| {
+                let gap = |q: &mut dyn Iterator<Item = &Point>| {
+                    (s.iter().zip(q).map(|(a, b)| a.distance_squared(*b)).sum::<f64>() / s.len() as f64).sqrt()
+                };
+                gap(&mut p.iter()).min(gap(&mut p.iter().rev())) < 0.1 * size
+            };
+            if placed.iter().any(on) {
+                continue;
+            }
+            placed.push(s);
+            out.push((copy, self.members[from]));
+        }
+        out
+    }
+
+    /// The copies further along the chain, both ways, whose centres lie in `area` (at
+    /// most `max`), each with the drawn copy it was carried from. A chain that leaves
+    /// the area may come back into it (an arc of a circle larger than the area), so it
+    /// is followed on: for a turn, once round; for a spiral, while its copies are
+    /// between half the smallest drawn copy and twice the largest (further on, the
+    /// step's error read from a few copies outgrows the copies); never onto a
+    /// copy placed already (within half a step: a circle closing).
+    pub fn extend(&self, strokes: &[Stroke], area: Rect, seed: Option<u64>, max: usize) -> Vec<(Stroke, usize)> {
+        let mut rng = seed.map(Rng::new);
+        let l = self.members.len() as i64;
+        let size = |s: &Stroke| s.bounds().size().to_vec2().hypot();
+        let sizes: Vec<f64> = self.members.iter().map(|&m| size(&strokes[m])).collect();
+        let (small, large) = (
+            0.5 * sizes.iter().copied().fold(f64::INFINITY, f64::min),
+            2.0 * sizes.iter().copied().fold(0.0, f64::max),
+        );
+        let turning = (self.step.scale() - 1.0).abs() < 0.04;
+        let steps = if turning { (TAU / self.step.turn().abs().max(1e-3)).ceil() as i64 } else { MAX_STEPS };
+        let mut centres: Vec<Point> = self.members.iter().map(|&m| strokes[m].reference_point()).collect();
+        let mut out = Vec::new();
+        // Both ways in turn, so that where the two runs meet (round a circle) each copy
+        // comes from the nearer end.
+        let mut next = [Some(l), Some(-1)];
+        while out.len() < max && next.iter().any(Option::is_some) {
+            for (d, dir) in [1i64, -1].into_iter().enumerate() {
+                let Some(t) = next[d] else { continue };
+                next[d] = None;
+                if (t - if dir > 0 { l - 1 } else { 0 }).abs() > steps.min(MAX_STEPS) || out.len() >= max {
+                    continue;
+                }
+                let from = self.source(t, &mut rng);
+                let Some(copy) = self.copy(strokes, t, from) else { continue };
+                let c = copy.reference_point();
+                let s = size(&copy);
+                // The step's length here: the distance to the copy before it.
+                let before = self.copy(strokes, t - dir, from).map_or(0.0, |b| b.reference_point().distance(c));
+                if s < small || s > large || centres.iter().any(|p| p.distance(c) < 0.5 * before) {
+                    continue;
+                }
+                if area.contains(c) {
+                    centres.push(c);
+                    out.push((copy, self.members[from]));
+                }
+                next[d] = Some(t + dir);
+            }
+        }
+        out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A petal: a loop `len` long from `at` along `theta`.
+    fn petal(at: Point, theta: f64, len: f64) -> Stroke {
+        let pts = (0..=20)
+            .map(|k| {
+                let t = k as f64 / 20.0 * TAU;
+                let (along, across) = (0.5 * len * (1.0 - t.cos()), len / 6.0 * t.sin());
+                let (c, s) = (theta.cos(), theta.sin());
+                [at.x + along * c - across * s, at.y + along * s + across * c]
+            })
+            .collect();
+        Stroke::new(pts, 2.0, None)
+    }
+
+    #[test]
+    fn three_petals_of_eight_make_a_ring_and_complete_it() {
+        let c = Point::new(100.0, 100.0);
+        let drawn: Vec<Stroke> = (0..3).map(|k| petal(c, k as f64 * TAU / 8.0, 60.0)).collect();
+        let chain = find(&drawn).expect("a ring");
+        assert_eq!(chain.closes, Some(8));
+        assert_eq!(chain.members, vec![0, 1, 2]);
+        assert!(chain.centre().unwrap().distance(c) < 1.0);
+        let rest = chain.complete(&drawn, None);
+        assert_eq!(rest.len(), 5);
+        for (k, (s, _)) in rest.iter().enumerate() {
+            let want = petal(c, (3 + k) as f64 * TAU / 8.0, 60.0).reference_point();
+            assert!(s.reference_point().distance(want) < 1.0, "petal {}", k + 3);
+        }
+    }
+
+    #[test]
+    fn leaves_on_an_arc_continue_along_it() {
+        // Leaves every 12° on a circle of radius 300 about (0, 400): it does not close
+        // in an area that holds only part of the circle.
+        let o = Point::new(0.0, 400.0);
+        let leaf = |k: i32| {
+            let phi = -0.3 + k as f64 * 12f64.to_radians();
+            petal(o + Vec2::new(phi.sin(), -phi.cos()) * 300.0, phi, 30.0)
+        };
+        let drawn: Vec<Stroke> = (0..3).map(leaf).collect();
+        let chain = find(&drawn).expect("an arc");
+        assert_eq!(chain.structure(), Structure::Ring, "12° closes after 30");
+        let more = chain.extend(&drawn, Rect::new(-400.0, 0.0, 400.0, 400.0), None, 100);
+        assert!(more.len() >= 4, "{}", more.len());
+        for (s, _) in &more {
+            let on = (s.reference_point().distance(o) - leaf(0).reference_point().distance(o)).abs();
+            assert!(on < 1.0, "off the arc by {on}");
+        }
+    }
+
+    #[test]
+    fn unrelated_strokes_and_rows_make_no_chain() {
+        let line = |p: [f64; 2], q: [f64; 2]| Stroke::new(vec![p, q], 2.0, None);
+        let dashes =
+            vec![line([10.0, 10.0], [30.0, 14.0]), line([80.0, 40.0], [84.0, 70.0]), line([20.0, 90.0], [45.0, 80.0])];
+        assert!(find(&dashes).is_none());
+        // A straight row: translations, the lattice's.
+        let row: Vec<Stroke> = (0..5).map(|k| petal(Point::new(40.0 * k as f64, 0.0), 0.5, 30.0)).collect();
+        assert!(find(&row).is_none());
+    }
+}
