@@ -414,8 +414,8 @@ mod tests {
 
     #[test]
     fn leaves_on_an_arc_continue_along_it() {
-        // Leaves every 12° on a circle of radius 300 about (0, 400): it does not close
-        // in an area that holds only part of the circle.
+        // Leaves every 12° on a circle of radius 300 about (0, 400), continued across
+        // an area that holds part of the circle.
         let o = Point::new(0.0, 400.0);
         let leaf = |k: i32| {
             let phi = -0.3 + k as f64 * 12f64.to_radians();
@@ -423,7 +423,8 @@ mod tests {
         };
         let drawn: Vec<Stroke> = (0..3).map(leaf).collect();
         let chain = find(&drawn).expect("an arc");
-        assert_eq!(chain.structure(), Structure::Ring, "12° closes after 30");
+        // 12° would close after 30, but round a far centre that is a curve's business.
+        assert_eq!(chain.structure(), Structure::Curve);
         let more = chain.extend(&drawn, Rect::new(-400.0, 0.0, 400.0, 400.0), None, 100);
         assert!(more.len() >= 4, "{}", more.len());
         for (s, _) in &more {

@@ -6,6 +6,7 @@ use super::classify::{classify, propose_tolerances, Tolerances};
 use super::grow::{find_periods, fit_lattice, grow, Element, GrowOptions, Grown};
 use super::mesh::Mesh;
 use super::motif::{self, Motifs};
+use super::period::Periods;
 use super::stroke::Stroke;
 use super::svg::to_svg;
 use crate::error::{invalid, Error, Result};
@@ -174,10 +175,7 @@ pub(crate) fn classify_drawing(
     };
     // Exact periods (a tile repeated), and the lattice a hand's copies are drawn on.
     let periods = |classes: &[u32]| find_periods(&elements(classes)).ok().flatten();
-    let lattice = |classes: &[u32]| {
-        let elems = elements(classes);
-        find_periods(&elems).ok().flatten().or_else(|| fit_lattice(&elems).ok().flatten()?.periods(&elems))
-    };
+    let lattice = |classes: &[u32]| lattice_of(&elements(classes));
     let grouping = motif::group(strokes, &classes, tolerances, path.is_some(), accepted, periods, lattice);
     let classes = grouping.classes.unwrap_or(classes);
     let count = classes.iter().max().map_or(0, |m| m + 1);
@@ -272,29 +270,53 @@ pub fn synthesize_strokes(
             motifs.dress(strokes, &classification.classes, &placed, &orbit, opts.variation.then_some(opts.seed), area);
         (out, classes, sources, stats, periods)
     };
-    let svg = to_svg(&out, &classes, opts.width, opts.height);
+    let structure = if periods.is_some() { structure } else { Structure::Irregular };
     Throttle::new(progress).tick(1.0)?;
     Ok(StrokeResult {
-        strokes: out,
-        classes,
-        sources,
-        classification,
-        svg,
         periods: periods.map(|(a, b)| [[a.x, a.y], [b.x, b.y]]),
-        structure: if periods.is_some() { structure } else { Structure::Irregular },
         growing_points: stats.growing_points,
         skipped_full: stats.skipped_full,
         passed_over: stats.passed_over,
+        ..StrokeResult::new(out, classes, sources, classification, opts, structure)
     })
 }
 
-/// Whether the motif elements repeat by translation (exact periods, or a hand's lattice):
-/// only a drawing that does not is searched for a chain.
+impl StrokeResult {
+    /// The output strokes with their SVG; no periods and no growth figures.
+    fn new(
+        strokes: Vec<Stroke>,
+        classes: Vec<u32>,
+        sources: Vec<u32>,
+        classification: Classification,
+        opts: &StrokeOptions,
+        structure: Structure,
+    ) -> StrokeResult {
+        let svg = to_svg(&strokes, &classes, opts.width, opts.height);
+        StrokeResult {
+            strokes,
+            classes,
+            sources,
+            classification,
+            svg,
+            periods: None,
+            structure,
+            growing_points: 0,
+            skipped_full: 0,
+            passed_over: 0,
+        }
+    }
+}
+
+/// The periods `elems` repeat on: exact ones (a tile repeated), or the lattice a hand's
+/// copies are drawn on.
+fn lattice_of(elems: &[Element]) -> Option<Periods> {
+    find_periods(elems).ok().flatten().or_else(|| fit_lattice(elems).ok().flatten()?.periods(elems))
+}
+
+/// Whether the motif elements repeat by translation: only a drawing that does not is
+/// searched for a chain (a rosette aside).
 fn translates(elements: &[Element]) -> bool {
-    elements.len() > chain::MAX_STROKES
-        || (elements.len() >= 2
-            && (find_periods(elements).ok().flatten().is_some()
-                || fit_lattice(elements).ok().flatten().and_then(|l| l.periods(elements)).is_some()))
+    elements.len() > chain::MAX_STROKES || (elements.len() >= 2 && lattice_of(elements).is_some())
 }
 
 /// The drawing repeated along its `chain`, centred in the output. A ring small beside
@@ -349,19 +371,6 @@ fn along_chain(
         sources.push(from as u32);
     }
     let classes: Vec<u32> = sources.iter().map(|&i| classification.classes[i as usize]).collect();
-    let svg = to_svg(&out, &classes, opts.width, opts.height);
-    let structure = chain.structure();
     Throttle::new(progress).tick(1.0)?;
-    Ok(StrokeResult {
-        strokes: out,
-        classes,
-        sources,
-        classification,
-        svg,
-        periods: None,
-        structure,
-        growing_points: 0,
-        skipped_full: 0,
-        passed_over: 0,
-    })
+    Ok(StrokeResult::new(out, classes, sources, classification, opts, chain.structure()))
 }

@@ -1,6 +1,7 @@
 // Petals drawn around a centre with the mouse (issue 27): after three, ghosts complete
-// the ring at the same turn; Tab accepts them; undo takes them back. Screenshots:
-// out/ring-ghosts.png, out/ring-accepted.png.
+// the ring at the same turn; Tab accepts them; undo takes them back; synthesized, three
+// petals become rosettes of eight. Screenshots: out/ring-ghosts.png,
+// out/ring-accepted.png, out/ring-synthesized.png.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync } from 'node:fs';
@@ -55,6 +56,44 @@ test('three petals drawn around a centre: ghosts complete the ring, Tab accepts,
     for (const [x, y] of centres) assert.ok(Math.abs(Math.hypot(x - 400, y - 250) - 55) < 8, `${x}, ${y}`);
     await page.click('#undo');
     assert.ok((await count()) < 8, 'undo takes the accepted petals back');
+  } finally {
+    await close();
+  }
+});
+
+test('three petals drawn around a centre synthesize into rosettes of eight', async () => {
+  mkdirSync('out', { recursive: true });
+  const { page, close } = await openPlayground({ height: 1000 });
+  try {
+    await page.waitForFunction(() => /[1-9]\d* strokes/.test(document.querySelector('#stroke-count').textContent));
+    await page.click('#clear');
+    const box = await page.locator('#draw').boundingBox();
+    const at = (x, y) => [box.x + (x * box.width) / 800, box.y + (y * box.height) / 500];
+    // Three petals of eight, by hand (a little wobble in each).
+    for (let k = 0; k < 3; k++) {
+      const theta = (k * 2 * Math.PI) / 8;
+      const pts = [];
+      for (let j = 0; j <= 28; j++) {
+        const t = (j / 28) * 2 * Math.PI;
+        const along = 55 * (1 - Math.cos(t)), across = 18 * Math.sin(t) + ((j + k) % 3 - 1) * 0.6;
+        pts.push([400 + along * Math.cos(theta) - across * Math.sin(theta), 250 + along * Math.sin(theta) + across * Math.cos(theta)]);
+      }
+      await page.mouse.move(...at(...pts[0]));
+      await page.mouse.down();
+      for (const p of pts.slice(1)) await page.mouse.move(...at(...p), { steps: 2 });
+      await page.mouse.up();
+    }
+    await page.click('#synthesize');
+    await page.waitForFunction(() => /^(Done\.|.*error.*)$/i.test(document.querySelector('#messages').textContent) || document.querySelector('#messages .error'), null, { timeout: 120000 });
+    assert.equal(await page.textContent('#messages'), 'Done.');
+    await page.waitForFunction(() => document.querySelector('#preview canvas, #preview img'));
+    await page.screenshot({ path: 'out/ring-synthesized.png' });
+    const info = await page.textContent('#result-info');
+    assert.match(info, /completed as a ring/, info);
+    // Several rosettes of eight (those at the edges cut).
+    const strokes = Number(info.split(' ')[0]);
+    assert.ok(strokes >= 4 * 8, info);
+    assert.equal(Number((await page.textContent('#stroke-count')).split(' ')[0]), 3, 'the drawing is kept as drawn');
   } finally {
     await close();
   }
