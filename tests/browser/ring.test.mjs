@@ -7,29 +7,32 @@ import assert from 'node:assert/strict';
 import { mkdirSync } from 'node:fs';
 import { openPlayground } from './harness.mjs';
 
+/** Draws a petal with the mouse: a loop 110 long from the centre (400, 250) of the
+ *  800 x 500 canvas along `theta`, its points wobbling by `wobble` across. */
+async function drawPetal(page, theta, wobble, phase = 0) {
+  const box = await page.locator('#draw').boundingBox();
+  const at = (x, y) => [box.x + (x * box.width) / 800, box.y + (y * box.height) / 500];
+  const pts = [];
+  for (let k = 0; k <= 28; k++) {
+    const t = (k / 28) * 2 * Math.PI;
+    const along = 55 * (1 - Math.cos(t)), across = 18 * Math.sin(t) + ((k + phase) % 3 - 1) * wobble;
+    pts.push([400 + along * Math.cos(theta) - across * Math.sin(theta), 250 + along * Math.sin(theta) + across * Math.cos(theta)]);
+  }
+  await page.mouse.move(...at(...pts[0]));
+  await page.mouse.down();
+  for (const p of pts.slice(1)) await page.mouse.move(...at(...p), { steps: 2 });
+  await page.mouse.up();
+}
+
 test('three petals drawn around a centre: ghosts complete the ring, Tab accepts, undo takes them back', async () => {
   mkdirSync('out', { recursive: true });
   const { page, close } = await openPlayground({ height: 1000 });
   try {
     await page.waitForFunction(() => /[1-9]\d* strokes/.test(document.querySelector('#stroke-count').textContent));
     await page.click('#clear');
-    const box = await page.locator('#draw').boundingBox();
-    const at = (x, y) => [box.x + (x * box.width) / 800, box.y + (y * box.height) / 500];
     const settled = () => page.waitForFunction(() => document.querySelector('#suggest-status').getAttribute('aria-busy') === 'false', null, { timeout: 15000 });
     const count = async () => Number((await page.textContent('#stroke-count')).split(' ')[0]);
-    // A petal: a loop 110 long from the centre (400, 250) along `theta`, by hand.
-    const petal = async (theta, wobble) => {
-      const pts = [];
-      for (let k = 0; k <= 28; k++) {
-        const t = (k / 28) * 2 * Math.PI;
-        const along = 55 * (1 - Math.cos(t)), across = 18 * Math.sin(t) + (k % 3 - 1) * wobble;
-        pts.push([400 + along * Math.cos(theta) - across * Math.sin(theta), 250 + along * Math.sin(theta) + across * Math.cos(theta)]);
-      }
-      await page.mouse.move(...at(...pts[0]));
-      await page.mouse.down();
-      for (const p of pts.slice(1)) await page.mouse.move(...at(...p), { steps: 2 });
-      await page.mouse.up();
-    };
+    const petal = (theta, wobble) => drawPetal(page, theta, wobble);
     const step = (2 * Math.PI) / 8;
     for (let k = 0; k < 3; k++) await petal(k * step, 0.6);
     await settled();
@@ -67,22 +70,8 @@ test('three petals drawn around a centre synthesize into rosettes of eight', asy
   try {
     await page.waitForFunction(() => /[1-9]\d* strokes/.test(document.querySelector('#stroke-count').textContent));
     await page.click('#clear');
-    const box = await page.locator('#draw').boundingBox();
-    const at = (x, y) => [box.x + (x * box.width) / 800, box.y + (y * box.height) / 500];
     // Three petals of eight, by hand (a little wobble in each).
-    for (let k = 0; k < 3; k++) {
-      const theta = (k * 2 * Math.PI) / 8;
-      const pts = [];
-      for (let j = 0; j <= 28; j++) {
-        const t = (j / 28) * 2 * Math.PI;
-        const along = 55 * (1 - Math.cos(t)), across = 18 * Math.sin(t) + ((j + k) % 3 - 1) * 0.6;
-        pts.push([400 + along * Math.cos(theta) - across * Math.sin(theta), 250 + along * Math.sin(theta) + across * Math.cos(theta)]);
-      }
-      await page.mouse.move(...at(...pts[0]));
-      await page.mouse.down();
-      for (const p of pts.slice(1)) await page.mouse.move(...at(...p), { steps: 2 });
-      await page.mouse.up();
-    }
+    for (let k = 0; k < 3; k++) await drawPetal(page, (k * 2 * Math.PI) / 8, 0.6, k);
     await page.click('#synthesize');
     await page.waitForFunction(() => /^(Done\.|.*error.*)$/i.test(document.querySelector('#messages').textContent) || document.querySelector('#messages .error'), null, { timeout: 120000 });
     assert.equal(await page.textContent('#messages'), 'Done.');
