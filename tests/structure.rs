@@ -206,3 +206,69 @@ fn the_result_names_the_structure() {
     assert_eq!(synth(&ex.strokes).structure, Structure::Lattice);
     assert_eq!(synth(&irregular_dashes(60, 300.0, 2)).structure, Structure::Irregular);
 }
+
+/// A line from `p` to `q`, its ends off by up to `jitter`, seeded.
+fn bar(p: Point, q: Point, jitter: f64, seed: u64) -> Stroke {
+    let mut rng = patternsynth::rng::Rng::new(seed);
+    let mut off = || (rng.next_f64() - 0.5) * 2.0 * jitter;
+    Stroke::new(
+        (0..=8)
+            .map(|k| {
+                let t = k as f64 / 8.0;
+                [p.x + (q.x - p.x) * t + off(), p.y + (q.y - p.y) * t + off()]
+            })
+            .collect(),
+        2.0,
+        None,
+    )
+}
+
+#[test]
+fn bars_through_one_centre_and_rays_round_a_disc_repeat_whole() {
+    // (From a new user's trial: an asterisk drawn by hand came back refused as
+    // millions of elements, a sun icon's rays as a curve drawn once.)
+    let c = Point::new(200.0, 200.0);
+    let ray = |a: f64, r0: f64, r1: f64| (c + Vec2::new(a.cos(), a.sin()) * r0, c + Vec2::new(a.cos(), a.sin()) * r1);
+    for seed in 1..=3 {
+        let asterisk: Vec<Stroke> = (0..3)
+            .map(|i| {
+                let (p, q) = ray(i as f64 * TAU / 6.0, -70.0, 70.0);
+                bar(p, q, 1.0, seed * 10 + i)
+            })
+            .collect();
+        let r = synth(&asterisk);
+        assert_eq!(r.structure, Structure::Ring, "asterisk, seed {seed}");
+        // Whole asterisks: the bars group by centre, three to a centre inside.
+        let centres: Vec<Point> = r.strokes.iter().map(Stroke::reference_point).collect();
+        let inside = Rect::new(0.0, 0.0, W, H).inset(-80.0);
+        let mut whole = 0;
+        for p in centres.iter().filter(|p| inside.contains(**p)) {
+            let here = centres.iter().filter(|q| q.distance(*p) < 5.0).count();
+            assert_eq!(here, 3, "asterisk, seed {seed}: {here} bars at {p:?}");
+            whole += 1;
+        }
+        assert!(whole >= 3 * 3, "asterisk, seed {seed}: {} whole", whole / 3);
+        // A sun: a disc and eight rays round it, all drawn.
+        let mut sun: Vec<Stroke> = (0..8)
+            .map(|i| {
+                let (p, q) = ray(i as f64 * TAU / 8.0, 40.0, 60.0);
+                bar(p, q, 0.5, seed * 10 + i)
+            })
+            .collect();
+        sun.push(Stroke::new(
+            (0..=24)
+                .map(|k| c + Vec2::new((k as f64 / 24.0 * TAU).cos(), (k as f64 / 24.0 * TAU).sin()) * 25.0)
+                .map(|p| [p.x, p.y])
+                .collect(),
+            2.0,
+            None,
+        ));
+        let r = synth(&sun);
+        assert_eq!(r.structure, Structure::Ring, "sun, seed {seed}");
+        assert!(
+            r.periods.is_some() && r.strokes.len() >= 4 * sun.len(),
+            "sun, seed {seed}: {} strokes",
+            r.strokes.len()
+        );
+    }
+}

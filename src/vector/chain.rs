@@ -145,9 +145,12 @@ pub fn find(strokes: &[Stroke]) -> Option<Chain> {
         for &j in near.iter().take(NEAREST) {
             let Some((t, _)) = rel[i * n + j] else { continue };
             let d = centre[i].distance(centre[j]);
-            if (t.a - Vec2::new(1.0, 0.0)).hypot() < MIN_TURN || d < 0.05 * size[i] {
+            if (t.a - Vec2::new(1.0, 0.0)).hypot() < MIN_TURN {
                 continue;
             }
+            // Copies on one centre (an asterisk's bars) step by a turn alone: reach is
+            // then read from their size.
+            let d = d.max(0.1 * size[i]);
             let carried =
                 (0..n).filter(|&k| groups[k] == groups[i]).filter(|&k| onto(&t, k, PLACE * d).is_some()).count();
             let better = match &best {
@@ -193,15 +196,9 @@ pub fn find(strokes: &[Stroke]) -> Option<Chain> {
     // pairs, each fitted on its own, so that where the hand put each copy does not
     // leak into how it turned it), its shift from where the copies are (the mean of
     // what each pair needs, given the turn).
-    let pairs: Vec<Similarity> = chain
-        .windows(2)
-        .map(|w| {
-            let (_, back) = rel[w[0] * n + w[1]].expect("consecutive copies are related");
-            let to: Vec<Point> =
-                if back { sampled[w[1]].iter().rev().copied().collect() } else { sampled[w[1]].clone() };
-            Similarity::fit(&sampled[w[0]], &to).0
-        })
-        .collect();
+    // (Each consecutive pair's own fit is its relation, read the way round it fits.)
+    let pairs: Vec<Similarity> =
+        chain.windows(2).map(|w| rel[w[0] * n + w[1]].expect("consecutive copies are related").0).collect();
     let shift_for = |a: Vec2| {
         let b = chain.windows(2).fold(Vec2::ZERO, |s, w| s + centre[w[1]].to_vec2() - mul(a, centre[w[0]].to_vec2()));
         Similarity { a, b: b / pairs.len() as f64 }
@@ -210,7 +207,8 @@ pub fn find(strokes: &[Stroke]) -> Option<Chain> {
     // A turn without scale is read from where the copies are as well: the mean angle
     // each pair of copies makes at the centre, averaged with the shapes' turn (each
     // alone errs about as much: a petal's angle as its place round the centre).
-    if let (true, Some(c)) = ((step.scale() - 1.0).abs() < 0.04, step.fixed_point()) {
+    let off = |c: Point| chain.iter().all(|&k| centre[k].distance(c) > 0.25 * size[k]);
+    if let (true, Some(c)) = ((step.scale() - 1.0).abs() < 0.04, step.fixed_point().filter(|&c| off(c))) {
         let angle = |p: Point| (p.y - c.y).atan2(p.x - c.x);
         let placed = chain
             .windows(2)
@@ -229,12 +227,13 @@ pub fn find(strokes: &[Stroke]) -> Option<Chain> {
         return None;
     }
     // Every consecutive pair within reach of the fitted step.
-    let len = chain.windows(2).map(|w| centre[w[0]].distance(centre[w[1]])).sum::<f64>() / (chain.len() - 1) as f64;
+    let len = (chain.windows(2).map(|w| centre[w[0]].distance(centre[w[1]])).sum::<f64>() / (chain.len() - 1) as f64)
+        .max(0.1 * size[chain[0]]);
     if chain.windows(2).any(|w| step.apply(centre[w[0]]).distance(centre[w[1]]) > FOLLOW * len) {
         return None;
     }
     // A ring: copies round a centre close by (petals: the centre within about a copy's
-    // size), no scale, and a whole number of steps round, however the hand's wobble has
+    // size) or drawn half round it, no scale, and a whole number of steps round, however the hand's wobble has
     // put the turn (three petals of twelve at 3% of the step read the turn 4% off): the
     // nearest whole number within a tenth of it, to which the turn is snapped. Copies
     // round a far centre (leaves along an arc) are a curve: snapping 25.7 steps round
@@ -244,7 +243,8 @@ pub fn find(strokes: &[Stroke]) -> Option<Chain> {
     let rosette = step.fixed_point().is_some_and(|c| {
         let radius = chain.iter().map(|&k| centre[k].distance(c)).sum::<f64>() / chain.len() as f64;
         let size = chain.iter().map(|&k| size[k]).sum::<f64>() / chain.len() as f64;
-        radius <= ROSETTE * size
+        // (A ring drawn half round or more, sun rays round a disc, closes however far.)
+        radius <= ROSETTE * size || (chain.len() - 1) as f64 * step.turn().abs() >= std::f64::consts::PI
     });
     let closes = (rosette
         && (step.scale() - 1.0).abs() < 0.04

@@ -250,17 +250,16 @@ pub fn synthesize_strokes(
         None => None,
     };
     // A drawing with no lattice may repeat along a similarity step: a ring, an arc, a
-    // spiral (`chain`).
-    // A rosette (copies turned round a centre close by) is taken before a lattice: a
-    // lattice read from a handful of petals is a chance one.
+    // spiral (`chain`). A rosette (copies turned round a centre close by) is taken
+    // before a lattice: a lattice read from a handful of petals is a chance one.
     let along = (joined.is_none() && periods.is_none() && motifs.copies.is_none())
         .then(|| chain::find(strokes))
         .flatten()
-        .filter(|c| c.closes.is_some() && 3 * c.members.len() >= 2 * strokes.len() || !translates(&elements));
+        .filter(|c| (c.closes.is_some() && 3 * c.members.len() >= 2 * strokes.len()) || !translates(&elements));
     if let Some(chain) = along {
         return along_chain(strokes, classification, chain, opts, max_elements, progress);
     }
-    let structure = if joined.is_some() { Structure::Irregular } else { Structure::Lattice };
+    let meshed = joined.is_some();
     let (out, classes, sources, stats, periods) = if let Some(j) = joined {
         let classes = j.sources.iter().map(|&s| classification.classes[s as usize]).collect();
         (j.strokes, classes, j.sources, j.grown.stats, j.grown.periods)
@@ -270,7 +269,7 @@ pub fn synthesize_strokes(
             motifs.dress(strokes, &classification.classes, &placed, &orbit, opts.variation.then_some(opts.seed), area);
         (out, classes, sources, stats, periods)
     };
-    let structure = if periods.is_some() { structure } else { Structure::Irregular };
+    let structure = if periods.is_some() && !meshed { Structure::Lattice } else { Structure::Irregular };
     Throttle::new(progress).tick(1.0)?;
     Ok(StrokeResult {
         periods: periods.map(|(a, b)| [[a.x, a.y], [b.x, b.y]]),
