@@ -232,31 +232,38 @@ pub fn find(strokes: &[Stroke]) -> Option<Chain> {
     if chain.windows(2).any(|w| step.apply(centre[w[0]]).distance(centre[w[1]]) > FOLLOW * len) {
         return None;
     }
-    // A ring: copies round a centre close by (petals: the centre within about a copy's
-    // size) or drawn half round it, no scale, and a whole number of steps round, however the hand's wobble has
-    // put the turn (three petals of twelve at 3% of the step read the turn 4% off): the
-    // nearest whole number within a tenth of it, to which the turn is snapped. Copies
-    // round a far centre (leaves along an arc) are a curve: snapping 25.7 steps round
-    // to 26 would put the 8th leaf on from the drawn ones 9% of a step off its arc.
-    let turns = TAU / step.turn().abs();
-    let whole = turns.round();
-    let rosette = step.fixed_point().is_some_and(|c| {
-        let radius = chain.iter().map(|&k| centre[k].distance(c)).sum::<f64>() / chain.len() as f64;
-        let size = chain.iter().map(|&k| size[k]).sum::<f64>() / chain.len() as f64;
-        // (A ring drawn half round or more, sun rays round a disc, closes however far.)
-        radius <= ROSETTE * size || (chain.len() - 1) as f64 * step.turn().abs() >= std::f64::consts::PI
-    });
-    let closes = (rosette
-        && (step.scale() - 1.0).abs() < 0.04
-        && (turns - whole).abs() <= CLOSE.max(0.1 * whole)
-        && (3.0..=MAX_RING as f64).contains(&whole))
-    .then_some(whole as usize);
+    // A ring (`ring_steps`)?
+    let radius =
+        step.fixed_point().map(|c| chain.iter().map(|&k| centre[k].distance(c)).sum::<f64>() / chain.len() as f64);
+    let size = chain.iter().map(|&k| size[k]).sum::<f64>() / chain.len() as f64;
+    let closes = radius.and_then(|r| ring_steps(&step, r, size, chain.len()));
     if let Some(k) = closes {
         // The turn snapped, and the shift read again for it.
         let turn = TAU / k as f64 * step.turn().signum();
         step = shift_for(Vec2::new(turn.cos(), turn.sin()));
     }
     Some(Chain { members: chain, step, closes })
+}
+
+/// The copies round a whole ring, when copies `size` large on the orbit of `step`,
+/// `radius` from its centre, `drawn` of them, close into one: a ring round a centre
+/// close by (petals: the centre within about a copy's size) or drawn half round it, no
+/// scale, and a whole number of steps round, however the hand's wobble has put the
+/// turn (three petals of twelve at 3% of the step read the turn 4% off): the nearest
+/// whole number within a tenth of it, to which the turn is then snapped. Copies round a
+/// far centre (leaves along an arc) are a curve: snapping 25.7 steps round to 26 would
+/// put the 8th leaf on from the drawn ones 9% of a step off its arc.
+pub fn ring_steps(step: &Similarity, radius: f64, size: f64, drawn: usize) -> Option<usize> {
+    let turns = TAU / step.turn().abs();
+    let whole = turns.round();
+    // (A ring drawn half round or more, sun rays round a disc, closes however far.)
+    let rosette =
+        radius <= ROSETTE * size || drawn.saturating_sub(1) as f64 * step.turn().abs() >= std::f64::consts::PI;
+    (rosette
+        && (step.scale() - 1.0).abs() < 0.04
+        && (turns - whole).abs() <= CLOSE.max(0.1 * whole)
+        && (3.0..=MAX_RING as f64).contains(&whole))
+    .then_some(whole as usize)
 }
 
 impl Chain {

@@ -95,15 +95,15 @@ pub fn sequences(wobble: f64, seed: u64) -> Vec<Sequence> {
             .collect();
         out.push(Sequence { name: "leaves on an arc".into(), strokes, step, canvas });
     }
-    // Hatching across a contour that turns: lines 70 long, 12 apart along an arc of
-    // radius 400, each across the arc.
+    // Hatching across a contour that turns: lines 70 long, 7.2 apart along an arc of
+    // radius 240, each across the arc.
     {
         let mut rng = Rng::new(seed * 131 + 11);
-        let (r, step) = (400.0, 12.0);
+        let (r, step) = (240.0, 7.2);
         let strokes: Vec<Stroke> = (0..16)
             .map(|k| {
                 let phi = -0.25 + k as f64 * step / r;
-                let at = Point::new(300.0, 480.0) + Vec2::new(phi.sin(), -phi.cos()) * r * 0.6;
+                let at = Point::new(300.0, 480.0) + Vec2::new(phi.sin(), -phi.cos()) * r;
                 let jitter = Vec2::new(rng.normal(), rng.normal()) * (wobble * step);
                 line(
                     at + jitter,
@@ -114,7 +114,7 @@ pub fn sequences(wobble: f64, seed: u64) -> Vec<Sequence> {
                 )
             })
             .collect();
-        out.push(Sequence { name: "turning hatching".into(), strokes, step: step * 0.6, canvas });
+        out.push(Sequence { name: "turning hatching".into(), strokes, step, canvas });
     }
     for q in &mut out {
         let c: Vec<Point> = q.strokes.iter().map(Stroke::reference_point).collect();

@@ -39,6 +39,7 @@ mod ahead;
 mod certainty;
 mod fit;
 mod lattice;
+mod orbit;
 mod sequence;
 
 use self::certainty::hand_scatter;
@@ -198,7 +199,7 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
         // (Petals drawn from one centre touch there: one motif, no spacing; they may
         // still carry on one another.)
         let count = if opts.fill { 64 } else { opts.count };
-        return Ok(sequence::propose(strokes, &accepted, count, region, skip)
+        return Ok(sequence::propose(strokes, &accepted, count, region, skip, opts.variation.then_some(opts.seed))
             .unwrap_or_else(|| nothing("The strokes have no spacing to repeat.")));
     };
     spread.spacing = spread.apart(&elems);
@@ -206,7 +207,7 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
         // No lattice: the latest strokes may still repeat one another by turns (a ring
         // of petals, hatching that bends: see `sequence`).
         let count = if opts.fill { 64 } else { opts.count };
-        return Ok(sequence::propose(strokes, &accepted, count, region, skip)
+        return Ok(sequence::propose(strokes, &accepted, count, region, skip, opts.variation.then_some(opts.seed))
             .unwrap_or_else(|| nothing("The drawing shows no repetition yet.")));
     };
     let prior = (HAND_TO_PLACEMENT * hand_scatter(strokes, &classification.classes, &accepted))
@@ -302,7 +303,9 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
         // A row that bends (hatching along a turning contour) fits a lattice too loosely
         // to propose from: the latest strokes may still carry on one another.
         let count = if opts.fill { 64 } else { opts.count };
-        if let Some(s) = sequence::propose(strokes, &accepted, count, region, skip).filter(|s| !s.strokes.is_empty()) {
+        if let Some(s) = sequence::propose(strokes, &accepted, count, region, skip, opts.variation.then_some(opts.seed))
+            .filter(|s| !s.strokes.is_empty())
+        {
             return Ok(s);
         }
     }
