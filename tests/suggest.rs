@@ -1,7 +1,7 @@
 //! Autocomplete (issue 10): drawing sessions replayed stroke by stroke through
 //! `suggest_strokes`; the figures are in `cargo run --release --example replay_suggest`.
 use patternsynth::vector::exemplar::{family_list, freehand_sketch, irregular_dashes};
-use patternsynth::vector::replay::replay;
+use patternsynth::vector::replay::{replay, replay_each};
 use patternsynth::vector::{suggest_strokes, Stroke, SuggestOptions};
 
 fn replayed(name: &str, jitter: f64) -> (patternsynth::vector::replay::Replay, usize) {
@@ -173,18 +173,39 @@ fn a_shaky_hand_drawing_motifs_of_several_strokes_gets_whole_right_copies() {
     }
 }
 
-/// Repetitions that are not lattices (issue 27, first part): rings of petals, a spiral
-/// and leaves along an arc drawn with a steady hand (wobble 1% of the step) are carried
-/// on by local similarity, each ghost a turn (and scale) of the last copy.
+/// Repetitions that are not lattices (issue 27): rings of 5 to 12 petals, a spiral,
+/// leaves along an arc, hatching along a turning and a straight contour, drawn stroke by
+/// stroke with a wobble of 1% and 3% of the step (seeds 1-3), accepting the right
+/// ghosts: each family's mean share accepted after three copies, and the wrong ghosts
+/// over all of them. Leaves along an S (the turn reverses: no one step carries them)
+/// are held to less.
 #[test]
-fn rings_spirals_and_arcs_are_carried_on_by_their_turn() {
-    for q in patternsynth::vector::sequences::sequences(0.01, 1) {
-        if q.name.contains("hatching") {
-            continue; // not yet: a turn of under 2° a step reads as a row
+fn rings_spirals_arcs_and_hatching_are_carried_on_by_their_step() {
+    for wobble in [0.01, 0.03] {
+        let (mut wrong, mut shown) = (0, 0);
+        let mut accepted: Vec<(String, f64)> = Vec::new();
+        for seed in 1..=3 {
+            for (k, q) in patternsynth::vector::sequences::sequences(wobble, seed).into_iter().enumerate() {
+                let classes = vec![0; q.strokes.len()];
+                let tol: Vec<f64> = q.steps.iter().map(|s| 0.3 * s).collect();
+                let past: Vec<_> = q.beyond.iter().map(|(b, step)| (b.clone(), 0.3 * step)).collect();
+                let r = replay_each(&q.strokes, &classes, q.canvas, &tol, &past);
+                wrong += r.wrong;
+                shown += r.shown;
+                if seed == 1 {
+                    accepted.push((q.name.clone(), 0.0));
+                }
+                accepted[k].1 += r.accepted_after(3) / 3.0;
+            }
         }
-        let classes = vec![0; q.strokes.len()];
-        let r = replay(&q.strokes, &classes, q.canvas, 0.3 * q.step);
-        assert!(r.accepted_after(3) >= 0.8, "{}: {:.2} accepted after three copies", q.name, r.accepted_after(3));
-        assert_eq!(r.wrong, 0, "{}: {} wrong of {}", q.name, r.wrong, r.shown);
+        for (name, share) in &accepted {
+            let least = match (name.contains("S-curve"), wobble < 0.02) {
+                (true, _) => 0.3,
+                (false, true) => 0.75,
+                (false, false) => 0.6,
+            };
+            assert!(*share >= least, "{name} at {wobble}: {share:.2} accepted after three copies");
+        }
+        assert!(wrong as f64 <= 0.025 * shown as f64, "at {wobble}: {wrong} wrong of {shown} shown");
     }
 }

@@ -17,8 +17,10 @@ pub struct Replay {
     pub accepted: usize,
     /// Proposals shown over the session (a proposal shown again counts again).
     pub shown: usize,
-    /// Shown proposals that are not among the strokes still to draw.
+    /// Shown proposals that are not among the strokes still to draw (nor beyond them).
     pub wrong: usize,
+    /// Shown proposals where the hand would go on past the drawing's end.
+    pub beyond: usize,
     /// Of the wrong ones, those on a stroke of their class already drawn (or accepted):
     /// a copy proposed again beside itself.
     pub stacked: usize,
@@ -47,6 +49,14 @@ impl Replay {
 /// `region`; a proposal matches a stroke to draw of its class whose reference point is
 /// within `tol`.
 pub fn replay(truth: &[Stroke], classes: &[u32], region: Rect, tol: f64) -> Replay {
+    replay_each(truth, classes, region, &vec![tol; truth.len()], &[])
+}
+
+/// `replay` with a tolerance for each stroke (a spiral's copies, and their spacing,
+/// grow along it), and the strokes `beyond` the drawing's end, each with its tolerance:
+/// the copies the hand would draw next were it to go on (a proposal there is neither
+/// accepted nor wrong).
+pub fn replay_each(truth: &[Stroke], classes: &[u32], region: Rect, tol: &[f64], beyond: &[(Stroke, f64)]) -> Replay {
     let mut opts =
         SuggestOptions { region: Some([region.x0, region.y0, region.width(), region.height()]), ..Default::default() };
     let mut done = vec![false; truth.len()];
@@ -76,16 +86,18 @@ pub fn replay(truth: &[Stroke], classes: &[u32], region: Rect, tol: f64) -> Repl
             let hit = (0..truth.len())
                 .filter(|&g| !done[g] && classes[g] == class && !matched.iter().any(|&(h, _)| h == g))
                 .map(|g| (g, truth[g].reference_point().distance(p)))
-                .filter(|&(_, d)| d < tol)
+                .filter(|&(g, d)| d < tol[g])
                 .min_by(|x, y| x.1.total_cmp(&y.1));
+            let past = beyond.iter().any(|(b, t)| b.reference_point().distance(p) < *t);
             match hit {
                 Some((g, _)) => matched.push((g, k)),
+                None if past => r.beyond += 1,
                 None => {
                     r.wrong += 1;
-                    r.stacked += usize::from(
-                        (0..truth.len())
-                            .any(|g| done[g] && classes[g] == class && truth[g].reference_point().distance(p) < tol),
-                    );
+                    r.stacked +=
+                        usize::from((0..truth.len()).any(|g| {
+                            done[g] && classes[g] == class && truth[g].reference_point().distance(p) < tol[g]
+                        }));
                     if debug {
                         let near = (0..truth.len())
                             .map(|g| (truth[g].reference_point().distance(p), done[g], classes[g]))

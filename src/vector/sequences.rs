@@ -1,6 +1,7 @@
 //! Hand-drawn repetitions that are not lattices (test support, issue 27): rings of
-//! petals, spirals, leaves along an arc and hatching along a turning contour, each
-//! copy a similarity transform of the one before, drawn copy by copy with a wobble
+//! petals, spirals, leaves along an arc and along an S, hatching along a turning and
+//! a straight contour, each copy a similarity transform of the one before (along the S,
+//! of the one before only locally), drawn copy by copy with a wobble
 //! (each copy's place off by `wobble` of the step, its points by a fifth of that).
 
 use super::stroke::Stroke;
@@ -16,8 +17,17 @@ pub struct Sequence {
     pub name: String,
     pub strokes: Vec<Stroke>,
     pub step: f64,
+    /// The step at each copy (a spiral's grows along it; the others' is `step`).
+    pub steps: Vec<f64>,
+    /// The copies the hand would draw next, past the drawing's end (an open sequence's
+    /// next `BEYOND`, drawn alike; none past a closed ring): a proposal there is right,
+    /// though not among the strokes to draw. Each with its step.
+    pub beyond: Vec<(Stroke, f64)>,
     pub canvas: kurbo::Rect,
 }
+
+/// Copies generated past the end of an open sequence (see `Sequence::beyond`).
+const BEYOND: usize = 3;
 
 /// A loop `len` long and `len / 3` wide, from `at` along `theta` (a petal, a leaf).
 fn leaf(at: Point, theta: f64, len: f64, rng: &mut Rng, noise: f64) -> Stroke {
@@ -52,7 +62,7 @@ pub fn sequences(wobble: f64, seed: u64) -> Vec<Sequence> {
     let canvas = kurbo::Rect::new(0.0, 0.0, 600.0, 600.0);
     // Rings of n petals around a centre: the step is the distance between neighbours'
     // centres.
-    for n in [5usize, 8, 12] {
+    for n in [5usize, 6, 8, 10, 12] {
         let mut rng = Rng::new(seed * 131 + n as u64);
         let len = 90.0;
         let step = 2.0 * (0.5 * len) * (std::f64::consts::PI / n as f64).sin();
@@ -63,12 +73,19 @@ pub fn sequences(wobble: f64, seed: u64) -> Vec<Sequence> {
                 leaf(at, theta, len, &mut rng, 0.2 * wobble * step)
             })
             .collect();
-        out.push(Sequence { name: format!("ring of {n}"), strokes, step, canvas });
+        out.push(Sequence {
+            name: format!("ring of {n}"),
+            strokes,
+            step,
+            steps: Vec::new(),
+            beyond: Vec::new(),
+            canvas,
+        });
     }
     // A spiral: petals turning by 30° and growing by 6% a step, out from the centre.
     {
         let mut rng = Rng::new(seed * 131 + 99);
-        let strokes: Vec<Stroke> = (0..10)
+        let strokes: Vec<Stroke> = (0..10 + BEYOND as i32)
             .map(|k| {
                 let r = 120.0 * 1.06f64.powi(k);
                 let theta = k as f64 * TAU / 12.0;
@@ -77,15 +94,23 @@ pub fn sequences(wobble: f64, seed: u64) -> Vec<Sequence> {
                 leaf(at + jitter, theta + 1.2, 0.35 * r, &mut rng, 0.2 * wobble * 0.5 * r * (TAU / 12.0))
             })
             .collect();
-        // (The step shrinks: the tolerance is read at the middle of the spiral.)
-        out.push(Sequence { name: "spiral".into(), strokes, step: 120.0 * 1.06f64.powi(5) * TAU / 12.0, canvas });
+        // (The step grows: `step` is the one at the middle of the spiral.)
+        let steps = (0..10 + BEYOND as i32).map(|k| 120.0 * 1.06f64.powi(k) * TAU / 12.0).collect();
+        out.push(Sequence {
+            name: "spiral".into(),
+            strokes,
+            step: 120.0 * 1.06f64.powi(5) * TAU / 12.0,
+            steps,
+            beyond: Vec::new(),
+            canvas,
+        });
     }
     // Leaves along an arc of radius 260, one every 14°, each turned with the arc.
     {
         let mut rng = Rng::new(seed * 131 + 7);
         let (r, d) = (260.0, 14f64.to_radians());
         let step = r * d;
-        let strokes: Vec<Stroke> = (0..10)
+        let strokes: Vec<Stroke> = (0..10 + BEYOND)
             .map(|k| {
                 let phi = -1.2 + k as f64 * d;
                 let at = Point::new(300.0, 560.0) + Vec2::new(phi.sin(), -phi.cos()) * r;
@@ -93,14 +118,21 @@ pub fn sequences(wobble: f64, seed: u64) -> Vec<Sequence> {
                 leaf(at + jitter, phi - 0.6, 45.0, &mut rng, 0.2 * wobble * step)
             })
             .collect();
-        out.push(Sequence { name: "leaves on an arc".into(), strokes, step, canvas });
+        out.push(Sequence {
+            name: "leaves on an arc".into(),
+            strokes,
+            step,
+            steps: Vec::new(),
+            beyond: Vec::new(),
+            canvas,
+        });
     }
     // Hatching across a contour that turns: lines 70 long, 7.2 apart along an arc of
     // radius 240, each across the arc.
     {
         let mut rng = Rng::new(seed * 131 + 11);
         let (r, step) = (240.0, 7.2);
-        let strokes: Vec<Stroke> = (0..16)
+        let strokes: Vec<Stroke> = (0..16 + BEYOND)
             .map(|k| {
                 let phi = -0.25 + k as f64 * step / r;
                 let at = Point::new(300.0, 480.0) + Vec2::new(phi.sin(), -phi.cos()) * r;
@@ -114,9 +146,76 @@ pub fn sequences(wobble: f64, seed: u64) -> Vec<Sequence> {
                 )
             })
             .collect();
-        out.push(Sequence { name: "turning hatching".into(), strokes, step, canvas });
+        out.push(Sequence {
+            name: "turning hatching".into(),
+            strokes,
+            step,
+            steps: Vec::new(),
+            beyond: Vec::new(),
+            canvas,
+        });
+    }
+    // Leaves along an S: a stem that bends one way and then the other (no one similarity
+    // carries every leaf onto the next), one leaf every 40 along it, each turned with it.
+    {
+        let mut rng = Rng::new(seed * 131 + 13);
+        let step = 40.0;
+        let path = |x: f64| Point::new(x, 300.0 + 70.0 * ((x - 300.0) / 110.0).sin());
+        let (mut sites, mut along, mut x) = (Vec::new(), 0.0, 70.0);
+        while sites.len() < 12 + BEYOND {
+            let (p, q) = (path(x), path(x + 0.5));
+            along += p.distance(q);
+            x += 0.5;
+            if along >= step || sites.is_empty() {
+                along = 0.0;
+                sites.push((p, (q.y - p.y).atan2(q.x - p.x)));
+            }
+        }
+        let strokes = sites
+            .iter()
+            .map(|&(p, phi)| {
+                let jitter = Vec2::new(rng.normal(), rng.normal()) * (wobble * step);
+                leaf(p + jitter, phi - 0.6, 36.0, &mut rng, 0.2 * wobble * step)
+            })
+            .collect();
+        out.push(Sequence {
+            name: "leaves on an S-curve".into(),
+            strokes,
+            step,
+            steps: Vec::new(),
+            beyond: Vec::new(),
+            canvas,
+        });
+    }
+    // Hatching along a straight contour: a row, the lattice's (lines 70 long, 9 apart, at
+    // 60 degrees).
+    {
+        let mut rng = Rng::new(seed * 131 + 17);
+        let step = 9.0;
+        let strokes = (0..14 + BEYOND)
+            .map(|k| {
+                let at = Point::new(200.0 + k as f64 * step, 300.0)
+                    + Vec2::new(rng.normal(), rng.normal()) * (wobble * step);
+                line(at, 60f64.to_radians() + rng.normal() * wobble * 0.1, 70.0, &mut rng, 0.2 * wobble * step)
+            })
+            .collect();
+        out.push(Sequence {
+            name: "straight hatching".into(),
+            strokes,
+            step,
+            steps: Vec::new(),
+            beyond: Vec::new(),
+            canvas,
+        });
     }
     for q in &mut out {
+        if q.steps.is_empty() {
+            q.steps = vec![q.step; q.strokes.len()];
+        }
+        if !q.name.starts_with("ring") {
+            let at = q.strokes.len() - BEYOND;
+            q.beyond = q.strokes.split_off(at).into_iter().zip(q.steps.split_off(at)).collect();
+        }
         let c: Vec<Point> = q.strokes.iter().map(Stroke::reference_point).collect();
         q.canvas = c
             .iter()

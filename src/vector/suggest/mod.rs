@@ -165,6 +165,14 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
         }
     }
     let (earlier, strokes) = strokes.split_at(skip);
+    // What a sequence (repetition by turns, not a lattice) is asked for.
+    let ask = |rows: bool| sequence::Ask {
+        count: if opts.fill { 64 } else { opts.count },
+        region,
+        offset: skip,
+        seed: opts.variation.then_some(opts.seed),
+        rows,
+    };
     let accepted: Vec<bool> = weight.iter().map(|&w| w < 1.0).collect();
     let classification =
         classify_drawing(strokes, opts.path_tolerance, opts.width_tolerance, opts.color_tolerance, &accepted)?;
@@ -198,16 +206,14 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
     let Ok(mut spread) = Spread::new(&elems) else {
         // (Petals drawn from one centre touch there: one motif, no spacing; they may
         // still carry on one another.)
-        let count = if opts.fill { 64 } else { opts.count };
-        return Ok(sequence::propose(strokes, &accepted, count, region, skip, opts.variation.then_some(opts.seed))
+        return Ok(sequence::propose(strokes, &accepted, &ask(false))
             .unwrap_or_else(|| nothing("The strokes have no spacing to repeat.")));
     };
     spread.spacing = spread.apart(&elems);
     let Some(mut fit) = Fit::find(&elems, &weight, &parts, &spread) else {
         // No lattice: the latest strokes may still repeat one another by turns (a ring
         // of petals, hatching that bends: see `sequence`).
-        let count = if opts.fill { 64 } else { opts.count };
-        return Ok(sequence::propose(strokes, &accepted, count, region, skip, opts.variation.then_some(opts.seed))
+        return Ok(sequence::propose(strokes, &accepted, &ask(false))
             .unwrap_or_else(|| nothing("The drawing shows no repetition yet.")));
     };
     let prior = (HAND_TO_PLACEMENT * hand_scatter(strokes, &classification.classes, &accepted))
@@ -302,10 +308,7 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
     if out.strokes.is_empty() && uncertain > 0 {
         // A row that bends (hatching along a turning contour) fits a lattice too loosely
         // to propose from: the latest strokes may still carry on one another.
-        let count = if opts.fill { 64 } else { opts.count };
-        if let Some(s) = sequence::propose(strokes, &accepted, count, region, skip, opts.variation.then_some(opts.seed))
-            .filter(|s| !s.strokes.is_empty())
-        {
+        if let Some(s) = sequence::propose(strokes, &accepted, &ask(true)).filter(|s| !s.strokes.is_empty()) {
             return Ok(s);
         }
     }

@@ -40,6 +40,8 @@ pub(super) struct Copy {
 #[derive(Clone, Debug)]
 pub(super) struct Orbit {
     pub a: Vec2,
+    /// How much each step turns on from the one before (`Shapes::bend`).
+    pub bend: f64,
     z0: Vec2,
     v: Vec2,
     /// Mean square miss of a hand-drawn copy off its site (`E |e|^2`, both coordinates).
@@ -69,14 +71,28 @@ fn conj(z: Vec2) -> Vec2 {
 }
 
 /// `a^t` for an integer `t` (negative: of the inverse), by polar form.
-pub(super) fn pow(a: Vec2, t: i64) -> Vec2 {
+fn pow(a: Vec2, t: i64) -> Vec2 {
     let (r, th) = (a.hypot(), a.y.atan2(a.x));
     let (m, ang) = (r.powi(t as i32), th * t as f64);
     Vec2::new(m * ang.cos(), m * ang.sin())
 }
 
-/// The geometric sum `g_t(a) = (a^t - 1) / (a - 1)` (`t` for `a = 1`).
-fn geometric(a: Vec2, t: i64) -> Vec2 {
+/// The turn (and scale) from copy `from` to copy `to`: the product of the steps' `a`,
+/// each turned on by `bend` from the one before (step `j` turns by `a e^(i bend j)`).
+pub(super) fn turn_between(a: Vec2, bend: f64, from: i64, to: i64) -> Vec2 {
+    let quad = |t: i64| bend * (t * (t - 1)) as f64 / 2.0;
+    let extra = quad(to) - quad(from);
+    mul(pow(a, to - from), Vec2::new(extra.cos(), extra.sin()))
+}
+
+/// The sum of the steps' turns up to copy `t`: `g_t = (a^t - 1) / (a - 1)` for a
+/// constant step (`t` for `a = 1`); with a `bend`, the sum of `turn_between(0, j)` over
+/// the steps `j` from 0 to `t` (less those from `t` to 0 for a negative `t`).
+fn geometric(a: Vec2, bend: f64, t: i64) -> Vec2 {
+    if bend != 0.0 {
+        let sum = |range: std::ops::Range<i64>| range.fold(Vec2::ZERO, |s, j| s + turn_between(a, bend, 0, j));
+        return if t >= 0 { sum(0..t) } else { -sum(t..0) };
+    }
     let d = a - Vec2::new(1.0, 0.0);
     if d.hypot2() < 1e-18 {
         return Vec2::new(t as f64, 0.0);
@@ -87,11 +103,11 @@ fn geometric(a: Vec2, t: i64) -> Vec2 {
 
 /// Given `a`: `z_0`, `v`, the normal equations' sums, and the hand-drawn copies' sum of
 /// square misses and the weighted one (`None` when the copies do not fix the orbit).
-fn solve(copies: &[Copy], a: Vec2) -> Option<(Vec2, Vec2, Sums, f64, f64)> {
+fn solve(copies: &[Copy], a: Vec2, bend: f64) -> Option<(Vec2, Vec2, Sums, f64, f64)> {
     let mut s = Sums::default();
     let (mut r0, mut r1) = (Vec2::ZERO, Vec2::ZERO);
     for c in copies {
-        let p = geometric(a, c.t);
+        let p = geometric(a, bend, c.t);
         let z = c.z.to_vec2();
         s.s0 += c.weight;
         s.s1 += p * c.weight;
@@ -107,7 +123,7 @@ fn solve(copies: &[Copy], a: Vec2) -> Option<(Vec2, Vec2, Sums, f64, f64)> {
     let v = (r1 * s.s0 - mul(conj(s.s1), r0)) / s.det;
     let (mut hand, mut weighted) = (0.0, 0.0);
     for c in copies {
-        let e = (c.z.to_vec2() - z0 - mul(v, geometric(a, c.t))).hypot2();
+        let e = (c.z.to_vec2() - z0 - mul(v, geometric(a, bend, c.t))).hypot2();
         weighted += c.weight * e;
         if c.hand {
             hand += e;
@@ -159,13 +175,16 @@ pub(super) struct Shapes {
     pub mean: Vec2,
     pub var: f64,
     pub pairs: f64,
+    /// How much each step turns on from the one before (radians; 0 but for a stem that
+    /// bends on): `mean` is then the first step's.
+    pub bend: f64,
 }
 
 /// How badly step `a` explains the copies, given the hand's mean square `scatter`:
 /// the placement residual over the scatter, plus the shapes' mean's distance over its
 /// variance (minus the log-likelihood of both, up to a constant).
 pub(super) fn cost(copies: &[Copy], shapes: &Shapes, a: Vec2, scatter: f64) -> f64 {
-    let ssr = solve(copies, a).map_or(f64::INFINITY, |s| s.4);
+    let ssr = solve(copies, a, shapes.bend).map_or(f64::INFINITY, |s| s.4);
     ssr / scatter + shapes.pairs * (a - shapes.mean).hypot2() / shapes.var
 }
 
@@ -183,7 +202,8 @@ impl Orbit {
         let scatter_at = |ssr: f64| (ssr + PRIOR_COPIES * prior) / (free + PRIOR_COPIES);
         let unit = (shapes.mean.hypot() - 1.0).abs() < 0.04;
         let turn = shapes.mean.y.atan2(shapes.mean.x);
-        let mut scatter = scatter_at(solve(copies, shapes.mean)?.3);
+        let bend = shapes.bend;
+        let mut scatter = scatter_at(solve(copies, shapes.mean, bend)?.3);
         let objective = |a: Vec2, scatter: f64| cost(copies, &shapes, a, scatter);
         let polar = |th: f64| Vec2::new(th.cos(), th.sin());
         let spread = 4.0 * shapes.var.sqrt();
@@ -194,7 +214,7 @@ impl Orbit {
             } else {
                 argmin_2d(&|x| objective(x, scatter), shapes.mean, spread.min(0.3))
             };
-            scatter = scatter_at(solve(copies, a)?.3);
+            scatter = scatter_at(solve(copies, a, bend)?.3);
         }
         // The error of `a`: the objective's curvature (along the turn only, for a pure
         // turn).
@@ -220,14 +240,22 @@ impl Orbit {
                 shapes.var / shapes.pairs
             }
         };
-        Orbit::with(copies, a, scatter_at, var_a, unit)
+        Orbit::with(copies, a, bend, scatter_at, var_a, unit)
     }
 
-    fn with(copies: &[Copy], a: Vec2, scatter_at: impl Fn(f64) -> f64, var_a: f64, unit: bool) -> Option<Orbit> {
-        let (z0, v, sums, hand_ssr, _) = solve(copies, a)?;
+    fn with(
+        copies: &[Copy],
+        a: Vec2,
+        bend: f64,
+        scatter_at: impl Fn(f64) -> f64,
+        var_a: f64,
+        unit: bool,
+    ) -> Option<Orbit> {
+        let (z0, v, sums, hand_ssr, _) = solve(copies, a, bend)?;
         let hand = copies.iter().filter(|c| c.hand).count() as f64;
         Some(Orbit {
             a,
+            bend,
             z0,
             v,
             scatter: scatter_at(hand_ssr),
@@ -245,14 +273,19 @@ impl Orbit {
         let hand = copies.iter().filter(|c| c.hand).count() as f64;
         // (With `a` given, `z_0` and `v` take two copies' worth.)
         let free = (hand - 2.0).max(0.0);
-        let mut o = Orbit::with(copies, a, |ssr| (ssr + PRIOR_COPIES * prior) / (free + PRIOR_COPIES), 0.0, true)?;
+        let mut o = Orbit::with(copies, a, 0.0, |ssr| (ssr + PRIOR_COPIES * prior) / (free + PRIOR_COPIES), 0.0, true)?;
         o.copies = free + PRIOR_COPIES;
         Some(o)
     }
 
+    /// The turn and scale carrying copy `from` onto copy `to`.
+    pub fn turn(&self, from: i64, to: i64) -> Vec2 {
+        turn_between(self.a, self.bend, from, to)
+    }
+
     /// The site of copy `t`.
     pub fn at(&self, t: i64) -> Point {
-        (self.z0 + mul(self.v, geometric(self.a, t))).to_point()
+        (self.z0 + mul(self.v, geometric(self.a, self.bend, t))).to_point()
     }
 
     /// The centre the orbit turns about (`None` for a row).
@@ -267,10 +300,11 @@ impl Orbit {
     /// copies they make up for most of it).
     pub fn miss(&self, t: i64) -> f64 {
         let Sums { s0, s1, s2, det } = self.sums;
-        let p = geometric(self.a, t);
+        let p = geometric(self.a, self.bend, t);
         // x^T M^-1 conj(x) for x = [1, p].
         let leverage = ((s2 - 2.0 * (s1.x * p.x + s1.y * p.y) + s0 * p.hypot2()) / det).max(0.0);
-        let site = |a: Vec2| solve(&self.members, a).map(|(z0, v, ..)| z0 + mul(v, geometric(a, t)));
+        let site =
+            |a: Vec2| solve(&self.members, a, self.bend).map(|(z0, v, ..)| z0 + mul(v, geometric(a, self.bend, t)));
         let h = 1e-5;
         let moved = |d: Vec2| match (site(self.a + d * h), site(self.a - d * h)) {
             (Some(p), Some(q)) => ((p - q) / (2.0 * h)).hypot2(),
@@ -305,7 +339,7 @@ mod tests {
         let copies = ring(8, 4, c, 40.0);
         let th = std::f64::consts::TAU / 8.0;
         let a = Vec2::new(th.cos(), th.sin());
-        let shapes = Shapes { mean: a, var: 1e-4, pairs: 3.0 };
+        let shapes = Shapes { mean: a, var: 1e-4, pairs: 3.0, bend: 0.0 };
         let o = Orbit::fit(&copies, shapes, 0.01).unwrap();
         assert!(o.centre().unwrap().distance(c) < 1e-3, "{:?}", o.centre());
         let want = ring(8, 8, c, 40.0);
@@ -321,7 +355,7 @@ mod tests {
         let copies: Vec<Copy> = (0..4)
             .map(|k| Copy { t: k, z: Point::new(10.0 + 20.0 * k as f64, 5.0), weight: 1.0, hand: true })
             .collect();
-        let shapes = Shapes { mean: Vec2::new(1.0, 0.0), var: 1e-4, pairs: 3.0 };
+        let shapes = Shapes { mean: Vec2::new(1.0, 0.0), var: 1e-4, pairs: 3.0, bend: 0.0 };
         let o = Orbit::fit(&copies, shapes, 0.01).unwrap();
         assert!(o.at(6).distance(Point::new(130.0, 5.0)) < 1e-3, "{:?}", o.at(6));
         assert!(o.centre().is_none() || o.centre().unwrap().to_vec2().hypot() > 1e4);
@@ -333,7 +367,7 @@ mod tests {
         // the places put it back.
         let copies = ring(12, 6, Point::new(0.0, 0.0), 100.0);
         let th = 1.1 * std::f64::consts::TAU / 12.0;
-        let shapes = Shapes { mean: Vec2::new(th.cos(), th.sin()), var: 0.1f64.powi(2), pairs: 5.0 };
+        let shapes = Shapes { mean: Vec2::new(th.cos(), th.sin()), var: 0.1f64.powi(2), pairs: 5.0, bend: 0.0 };
         let o = Orbit::fit(&copies, shapes, 0.25).unwrap();
         let turn = o.a.y.atan2(o.a.x);
         assert!((turn - std::f64::consts::TAU / 12.0).abs() < 0.005, "{turn}");

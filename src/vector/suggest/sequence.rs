@@ -1,23 +1,29 @@
-//! Repetition by local similarity, where the drawing holds no lattice (after Xing et
-//! al., "Autocomplete Painting Repetitions", 2014, which predicts from the last
-//! strokes rather than a global structure): the next copy relates to the latest as the
-//! latest relates to the one before. Petals around a centre (each a turn of the last),
-//! leaves along an arc, hatching that turns: each step is a similarity transform
-//! `z -> a z + b` (complex `a`: the turn and the scale; `b`: the shift).
+//! Repetition by similarity, where the drawing holds no lattice (after Xing et al.,
+//! "Autocomplete Painting Repetitions", 2014, which predicts from the last strokes
+//! rather than a global structure): petals around a centre (each a turn of the last),
+//! leaves along an arc, hatching that turns, a spiral. Each step is a similarity
+//! transform `z -> a z + b` (complex `a`: the turn and the scale; `b`: the shift).
 //!
-//! The latest stroke and the two before it of the same shape up to a similarity (the
-//! most recent ones among the last `LOOK_BACK`) make a sequence when the step from the
-//! first to the second also carries the second onto the third: the same turn and scale
-//! (within `TURN`), and the third where that step puts it (within `PLACE` of the step).
-//! The next copies are the latest carried on by the mean step, as far as their expected
-//! miss (the step's own error, growing with each step) stays well within the matching
-//! tolerance, and never onto a drawn stroke (a ring stops where it closes).
+//! Found as the seed paper finds it, locally: the latest stroke and the two before it
+//! of the same shape up to a similarity (among the last `LOOK_BACK`) make a sequence
+//! when the step from the first to the second also carries the second onto the third:
+//! the same turn and scale (within `TURN`), and the third where that step puts it
+//! (within `PLACE` of the step).
+//!
+//! Predicted globally, from every copy of the run that ends with the latest (the
+//! copies back from it each a step before the next, at most `MAX_RUN` drawn by hand):
+//! they are fitted as the orbit of one step (`orbit`), whose turn is snapped to a whole
+//! fraction when the run is a ring and the likelihood says which. The next copies are
+//! the sites further along, while each is likely within the matching tolerance of the
+//! hand's copy (the orbit's own expected miss, inflated where the run's own copies
+//! were missed by more when predicted from those before them: a stem that bends the
+//! other way, an S), and never onto a drawn stroke (a ring stops where it closes).
 //!
 //! Departs from the lattice model and from the seed paper: shapes are compared up to
 //! rotation and scale here (a petal turned is the same petal), and only motifs of one
 //! stroke are carried on.
 
-use super::orbit::{cost, pow, Copy, Orbit, Shapes};
+use super::orbit::{cost, Copy, Orbit, Shapes};
 use super::{Suggestions, HAND_TO_PLACEMENT, TOLERANCE};
 use crate::rng::Rng;
 use crate::vector::chain::ring_steps;
@@ -26,8 +32,9 @@ use crate::vector::similarity::{self, centroid, mul, samples, Similarity};
 use crate::vector::stroke::Stroke;
 use kurbo::{Point, Rect, Vec2};
 use std::f64::consts::TAU;
+
 /// Strokes looked back over for the two copies before the latest.
-const LOOK_BACK: usize = 12;
+const LOOK_BACK: usize = 16;
 /// A copy is the same shape when the best similarity leaves an rms residual of at most
 /// this share of its size.
 const SHAPE: f64 = 0.12;
@@ -59,6 +66,13 @@ const PRIOR_PAIRS: f64 = 2.0;
 const SNAP_WORSE: f64 = 2.5;
 /// A ring's count is taken when it is this many times likelier than the next best.
 const SNAP_SURE: f64 = 20.0;
+/// A run that does not pass the local test holds at least four hand-drawn copies, each
+/// within this share of the step of its site on the run's orbit.
+const RUN_PLACE: f64 = 0.15;
+/// A run's own copies, predicted from those before them, may miss by up to this many
+/// expected misses before the model is taken to be off (a Rayleigh miss passes it
+/// 98% of the time).
+const BACKTEST: f64 = 2.0;
 
 /// The similarity carrying `from` onto `to`, with its residual as a share of `size`,
 /// when they are the same shape (`similarity::relate` with this module's bounds).
@@ -66,96 +80,111 @@ fn relate(from: &[Point], to: &[Point], size: f64) -> Option<(Similarity, f64)> 
     similarity::relate(from, to, size, SHAPE, MAX_SCALE).map(|(t, r, _)| (t, r))
 }
 
-/// Proposals continuing the sequence that ends with the latest of `strokes` (none, with
-/// the reason, when it is complete or too uncertain to go on), or `None` when the
-/// latest strokes make no sequence. The steps are read from hand-drawn copies only
-/// (`accepted` marks the proposals taken, which repeat the step they were proposed
-/// with and say nothing of its error); copies accepted after the latest hand-drawn one
-/// count as steps already taken. `offset` is added to the source indices.
-pub(super) fn propose(
-    strokes: &[Stroke],
-    accepted: &[bool],
-    count: usize,
-    region: Option<Rect>,
-    offset: usize,
-    seed: Option<u64>,
-) -> Option<Suggestions> {
-    let n = strokes.len();
-    let is_hand = |i: usize| !accepted.get(i).copied().unwrap_or(false);
-    let last = (0..n).rev().find(|&i| is_hand(i))?;
-    let taken = n - 1 - last;
-    if taken > LOOK_BACK {
-        return None;
+/// What is asked of a sequence.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Ask {
+    /// The most copies to propose, in `region` if any.
+    pub count: usize,
+    pub region: Option<Rect>,
+    /// Added to the source indices (the strokes before the latest `MAX_STROKES`).
+    pub offset: usize,
+    /// With a seed, each proposal is a random hand-drawn copy carried to its site.
+    pub seed: Option<u64>,
+    /// Steps that neither turn nor scale are taken too (where the lattice has read a row
+    /// too loosely to propose from: hatching along a contour that bends a little).
+    pub rows: bool,
+}
+
+/// The drawing as the sequence reads it: its strokes, which were accepted proposals,
+/// and the recent ones' samplings.
+struct Drawing<'a> {
+    strokes: &'a [Stroke],
+    accepted: &'a [bool],
+    sampled: Vec<Option<Vec<Point>>>,
+}
+
+impl Drawing<'_> {
+    fn hand(&self, i: usize) -> bool {
+        !self.accepted.get(i).copied().unwrap_or(false)
     }
-    let recent: Vec<usize> = (n.saturating_sub(LOOK_BACK + 1)..n).collect();
-    let sampled: Vec<Option<Vec<Point>>> = (0..n).map(|i| (i >= recent[0]).then(|| samples(&strokes[i]))).collect();
-    let size = |i: usize| strokes[i].bounds().size().to_vec2().hypot();
-    let same = |i: usize, j: usize| relate(sampled[i].as_ref()?, sampled[j].as_ref()?, size(i));
-    // The copies of the latest hand-drawn stroke's shape (hand-drawn or accepted), and
-    // the two before it: the most recent of its shape, then of theirs.
-    let chain: Vec<usize> = recent.iter().copied().filter(|&i| i == last || same(i, last).is_some()).collect();
-    let at = chain.iter().position(|&i| i == last)?;
-    let second = *chain[..at].last()?;
-    let first = (chain[0]..second).rev().find(|&i| i >= recent[0] && same(i, second).is_some())?;
-    let (one, _) = same(first, second)?;
-    let (two, _) = same(second, last)?;
-    let centre = |i: usize| strokes[i].reference_point();
-    let step = centre(second).distance(centre(last));
-    // Copies a step apart, not one drawn over another (hatching lies a tenth of its
-    // length apart, or closer).
-    if step <= (0.02 * size(last)).max(3.0 * strokes[last].width) {
-        return None;
+
+    fn size(&self, i: usize) -> f64 {
+        self.strokes[i].bounds().size().to_vec2().hypot()
     }
-    if (two.a - one.a).hypot() > TURN * one.a.hypot() {
-        return None;
+
+    /// The step from copy `i` to copy `j` and its shape residual, when they are one shape.
+    fn same(&self, i: usize, j: usize) -> Option<(Similarity, f64)> {
+        relate(self.sampled[i].as_ref()?, self.sampled[j].as_ref()?, self.size(i))
     }
-    // A step that neither turns nor scales is a row's: the lattice reads those, with
-    // its own certainty, from every copy.
-    if (one.a + two.a - Vec2::new(2.0, 0.0)).hypot() < 2.0 * MIN_TURN {
-        return None;
+
+    /// Where a copy is, for the orbit: the centre of its sampling (a similarity carries
+    /// it as it carries the copy).
+    fn z(&self, i: usize) -> Point {
+        centroid(self.sampled[i].as_ref().expect("recent strokes are sampled"))
     }
-    // The first step must carry the second copy onto the latest: the miss of its centre
-    // (where a copy is matched).
-    let carry = |t: &Similarity, i: usize| t.carry(&strokes[i]).reference_point();
-    if carry(&one, second).distance(centre(last)) > PLACE * step {
-        return None;
+}
+
+/// What a run of copies says: the orbit they lie on and, for a ring, its count; and how
+/// far off the orbit's bend may be (radians a step, per step).
+struct Model {
+    orbit: Orbit,
+    closes: Option<i64>,
+    bend_error: f64,
+}
+
+/// The bend of a run from its pairs' `(index, turn)`: the least-squares slope of turn
+/// over index, when it passes three times its standard error (else 0), and how far off the
+/// bend taken may be (the slope's standard error, or with none taken the slope itself
+/// and its error).
+fn bending(turns: &[(f64, f64)]) -> (f64, f64) {
+    if turns.len() < 3 {
+        return (0.0, 0.0);
     }
-    // The run: copies of this shape back from the latest, each a step before the next
-    // (a second ring, begun after the first closed, is a run of its own).
-    let mean = (one.a + two.a) * 0.5;
-    let mut run = vec![*chain.last()?];
-    for &p in chain.iter().rev().skip(1) {
-        let cur = *run.last()?;
-        let d = centre(p).distance(centre(cur));
-        let linked = same(p, cur).is_some_and(|(t, _)| (t.a - mean).hypot() <= FOLLOW_TURN * mean.hypot());
-        if !linked || !(0.5 * step..=2.0 * step).contains(&d) || run.iter().filter(|&&i| is_hand(i)).count() >= MAX_RUN
-        {
-            break;
-        }
-        run.push(p);
+    let n = turns.len() as f64;
+    let (mx, my) = turns.iter().fold((0.0, 0.0), |s, p| (s.0 + p.0 / n, s.1 + p.1 / n));
+    let sxx = turns.iter().map(|p| (p.0 - mx).powi(2)).sum::<f64>();
+    if sxx <= 0.0 {
+        return (0.0, 0.0);
     }
-    run.reverse();
-    let z = |i: usize| centroid(sampled[i].as_ref().expect("recent strokes are sampled"));
+    let slope = turns.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum::<f64>() / sxx;
+    let resid = turns.iter().map(|p| (p.1 - my - slope * (p.0 - mx)).powi(2)).sum::<f64>();
+    let se = (resid / (n - 2.0).max(1.0) / sxx).sqrt();
+    if slope.abs() > 3.0 * se {
+        (slope, se)
+    } else {
+        (0.0, slope.abs() + se)
+    }
+}
+
+/// The orbit through `run` (copies in order along the step, `step` apart), with its
+/// step read from the hand-drawn copies' shapes and places; `fallback` is the step to
+/// read the shapes' turn from when no two consecutive copies are hand-drawn.
+fn model(d: &Drawing, run: &[usize], step: f64, fallback: [Vec2; 2]) -> Option<Model> {
     let copies: Vec<Copy> = run
         .iter()
         .enumerate()
         .map(|(t, &i)| Copy {
             t: t as i64,
-            z: z(i),
-            weight: if is_hand(i) { 1.0 } else { ACCEPTED_WEIGHT },
-            hand: is_hand(i),
+            z: d.z(i),
+            weight: if d.hand(i) { 1.0 } else { ACCEPTED_WEIGHT },
+            hand: d.hand(i),
         })
         .collect();
     // What the shapes say of the step: each consecutive pair drawn by hand (an accepted
     // copy is turned by the step it was proposed with, and says nothing of it).
-    let hand_pairs: Vec<(usize, Vec2)> = run
+    let hand_pairs: Vec<(usize, Similarity, f64)> = run
         .windows(2)
         .enumerate()
-        .filter(|(_, w)| is_hand(w[0]) && is_hand(w[1]))
-        .filter_map(|(k, w)| Some((k, same(w[0], w[1])?.0.a)))
+        .filter(|(_, w)| d.hand(w[0]) && d.hand(w[1]))
+        .filter_map(|(k, w)| d.same(w[0], w[1]).map(|(t, r)| (k, t, r * d.size(w[0]))))
         .collect();
+    // A stem that bends one way and then the other turns on from step to step: the
+    // slope of a line through the pairs' turns, taken where it passes three times its
+    // standard error (a ring's, an arc's and a spiral's turn holds).
+    let (bend, bend_error) = bending(&hand_pairs.iter().map(|p| (p.0 as f64, p.1.turn())).collect::<Vec<_>>());
+    let unbent = |k: usize, a: Vec2| mul(a, Vec2::new((bend * k as f64).cos(), -(bend * k as f64).sin()));
     let pairs: Vec<Vec2> =
-        if hand_pairs.is_empty() { vec![one.a, two.a] } else { hand_pairs.iter().map(|p| p.1).collect() };
+        if hand_pairs.is_empty() { fallback.to_vec() } else { hand_pairs.iter().map(|p| unbent(p.0, p.1.a)).collect() };
     let np = pairs.len() as f64;
     // Consecutive pairs share a copy, whose own turn adds to one pair's and takes from
     // the next's: over a run of pairs the turns sum to the last copy's against the
@@ -165,23 +194,20 @@ pub(super) fn propose(
     // shapes wobble (the residual between consecutive hand-drawn copies, each point's
     // share half its square; `HAND_TO_PLACEMENT` as for lattices), and no less than
     // `MIN_ERROR` of the step.
-    let mut wobble: Vec<f64> = run
-        .windows(2)
-        .filter(|w| is_hand(w[0]) && is_hand(w[1]))
-        .filter_map(|w| Some((same(w[0], w[1])?.1 * size(w[0])).powi(2) / 2.0))
-        .collect();
+    let mut wobble: Vec<f64> = hand_pairs.iter().map(|p| p.2 * p.2 / 2.0).collect();
     let wobble = if wobble.is_empty() { 0.0 } else { median(&mut wobble) };
     let prior = (MIN_ERROR * step).powi(2).max(HAND_TO_PLACEMENT * wobble);
     // A hand that misplaces a copy by `e` turns it by about `e` over its radius: the
     // prior error of a pair's turn, no less than `TURN_ERROR`.
-    let radius = 0.5 * run.iter().map(|&i| size(i)).sum::<f64>() / run.len() as f64;
+    let radius = radius_of(d, run);
     let turn_prior = TURN_ERROR.powi(2).max(prior / radius.powi(2));
-    let shape_mean = pairs.iter().fold(Vec2::ZERO, |s, &a| s + a) / np;
-    let spread = pairs.iter().map(|&a| (a - shape_mean).hypot2()).sum::<f64>();
+    let mean = pairs.iter().fold(Vec2::ZERO, |s, &a| s + a) / np;
+    let spread = pairs.iter().map(|&a| (a - mean).hypot2()).sum::<f64>();
     let shapes = Shapes {
-        mean: shape_mean,
+        mean,
         var: (spread + PRIOR_PAIRS * turn_prior) / (np - 1.0 + PRIOR_PAIRS),
         pairs: np * np / segments as f64,
+        bend,
     };
     let mut orbit = Orbit::fit(&copies, shapes, prior)?;
     // A ring closes when its turn is about a whole fraction of a turn (see
@@ -192,9 +218,8 @@ pub(super) fn propose(
     let mut closes = None;
     if let Some(c) = orbit.centre() {
         let radius = copies.iter().map(|k| k.z.distance(c)).sum::<f64>() / copies.len() as f64;
-        let size = run.iter().map(|&i| size(i)).sum::<f64>() / run.len() as f64;
         let turned = Similarity { a: orbit.a, b: Vec2::ZERO };
-        if let Some(k) = ring_steps(&turned, radius, size, run.len()) {
+        if let Some(k) = ring_steps(&turned, radius, 2.0 * radius_of(d, run), run.len()) {
             let sign = turned.turn().signum();
             let mut fits: Vec<(usize, Orbit, f64)> = (k.saturating_sub(1).max(3)..=k + 1)
                 .filter_map(|k| {
@@ -216,10 +241,121 @@ pub(super) fn propose(
             }
         }
     }
+    // (A ring closes whole: its turn holds by construction.)
+    let bend_error = if closes.is_some() { 0.0 } else { bend_error };
+    Some(Model { orbit, closes, bend_error })
+}
+
+/// Half the mean size of the run's copies.
+fn radius_of(d: &Drawing, run: &[usize]) -> f64 {
+    0.5 * run.iter().map(|&i| d.size(i)).sum::<f64>() / run.len() as f64
+}
+
+/// How many times further off than it expected a model of the run has been: each of
+/// the last two hand-drawn copies predicted from the run before it (one and two steps
+/// ahead), its miss over the miss the model expected. 1 unless some miss passes
+/// `BACKTEST` (a stem that bends the other way is missed by several times that).
+fn backtest(d: &Drawing, run: &[usize], step: f64, fallback: [Vec2; 2]) -> f64 {
+    let hands: Vec<usize> = (0..run.len()).filter(|&k| d.hand(run[k])).collect();
+    let mut worst: f64 = 1.0;
+    for (target, ahead) in [(1, 1), (1, 2), (2, 1)] {
+        let Some(&k) = hands.len().checked_sub(target).and_then(|x| hands.get(x)) else { continue };
+        let Some(before) = k.checked_sub(ahead - 1) else { continue };
+        let sub = &run[..before];
+        if sub.iter().filter(|&&i| d.hand(i)).count() < 3 {
+            continue;
+        }
+        let Some(m) = model(d, sub, step, fallback) else { continue };
+        let ratio = m.orbit.at(k as i64).distance(d.z(run[k])) / m.orbit.miss(k as i64).max(1e-9);
+        if std::env::var("ORBIT_DEBUG").is_ok() {
+            eprintln!(
+                "backtest target {target} ahead {ahead} k {k} miss {:.2} expected {:.2} ratio {ratio:.2}",
+                m.orbit.at(k as i64).distance(d.z(run[k])),
+                m.orbit.miss(k as i64)
+            );
+        }
+        if ratio > BACKTEST {
+            worst = worst.max(ratio / BACKTEST);
+        }
+    }
+    worst
+}
+
+/// Proposals continuing the sequence that ends with the latest of `strokes` (none, with
+/// the reason, when it is complete or too uncertain to go on), or `None` when the
+/// latest strokes make no sequence. The steps are read from hand-drawn copies only
+/// (`accepted` marks the proposals taken, which repeat the step they were proposed
+/// with and say nothing of its error); copies accepted after the latest hand-drawn one
+/// count as steps already taken.
+pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Option<Suggestions> {
+    let Ask { count, region, offset, seed, rows } = *ask;
+    let n = strokes.len();
+    let lookback = n.saturating_sub(LOOK_BACK + 1);
+    let d =
+        Drawing { strokes, accepted, sampled: (0..n).map(|i| (i >= lookback).then(|| samples(&strokes[i]))).collect() };
+    let last = (0..n).rev().find(|&i| d.hand(i))?;
+    if n - 1 - last > LOOK_BACK {
+        return None;
+    }
+    // The copies of the latest hand-drawn stroke's shape (hand-drawn or accepted), and
+    // the two before it: the most recent of its shape, then of theirs.
+    let chain: Vec<usize> = (lookback..n).filter(|&i| i == last || d.same(i, last).is_some()).collect();
+    let at = chain.iter().position(|&i| i == last)?;
+    let second = *chain[..at].last()?;
+    let first = (chain[0]..second).rev().find(|&i| d.same(i, second).is_some())?;
+    let (one, _) = d.same(first, second)?;
+    let (two, _) = d.same(second, last)?;
+    let centre = |i: usize| strokes[i].reference_point();
+    let step = centre(second).distance(centre(last));
+    // Copies a step apart, not one drawn over another (hatching lies a tenth of its
+    // length apart, or closer).
+    if step <= (0.02 * d.size(last)).max(3.0 * strokes[last].width) {
+        return None;
+    }
+    // A step that neither turns nor scales is a row's: the lattice reads those, with
+    // its own certainty, from every copy.
+    if !rows && (one.a + two.a - Vec2::new(2.0, 0.0)).hypot() < 2.0 * MIN_TURN {
+        return None;
+    }
+    // The two steps alike, and the first carrying the second copy onto the latest (the
+    // miss of its centre, where a copy is matched). Where they are not (a stem that
+    // bends on, past copies accepted from its earlier turn), the whole run must bear
+    // the sequence out instead (`RUN_PLACE`).
+    let local = (two.a - one.a).hypot() <= TURN * one.a.hypot()
+        && one.carry(&strokes[second]).reference_point().distance(centre(last)) <= PLACE * step;
+    // The run: copies of this shape back from the latest, each a step before the next
+    // (a second ring, begun after the first closed, is a run of its own).
+    let mean = (one.a + two.a) * 0.5;
+    let mut run = vec![*chain.last()?];
+    for &p in chain.iter().rev().skip(1) {
+        let cur = *run.last()?;
+        let gap = centre(p).distance(centre(cur));
+        let linked = d.same(p, cur).is_some_and(|(t, _)| (t.a - mean).hypot() <= FOLLOW_TURN * mean.hypot());
+        if !linked || !(0.5 * step..=2.0 * step).contains(&gap) || run.iter().filter(|&&i| d.hand(i)).count() >= MAX_RUN
+        {
+            break;
+        }
+        run.push(p);
+    }
+    run.reverse();
+    // (Accepted copies after the latest hand-drawn one that do not follow from it are
+    // no run of its.)
+    if !run.contains(&last) {
+        return None;
+    }
+    let Model { orbit, closes, bend_error } = model(&d, &run, step, [one.a, two.a])?;
+    if !local {
+        let hand: Vec<usize> = (0..run.len()).filter(|&t| d.hand(run[t])).collect();
+        if hand.len() < 4 || hand.iter().any(|&t| orbit.at(t as i64).distance(d.z(run[t])) > RUN_PLACE * step) {
+            return None;
+        }
+    }
+    let inflate = backtest(&d, &run, step, [one.a, two.a]);
+    let pairs = (run.len() - 1) as f64;
     let reach = super::certainty::reach(orbit.copies);
     let mut out = Suggestions::default();
     let end = run.len() as i64 - 1;
-    let hands: Vec<usize> = (0..run.len()).filter(|&t| is_hand(run[t])).collect();
+    let hands: Vec<usize> = (0..run.len()).filter(|&t| d.hand(run[t])).collect();
     let mut rng = seed.map(Rng::new);
     let mut why = "The sequence is complete here: its next copy would fall on a drawn one or off the canvas.";
     for k in 1..=count as i64 {
@@ -227,9 +363,20 @@ pub(super) fn propose(
         if closes.is_some_and(|c| t >= c) {
             break;
         }
+        // An open curve is not continued further past its last hand-drawn copy than
+        // the hand-drawn copies span: a stem may bend the other way past what they
+        // show (a ring that closes is known whole).
+        let (first_hand, last_hand) = (hands[0] as i64, *hands.last()? as i64);
+        if closes.is_none() && t - last_hand > (last_hand - first_hand).max(1) {
+            break;
+        }
         let site = orbit.at(t);
         let here = site.distance(orbit.at(t - 1));
-        if reach * orbit.miss(t) > TOLERANCE * here {
+        // (A bend off by `bend_error` puts the next step's turn off by it times half the
+        // run's pairs, and each step ahead by it more.)
+        let kf = k as f64;
+        let drift = here * bend_error * (0.5 * pairs * kf + 0.5 * kf * (kf + 1.0));
+        if reach * (inflate * inflate * orbit.miss(t).powi(2) + drift * drift).sqrt() > TOLERANCE * here {
             why = "The copies drawn so far leave the next ones too uncertain: draw one more.";
             break;
         }
@@ -239,9 +386,9 @@ pub(super) fn propose(
             Some(r) => hands[r.below(hands.len())],
             None => *hands.last()?,
         };
-        let turn = pow(orbit.a, t - from as i64);
+        let turn = orbit.turn(from as i64, t);
         let src = run[from];
-        let ghost = Similarity { a: turn, b: site.to_vec2() - mul(turn, z(src).to_vec2()) }.carry(&strokes[src]);
+        let ghost = Similarity { a: turn, b: site.to_vec2() - mul(turn, d.z(src).to_vec2()) }.carry(&strokes[src]);
         let c = ghost.reference_point();
         // Off the canvas, or onto a stroke already drawn (a ring closing): the end.
         if region.is_some_and(|r| !r.contains(c))
@@ -265,6 +412,10 @@ pub(super) fn propose(
 mod tests {
     use super::*;
 
+    fn ask(count: usize) -> Ask {
+        Ask { count, region: None, offset: 0, seed: None, rows: false }
+    }
+
     /// A petal: a loop from the centre out along angle `theta`.
     fn petal(centre: Point, theta: f64, r: f64) -> Stroke {
         let pts = (0..=20)
@@ -283,7 +434,7 @@ mod tests {
         let c = Point::new(200.0, 200.0);
         let step = std::f64::consts::TAU / 8.0;
         let drawn: Vec<Stroke> = (0..3).map(|k| petal(c, k as f64 * step, 60.0)).collect();
-        let s = propose(&drawn, &[], 8, None, 0, None).expect("a ring of petals continues");
+        let s = propose(&drawn, &[], &ask(8)).expect("a ring of petals continues");
         assert!(s.strokes.len() >= 3, "{} proposed", s.strokes.len());
         for (k, g) in s.strokes.iter().enumerate() {
             let want = petal(c, (3 + k) as f64 * step, 60.0).reference_point();
@@ -291,10 +442,10 @@ mod tests {
         }
         // Seven drawn: only the eighth is left.
         let seven: Vec<Stroke> = (0..7).map(|k| petal(c, k as f64 * step, 60.0)).collect();
-        let s = propose(&seven, &[], 8, None, 0, None).expect("the last petal");
+        let s = propose(&seven, &[], &ask(8)).expect("the last petal");
         assert_eq!(s.strokes.len(), 1);
         let eight: Vec<Stroke> = (0..8).map(|k| petal(c, k as f64 * step, 60.0)).collect();
-        let s = propose(&eight, &[], 8, None, 0, None).expect("a ring, complete");
+        let s = propose(&eight, &[], &ask(8)).expect("a ring, complete");
         assert!(s.strokes.is_empty() && s.reason.as_deref().is_some_and(|r| r.contains("complete")), "{s:?}");
     }
 
@@ -304,10 +455,10 @@ mod tests {
         // Three dashes at random places and turns.
         let dashes =
             vec![line([10.0, 10.0], [30.0, 14.0]), line([80.0, 40.0], [84.0, 70.0]), line([20.0, 90.0], [45.0, 80.0])];
-        assert!(propose(&dashes, &[], 3, None, 0, None).is_none());
+        assert!(propose(&dashes, &[], &ask(3)).is_none());
         // Three different shapes.
         let c = Point::new(100.0, 100.0);
         let mixed = vec![petal(c, 0.0, 40.0), line([0.0, 0.0], [30.0, 0.0]), petal(c, 1.0, 80.0)];
-        assert!(propose(&mixed, &[], 3, None, 0, None).is_none());
+        assert!(propose(&mixed, &[], &ask(3)).is_none());
     }
 }
