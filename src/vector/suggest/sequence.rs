@@ -132,34 +132,86 @@ struct Model {
     bend_error: f64,
 }
 
-/// The bend of a run from its pairs' `(index, turn)`: the least-squares slope of turn
-/// over index, when it passes three times its standard error (else 0), and how far off the
-/// bend taken may be (the slope's standard error, or with none taken the slope itself
-/// and its error).
-fn bending(turns: &[(f64, f64)]) -> (f64, f64) {
-    if turns.len() < 3 {
-        return (0.0, 0.0);
+/// What a hand-drawn copy says of the next hand-drawn one along a run, `span` steps on.
+struct Relation {
+    /// The step the first copy is at (negative: the lead-in, before the run).
+    from: i64,
+    span: usize,
+    turn: f64,
+    scale: f64,
+    /// The shape residual, in the drawing's units.
+    residual: f64,
+}
+
+/// The turn of a run's steps, read from its relations: step `j` (from copy `j` to the
+/// next) turns by `first + bend j`. `bend` is the least-squares slope where it passes
+/// three times its standard error (a stem that bends one way and then the other), else
+/// 0 (a ring, an arc, a spiral), with `bend_error` how far off it may be (the slope's
+/// standard error, or with none taken the slope itself and its error); `spread` is the
+/// relations' square residual about the fit over `dof` degrees of freedom.
+struct Turning {
+    first: f64,
+    bend: f64,
+    bend_error: f64,
+    spread: f64,
+    dof: f64,
+}
+
+fn turning(rel: &[Relation], lead_in: Option<Relation>) -> Turning {
+    let n = rel.len() as f64;
+    // Each relation is `turn = first span + bend s` with `s` the sum of its steps'
+    // indices.
+    let rows: Vec<(f64, f64, f64)> = rel
+        .iter()
+        .map(|r| {
+            let (span, from) = (r.span as f64, r.from as f64);
+            (span, span * from + span * (span - 1.0) / 2.0, r.turn)
+        })
+        .collect();
+    let flat = rows.iter().map(|r| r.2).sum::<f64>() / rows.iter().map(|r| r.0).sum::<f64>();
+    let flat_spread = rows.iter().map(|r| (r.2 - flat * r.0).powi(2)).sum::<f64>();
+    let level =
+        |bend_error: f64| Turning { first: flat, bend: 0.0, bend_error, spread: flat_spread, dof: (n - 1.0).max(0.0) };
+    // The bend from the run's relations and its lead-in's (which says how the turn came
+    // to be the run's, and nothing of the run's own turn otherwise).
+    let rows: Vec<(f64, f64, f64)> = rows
+        .into_iter()
+        .chain(lead_in.map(|r| {
+            let (span, from) = (r.span as f64, r.from as f64);
+            (span, span * from + span * (span - 1.0) / 2.0, r.turn)
+        }))
+        .collect();
+    let n = rows.len() as f64;
+    if rows.len() < 3 {
+        return level(0.0);
     }
-    let n = turns.len() as f64;
-    let (mx, my) = turns.iter().fold((0.0, 0.0), |s, p| (s.0 + p.0 / n, s.1 + p.1 / n));
-    let sxx = turns.iter().map(|p| (p.0 - mx).powi(2)).sum::<f64>();
-    if sxx <= 0.0 {
-        return (0.0, 0.0);
+    let (mut a11, mut a12, mut a22, mut b1, mut b2) = (0.0, 0.0, 0.0, 0.0, 0.0);
+    for &(x1, x2, y) in &rows {
+        a11 += x1 * x1;
+        a12 += x1 * x2;
+        a22 += x2 * x2;
+        b1 += x1 * y;
+        b2 += x2 * y;
     }
-    let slope = turns.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum::<f64>() / sxx;
-    let resid = turns.iter().map(|p| (p.1 - my - slope * (p.0 - mx)).powi(2)).sum::<f64>();
-    let se = (resid / (n - 2.0).max(1.0) / sxx).sqrt();
-    if slope.abs() > 3.0 * se {
-        (slope, se)
+    let det = a11 * a22 - a12 * a12;
+    if det <= 1e-12 * a11 * a22 {
+        return level(0.0);
+    }
+    let first = (b1 * a22 - b2 * a12) / det;
+    let bend = (a11 * b2 - a12 * b1) / det;
+    let spread = rows.iter().map(|r| (r.2 - first * r.0 - bend * r.1).powi(2)).sum::<f64>();
+    let se = (spread / (n - 2.0).max(1.0) * a11 / det).sqrt();
+    if bend.abs() > 3.0 * se {
+        Turning { first, bend, bend_error: se, spread, dof: n - 2.0 }
     } else {
-        (0.0, slope.abs() + se)
+        level(bend.abs() + se)
     }
 }
 
 /// The orbit through `run` (copies in order along the step, `step` apart), with its
 /// step read from the hand-drawn copies' shapes and places; `fallback` is the step to
 /// read the shapes' turn from when no two consecutive copies are hand-drawn.
-fn model(d: &Drawing, run: &[usize], step: f64, fallback: [Vec2; 2]) -> Option<Model> {
+fn model(d: &Drawing, run: &[usize], step: f64, fallback: [Vec2; 2], lead: Option<(usize, usize)>) -> Option<Model> {
     let copies: Vec<Copy> = run
         .iter()
         .enumerate()
@@ -170,45 +222,61 @@ fn model(d: &Drawing, run: &[usize], step: f64, fallback: [Vec2; 2]) -> Option<M
             hand: d.hand(i),
         })
         .collect();
-    // What the shapes say of the step: each consecutive pair drawn by hand (an accepted
-    // copy is turned by the step it was proposed with, and says nothing of it).
-    let hand_pairs: Vec<(usize, Similarity, f64)> = run
+    // What the shapes say of the step: each hand-drawn copy against the next hand-drawn
+    // one along the run, however many steps on (an accepted copy is turned by the step
+    // it was proposed with, and says nothing of it).
+    let hands: Vec<usize> = (0..run.len()).filter(|&k| d.hand(run[k])).collect();
+    let expected = ((fallback[0] + fallback[1]) * 0.5).atan2();
+    let mut relations: Vec<Relation> = hands
         .windows(2)
-        .enumerate()
-        .filter(|(_, w)| d.hand(w[0]) && d.hand(w[1]))
-        .filter_map(|(k, w)| d.same(w[0], w[1]).map(|(t, r)| (k, t, r * d.size(w[0]))))
+        .filter_map(|w| {
+            let (t, r) = d.same(run[w[0]], run[w[1]])?;
+            let span = w[1] - w[0];
+            // (Unwrapped to the whole turns `span` steps of about the expected turn make.)
+            let turn = t.turn() + TAU * ((span as f64 * expected - t.turn()) / TAU).round();
+            Some(Relation { from: w[0] as i64, span, turn, scale: t.scale(), residual: r * d.size(run[w[0]]) })
+        })
         .collect();
-    // A stem that bends one way and then the other turns on from step to step: the
-    // slope of a line through the pairs' turns, taken where it passes three times its
-    // standard error (a ring's, an arc's and a spiral's turn holds).
-    let (bend, bend_error) = bending(&hand_pairs.iter().map(|p| (p.0 as f64, p.1.turn())).collect::<Vec<_>>());
-    let unbent = |k: usize, a: Vec2| mul(a, Vec2::new((bend * k as f64).cos(), -(bend * k as f64).sin()));
-    let pairs: Vec<Vec2> =
-        if hand_pairs.is_empty() { fallback.to_vec() } else { hand_pairs.iter().map(|p| unbent(p.0, p.1.a)).collect() };
-    let np = pairs.len() as f64;
-    // Consecutive pairs share a copy, whose own turn adds to one pair's and takes from
-    // the next's: over a run of pairs the turns sum to the last copy's against the
-    // first's, so their mean errs by one pair's error over the count, not its root.
-    let segments = 1 + hand_pairs.windows(2).filter(|w| w[1].0 != w[0].0 + 1).count();
+    // (The lead-in's turn onto the run's first hand-drawn copy, for the bend only.)
+    let lead_in = lead.zip(hands.first()).and_then(|((p, back), &h)| {
+        let (t, _) = d.same(p, run[h])?;
+        let span = h + back;
+        let turn = t.turn() + TAU * ((span as f64 * expected - t.turn()) / TAU).round();
+        Some(Relation { from: -(back as i64), span, turn, scale: t.scale(), residual: 0.0 })
+    });
+    if relations.is_empty() {
+        relations = fallback
+            .iter()
+            .enumerate()
+            .map(|(k, a)| Relation { from: k as i64, span: 1, turn: a.atan2(), scale: a.hypot(), residual: 0.0 })
+            .collect();
+    }
+    let turning = turning(&relations, lead_in);
     // The hand's scatter before the copies' places show it: as loose as its strokes'
-    // shapes wobble (the residual between consecutive hand-drawn copies, each point's
-    // share half its square; `HAND_TO_PLACEMENT` as for lattices), and no less than
-    // `MIN_ERROR` of the step.
-    let mut wobble: Vec<f64> = hand_pairs.iter().map(|p| p.2 * p.2 / 2.0).collect();
-    let wobble = if wobble.is_empty() { 0.0 } else { median(&mut wobble) };
+    // shapes wobble (the residual between hand-drawn copies, each point's share half its
+    // square; `HAND_TO_PLACEMENT` as for lattices), and no less than `MIN_ERROR` of the
+    // step.
+    let mut wobble: Vec<f64> = relations.iter().map(|r| r.residual * r.residual / 2.0).collect();
+    let wobble = median(&mut wobble);
     let prior = (MIN_ERROR * step).powi(2).max(HAND_TO_PLACEMENT * wobble);
     // A hand that misplaces a copy by `e` turns it by about `e` over its radius: the
-    // prior error of a pair's turn, no less than `TURN_ERROR`.
+    // prior error of a relation's turn, no less than `TURN_ERROR`.
     let radius = radius_of(d, run);
     let turn_prior = TURN_ERROR.powi(2).max(prior / radius.powi(2));
-    let mean = pairs.iter().fold(Vec2::ZERO, |s, &a| s + a) / np;
-    let spread = pairs.iter().map(|&a| (a - mean).hypot2()).sum::<f64>();
+    let steps = relations.iter().map(|r| r.span).sum::<usize>() as f64;
+    let scale = (relations.iter().map(|r| r.scale.ln()).sum::<f64>() / steps).exp();
+    let scale_spread = relations.iter().map(|r| (r.scale.ln() - r.span as f64 * scale.ln()).powi(2)).sum::<f64>();
     let shapes = Shapes {
-        mean,
-        var: (spread + PRIOR_PAIRS * turn_prior) / (np - 1.0 + PRIOR_PAIRS),
-        pairs: np * np / segments as f64,
-        bend,
+        mean: Vec2::new(turning.first.cos(), turning.first.sin()) * scale,
+        var: (turning.spread + scale_spread + PRIOR_PAIRS * turn_prior) / (turning.dof + PRIOR_PAIRS),
+        // (The turns of consecutive relations share a copy, whose own turn adds to one
+        // and takes from the next: their sum is the last copy's against the first's, so
+        // the mean errs by one relation's error over the steps, not their root; less
+        // well known where a bend is read too.)
+        pairs: steps * steps / if turning.bend != 0.0 { 4.0 } else { 1.0 },
+        bend: turning.bend,
     };
+    let bend_error = turning.bend_error;
     let mut orbit = Orbit::fit(&copies, shapes, prior)?;
     // A ring closes when its turn is about a whole fraction of a turn (see
     // `chain::ring_steps`): snapped to that whole number of copies or one either side,
@@ -265,15 +333,8 @@ fn backtest(d: &Drawing, run: &[usize], step: f64, fallback: [Vec2; 2]) -> f64 {
         if sub.iter().filter(|&&i| d.hand(i)).count() < 3 {
             continue;
         }
-        let Some(m) = model(d, sub, step, fallback) else { continue };
+        let Some(m) = model(d, sub, step, fallback, None) else { continue };
         let ratio = m.orbit.at(k as i64).distance(d.z(run[k])) / m.orbit.miss(k as i64).max(1e-9);
-        if std::env::var("ORBIT_DEBUG").is_ok() {
-            eprintln!(
-                "backtest target {target} ahead {ahead} k {k} miss {:.2} expected {:.2} ratio {ratio:.2}",
-                m.orbit.at(k as i64).distance(d.z(run[k])),
-                m.orbit.miss(k as i64)
-            );
-        }
         if ratio > BACKTEST {
             worst = worst.max(ratio / BACKTEST);
         }
@@ -327,15 +388,37 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
     // (a second ring, begun after the first closed, is a run of its own).
     let mean = (one.a + two.a) * 0.5;
     let mut run = vec![*chain.last()?];
-    for &p in chain.iter().rev().skip(1) {
+    let mut cut = None;
+    for (k, &p) in chain.iter().enumerate().rev().skip(1) {
         let cur = *run.last()?;
         let gap = centre(p).distance(centre(cur));
+        let near = (0.5 * step..=2.0 * step).contains(&gap);
         let linked = d.same(p, cur).is_some_and(|(t, _)| (t.a - mean).hypot() <= FOLLOW_TURN * mean.hypot());
-        if !linked || !(0.5 * step..=2.0 * step).contains(&gap) || run.iter().filter(|&&i| d.hand(i)).count() >= MAX_RUN
-        {
+        if !linked || !near || run.iter().filter(|&&i| d.hand(i)).count() >= MAX_RUN {
+            cut = (near && !linked).then_some(k);
             break;
         }
         run.push(p);
+    }
+    // Where the run stops at a copy that turns too differently to join it, the nearest
+    // hand-drawn copy from there back (a step apart each) is its lead-in, so many steps
+    // before the run: it shows how the turn is changing (a stem that bends on).
+    let mut lead = None;
+    if let Some(k) = cut {
+        let mut back = 1;
+        let mut at = k;
+        loop {
+            if d.hand(chain[at]) {
+                lead = Some((chain[at], back));
+                break;
+            }
+            let gap = at.checked_sub(1).map(|b| centre(chain[b]).distance(centre(chain[at])));
+            if back >= 4 || !gap.is_some_and(|g| (0.5 * step..=2.0 * step).contains(&g)) {
+                break;
+            }
+            at -= 1;
+            back += 1;
+        }
     }
     run.reverse();
     // (Accepted copies after the latest hand-drawn one that do not follow from it are
@@ -343,7 +426,7 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
     if !run.contains(&last) {
         return None;
     }
-    let Model { orbit, closes, bend_error } = model(&d, &run, step, [one.a, two.a])?;
+    let Model { orbit, closes, bend_error } = model(&d, &run, step, [one.a, two.a], lead)?;
     if !local {
         let hand: Vec<usize> = (0..run.len()).filter(|&t| d.hand(run[t])).collect();
         if hand.len() < 4 || hand.iter().any(|&t| orbit.at(t as i64).distance(d.z(run[t])) > RUN_PLACE * step) {
