@@ -38,3 +38,52 @@ for (const n of [30, 60, 120, 200, 400]) {
   }
   console.log(`| ${n} | ${count} | ${median(t).toFixed(1)} | ${Math.max(...t).toFixed(1)} | ${median(u).toFixed(1)} |`);
 }
+
+// Repetitions that are not lattices (issue 27: within 50 ms at 200 strokes): rings of
+// eight petals drawn one after another across the canvas, the latest ring three petals
+// in (its ghosts complete it); and hatching lines along a wide arc, each turned with it.
+const petal = (cx, cy, theta, len) => {
+  const pts = [];
+  for (let k = 0; k <= 20; k++) {
+    const t = (k / 20) * 2 * Math.PI;
+    const along = 0.5 * len * (1 - Math.cos(t)), across = (len / 6) * Math.sin(t);
+    pts.push([cx + along * Math.cos(theta) - across * Math.sin(theta) + jit() * 0.3, cy + along * Math.sin(theta) + across * Math.cos(theta) + jit() * 0.3]);
+  }
+  return { points: pts, width: 2, stroke: '#335522' };
+};
+function rings(n) {
+  const out = [];
+  for (let r = 0; out.length < n; r++) {
+    const cx = 60 + 120 * (r % 10), cy = 60 + 120 * Math.floor(r / 10);
+    // Every ring whole but the last, which stops three petals in.
+    const petals = out.length + 8 <= n - 3 ? 8 : Math.min(3, n - out.length);
+    for (let k = 0; k < petals; k++) out.push(petal(cx, cy, (k * Math.PI) / 4, 50));
+    if (petals < 8) break;
+  }
+  return out;
+}
+function hatching(n) {
+  const out = [];
+  for (let k = 0; k < n; k++) {
+    const phi = -1.2 + k * 0.012, r = 600;
+    const cx = 700 + r * Math.sin(phi) + jit() * 0.2, cy = 700 - r * Math.cos(phi) + jit() * 0.2;
+    const dx = Math.sin(phi) * 35, dy = -Math.cos(phi) * 35;
+    out.push({ points: [[cx - dx, cy - dy], [cx + dx, cy + dy]], width: 2, stroke: '#222222' });
+  }
+  return out;
+}
+console.log('\n| drawing | strokes | proposals | median ms | slowest ms |');
+console.log('|---|---:|---:|---:|---:|');
+for (const [name, make] of [['rings of petals', rings], ['turning hatching', hatching]]) {
+  for (const n of [60, 200]) {
+    const d = make(n);
+    const t = [];
+    let count = 0;
+    for (let k = 0; k < 9; k++) {
+      const s = performance.now();
+      count = ps.suggestStrokes(d, { region: [0, 0, 1400, 1400] }).strokes.length;
+      t.push(performance.now() - s);
+    }
+    console.log(`| ${name} | ${d.length} | ${count} | ${median(t).toFixed(1)} | ${Math.max(...t).toFixed(1)} |`);
+  }
+}

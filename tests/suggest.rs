@@ -209,3 +209,28 @@ fn rings_spirals_arcs_and_hatching_are_carried_on_by_their_step() {
         assert!(wrong as f64 <= 0.025 * shown as f64, "at {wobble}: {wrong} wrong of {shown} shown");
     }
 }
+
+/// A second ring drawn after the first is complete (issue 27): three petals of it, and
+/// its ghosts complete it too (five of each ring's eight accepted), nothing proposed
+/// across from one ring to the other.
+#[test]
+fn a_second_ring_completes_as_the_first_did() {
+    let ring = |seed| {
+        patternsynth::vector::sequences::sequences(0.01, seed).into_iter().find(|q| q.name == "ring of 8").unwrap()
+    };
+    let (first, second) = (ring(1), ring(2));
+    let moved: Vec<_> = second.strokes.iter().map(|s| s.translated(260.0, 40.0)).collect();
+    let truth: Vec<_> = first.strokes.iter().cloned().chain(moved).collect();
+    let canvas = first.canvas.union(second.canvas.with_origin((second.canvas.x0 + 260.0, second.canvas.y0 + 40.0)));
+    let r = replay(&truth, &vec![0; truth.len()], canvas, 0.3 * first.step);
+    assert_eq!(r.by_hand, 6, "{r:?}");
+    assert_eq!(r.wrong, 0, "{r:?}");
+    // Each ring's last five petals are accepted ghosts.
+    let accepted: Vec<bool> = (0..16).map(|i| i % 8 >= 3).collect();
+    let centres: Vec<_> = r.drawing.iter().map(|s| s.reference_point()).collect();
+    for (k, c) in centres.iter().enumerate() {
+        let near_second = c.x > first.canvas.x1 + 10.0;
+        assert_eq!(near_second, k >= 8, "petal {k} at {c:?}");
+    }
+    assert_eq!(r.accepted, accepted.iter().filter(|&&a| a).count());
+}

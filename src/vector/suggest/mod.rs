@@ -41,6 +41,7 @@ mod fit;
 mod lattice;
 mod orbit;
 mod sequence;
+mod turning;
 
 use self::certainty::hand_scatter;
 use self::fit::Fit;

@@ -24,6 +24,7 @@
 //! stroke are carried on.
 
 use super::orbit::{cost, Copy, Orbit, Shapes};
+use super::turning::{turning, Relation};
 use super::{Suggestions, HAND_TO_PLACEMENT, TOLERANCE};
 use crate::rng::Rng;
 use crate::vector::chain::ring_steps;
@@ -130,82 +131,6 @@ struct Model {
     orbit: Orbit,
     closes: Option<i64>,
     bend_error: f64,
-}
-
-/// What a hand-drawn copy says of the next hand-drawn one along a run, `span` steps on.
-struct Relation {
-    /// The step the first copy is at (negative: the lead-in, before the run).
-    from: i64,
-    span: usize,
-    turn: f64,
-    scale: f64,
-    /// The shape residual, in the drawing's units.
-    residual: f64,
-}
-
-/// The turn of a run's steps, read from its relations: step `j` (from copy `j` to the
-/// next) turns by `first + bend j`. `bend` is the least-squares slope where it passes
-/// three times its standard error (a stem that bends one way and then the other), else
-/// 0 (a ring, an arc, a spiral), with `bend_error` how far off it may be (the slope's
-/// standard error, or with none taken the slope itself and its error); `spread` is the
-/// relations' square residual about the fit over `dof` degrees of freedom.
-struct Turning {
-    first: f64,
-    bend: f64,
-    bend_error: f64,
-    spread: f64,
-    dof: f64,
-}
-
-fn turning(rel: &[Relation], lead_in: Option<Relation>) -> Turning {
-    let n = rel.len() as f64;
-    // Each relation is `turn = first span + bend s` with `s` the sum of its steps'
-    // indices.
-    let rows: Vec<(f64, f64, f64)> = rel
-        .iter()
-        .map(|r| {
-            let (span, from) = (r.span as f64, r.from as f64);
-            (span, span * from + span * (span - 1.0) / 2.0, r.turn)
-        })
-        .collect();
-    let flat = rows.iter().map(|r| r.2).sum::<f64>() / rows.iter().map(|r| r.0).sum::<f64>();
-    let flat_spread = rows.iter().map(|r| (r.2 - flat * r.0).powi(2)).sum::<f64>();
-    let level =
-        |bend_error: f64| Turning { first: flat, bend: 0.0, bend_error, spread: flat_spread, dof: (n - 1.0).max(0.0) };
-    // The bend from the run's relations and its lead-in's (which says how the turn came
-    // to be the run's, and nothing of the run's own turn otherwise).
-    let rows: Vec<(f64, f64, f64)> = rows
-        .into_iter()
-        .chain(lead_in.map(|r| {
-            let (span, from) = (r.span as f64, r.from as f64);
-            (span, span * from + span * (span - 1.0) / 2.0, r.turn)
-        }))
-        .collect();
-    let n = rows.len() as f64;
-    if rows.len() < 3 {
-        return level(0.0);
-    }
-    let (mut a11, mut a12, mut a22, mut b1, mut b2) = (0.0, 0.0, 0.0, 0.0, 0.0);
-    for &(x1, x2, y) in &rows {
-        a11 += x1 * x1;
-        a12 += x1 * x2;
-        a22 += x2 * x2;
-        b1 += x1 * y;
-        b2 += x2 * y;
-    }
-    let det = a11 * a22 - a12 * a12;
-    if det <= 1e-12 * a11 * a22 {
-        return level(0.0);
-    }
-    let first = (b1 * a22 - b2 * a12) / det;
-    let bend = (a11 * b2 - a12 * b1) / det;
-    let spread = rows.iter().map(|r| (r.2 - first * r.0 - bend * r.1).powi(2)).sum::<f64>();
-    let se = (spread / (n - 2.0).max(1.0) * a11 / det).sqrt();
-    if bend.abs() > 3.0 * se {
-        Turning { first, bend, bend_error: se, spread, dof: n - 2.0 }
-    } else {
-        level(bend.abs() + se)
-    }
 }
 
 /// The orbit through `run` (copies in order along the step, `step` apart), with its
