@@ -49,9 +49,24 @@ impl Shape {
         decide(&self.points, &other.points, eps, false) || decide(&self.points, &other.points, eps, true)
     }
 
-    /// The discrete Fréchet distance (smaller of the two directions).
+    /// The discrete Fréchet distance (smaller of the two directions). The direction
+    /// whose ends lie closer is measured first; the other only as far as it could still
+    /// come out smaller (its ends, and each row of its recurrence, bound it from below).
     pub fn distance(&self, other: &Shape) -> f64 {
-        value(&self.points, &other.points, false).min(value(&self.points, &other.points, true))
+        let (p, q) = (&self.points, &other.points);
+        let (Some(&p0), Some(&pn), Some(&q0), Some(&qm)) = (p.first(), p.last(), q.first(), q.last()) else {
+            return value(p, q, false, f64::INFINITY);
+        };
+        let ends = |reversed: bool| {
+            let (a, b) = if reversed { (qm, q0) } else { (q0, qm) };
+            p0.distance(a).max(pn.distance(b))
+        };
+        let first = ends(true) < ends(false);
+        let best = value(p, q, first, f64::INFINITY);
+        if ends(!first) >= best {
+            return best;
+        }
+        best.min(value(p, q, !first, best))
     }
 }
 
@@ -137,28 +152,37 @@ fn decide(p: &[Point], q: &[Point], eps: f64, reversed: bool) -> bool {
     prev[m - 1]
 }
 
-/// The discrete Fréchet distance by the classic O(nm) recurrence.
-fn value(p: &[Point], q: &[Point], reversed: bool) -> f64 {
+/// The discrete Fréchet distance by the classic O(nm) recurrence (on square
+/// distances, whose order is the distances': one square root at the end); abandoned,
+/// returning infinity, once a whole row of it passes `bound` (every coupling crosses
+/// each row, so the distance is at least the row's least).
+fn value(p: &[Point], q: &[Point], reversed: bool, bound: f64) -> f64 {
+    let bound = bound * bound;
     let (n, m) = (p.len(), q.len());
     if n == 0 || m == 0 {
         return if n == m { 0.0 } else { f64::INFINITY };
     }
+    let q: Vec<Point> = (0..m).map(|j| at(q, j, reversed)).collect();
     let mut prev = vec![0.0f64; m];
     let mut cur = vec![0.0f64; m];
-    for (i, pi) in p.iter().enumerate() {
-        for j in 0..m {
-            let d = pi.distance(at(q, j, reversed));
-            let best = match (i, j) {
-                (0, 0) => 0.0,
-                (0, _) => cur[j - 1],
-                (_, 0) => prev[0],
-                _ => prev[j].min(cur[j - 1]).min(prev[j - 1]),
-            };
-            cur[j] = d.max(best);
+    // The first row: along `q` from its start.
+    prev[0] = p[0].distance_squared(q[0]);
+    for j in 1..m {
+        prev[j] = p[0].distance_squared(q[j]).max(prev[j - 1]);
+    }
+    for pi in &p[1..] {
+        cur[0] = pi.distance_squared(q[0]).max(prev[0]);
+        let mut least = cur[0];
+        for j in 1..m {
+            cur[j] = pi.distance_squared(q[j]).max(prev[j].min(cur[j - 1]).min(prev[j - 1]));
+            least = least.min(cur[j]);
+        }
+        if least > bound {
+            return f64::INFINITY;
         }
         std::mem::swap(&mut prev, &mut cur);
     }
-    prev[m - 1]
+    prev[m - 1].sqrt()
 }
 
 #[cfg(test)]

@@ -222,6 +222,11 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
     fit.certainty = fit.certainty(&elems, &weight, prior);
     let latest = motifs.instance_of()[strokes.len() - 1] as usize;
     if !whole(latest) {
+        // (Unless its strokes carry on one another: the second ring of petals of a
+        // drawing of rings, three petals in.)
+        if let Some(s) = sequence::propose(strokes, &accepted, &ask(false)).filter(|s| !s.strokes.is_empty()) {
+            return Ok(s);
+        }
         return Ok(nothing("The copy being drawn is not finished: the next copies are proposed once it is."));
     }
     if fit.motif[fit.cell[latest].0].members.len() < 2 {
