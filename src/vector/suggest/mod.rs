@@ -207,14 +207,14 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
     let Ok(mut spread) = Spread::new(&elems) else {
         // (Petals drawn from one centre touch there: one motif, no spacing; they may
         // still carry on one another.)
-        return Ok(sequence::propose(strokes, &accepted, &ask(false))
+        return Ok(sequence::propose(strokes, &accepted, &ask(true))
             .unwrap_or_else(|| nothing("The strokes have no spacing to repeat.")));
     };
     spread.spacing = spread.apart(&elems);
     let Some(mut fit) = Fit::find(&elems, &weight, &parts, &spread) else {
         // No lattice: the latest strokes may still repeat one another by turns (a ring
         // of petals, hatching that bends: see `sequence`).
-        return Ok(sequence::propose(strokes, &accepted, &ask(false))
+        return Ok(sequence::propose(strokes, &accepted, &ask(true))
             .unwrap_or_else(|| nothing("The drawing shows no repetition yet.")));
     };
     let prior = (HAND_TO_PLACEMENT * hand_scatter(strokes, &classification.classes, &accepted))

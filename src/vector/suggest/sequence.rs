@@ -91,8 +91,9 @@ pub(super) struct Ask {
     pub offset: usize,
     /// With a seed, each proposal is a random hand-drawn copy carried to its site.
     pub seed: Option<u64>,
-    /// Steps that neither turn nor scale are taken too (where the lattice has read a row
-    /// too loosely to propose from: hatching along a contour that bends a little).
+    /// Steps that neither turn nor scale are taken too: where the lattice has read no
+    /// repetition, or a row too loosely to propose from (hatching along a contour that
+    /// bends a little); not within a copy being drawn (the parallel bars of one motif).
     pub rows: bool,
 }
 
