@@ -131,7 +131,9 @@ pub fn find(elems: &[Element], grid: &Grid, spacing: f64) -> Option<Periods> {
         return None;
     }
     let bounds = elems.iter().fold(Rect::from_points(elems[0].pos, elems[0].pos), |r, e| r.union_pt(e.pos));
-    let hull = convex_hull(elems.iter().map(|e| e.pos).collect());
+    // (Elements along an arc are all on their hull: 200 hatching lines made a hull of
+    // 200 edges, each element's image tested against every one.)
+    let hull = simplify(convex_hull(elems.iter().map(|e| e.pos).collect()), 0.25 * TOLERANCE * spacing);
     if hull.len() < 3 {
         return None;
     }
@@ -261,6 +263,26 @@ fn convex_hull(points: Vec<Point>) -> Vec<Point> {
             hull.push(p);
         }
         hull.pop();
+    }
+    hull
+}
+
+/// A convex hull with the vertices dropped that lie within `within` of the chord of
+/// their neighbours, the nearest first (down to a triangle): the polygon shrinks by at
+/// most `within`, a quarter of the tolerance its edges are tested with.
+fn simplify(mut hull: Vec<Point>, within: f64) -> Vec<Point> {
+    while hull.len() > 3 {
+        let n = hull.len();
+        let height = |k: usize| {
+            let (a, b, c) = (hull[(k + n - 1) % n], hull[k], hull[(k + 1) % n]);
+            let e = c - a;
+            e.cross(b - a).abs() / e.hypot().max(1e-12)
+        };
+        let Some((k, h)) = (0..n).map(|k| (k, height(k))).min_by(|x, y| x.1.total_cmp(&y.1)) else { break };
+        if h >= within {
+            break;
+        }
+        hull.remove(k);
     }
     hull
 }
