@@ -67,6 +67,8 @@ const PRIOR_PAIRS: f64 = 2.0;
 const SNAP_WORSE: f64 = 2.5;
 /// A ring's count is taken when it is this many times likelier than the next best.
 const SNAP_SURE: f64 = 20.0;
+/// Why nothing (more) is proposed while the sequence goes on.
+const UNCERTAIN: &str = "The copies drawn so far leave the next ones too uncertain: draw one more.";
 /// A run that does not pass the local test holds at least four hand-drawn copies, each
 /// within this share of the step of its site on the run's orbit.
 const RUN_PLACE: f64 = 0.15;
@@ -370,6 +372,7 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
     for k in 1..=count as i64 {
         let t = end + k;
         if closes.is_some_and(|c| t >= c) {
+            why = "The ring is complete: draw the next one.";
             break;
         }
         // An open curve is not continued further past its last hand-drawn copy than
@@ -377,6 +380,7 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
         // show (a ring that closes is known whole).
         let (first_hand, last_hand) = (hands[0] as i64, *hands.last()? as i64);
         if closes.is_none() && t - last_hand > (last_hand - first_hand).max(1) {
+            why = UNCERTAIN;
             break;
         }
         let site = orbit.at(t);
@@ -386,7 +390,7 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
         let kf = k as f64;
         let drift = here * bend_error * (0.5 * pairs * kf + 0.5 * kf * (kf + 1.0));
         if reach * (inflate * inflate * orbit.miss(t).powi(2) + drift * drift).sqrt() > TOLERANCE * here {
-            why = "The copies drawn so far leave the next ones too uncertain: draw one more.";
+            why = UNCERTAIN;
             break;
         }
         // A drawn copy carried to the site, turned and scaled by the steps between: the
@@ -403,6 +407,9 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
         if region.is_some_and(|r| !r.contains(c))
             || strokes.iter().any(|s| s.reference_point().distance(c) < 0.5 * here)
         {
+            if closes.is_some() {
+                why = "The ring is complete: draw the next one.";
+            }
             break;
         }
         out.strokes.push(ghost);
