@@ -28,7 +28,7 @@ use kurbo::{Point, Vec2};
 /// One copy on the orbit: its index along the step, its centre, and its weight in the
 /// fit (an accepted proposal sits where an earlier fit put it and weighs little).
 #[derive(Clone, Copy, Debug)]
-pub(super) struct Copy {
+pub(super) struct Placed {
     pub t: i64,
     pub z: Point,
     pub weight: f64,
@@ -55,7 +55,7 @@ pub(super) struct Orbit {
     pub var_a: f64,
     /// `a` is held to a pure turn (its error is then along the turn only).
     unit: bool,
-    members: Vec<Copy>,
+    members: Vec<Placed>,
 }
 
 #[derive(Clone, Copy, Debug, Default)]
@@ -103,7 +103,7 @@ fn geometric(a: Vec2, bend: f64, t: i64) -> Vec2 {
 
 /// Given `a`: `z_0`, `v`, the normal equations' sums, and the hand-drawn copies' sum of
 /// square misses and the weighted one (`None` when the copies do not fix the orbit).
-fn solve(copies: &[Copy], a: Vec2, bend: f64) -> Option<(Vec2, Vec2, Sums, f64, f64)> {
+fn solve(copies: &[Placed], a: Vec2, bend: f64) -> Option<(Vec2, Vec2, Sums, f64, f64)> {
     let mut s = Sums::default();
     let (mut r0, mut r1) = (Vec2::ZERO, Vec2::ZERO);
     for c in copies {
@@ -183,7 +183,7 @@ pub(super) struct Shapes {
 /// How badly step `a` explains the copies, given the hand's mean square `scatter`:
 /// the placement residual over the scatter, plus the shapes' mean's distance over its
 /// variance (minus the log-likelihood of both, up to a constant).
-pub(super) fn cost(copies: &[Copy], shapes: &Shapes, a: Vec2, scatter: f64) -> f64 {
+pub(super) fn cost(copies: &[Placed], shapes: &Shapes, a: Vec2, scatter: f64) -> f64 {
     let ssr = solve(copies, a, shapes.bend).map_or(f64::INFINITY, |s| s.4);
     ssr / scatter + shapes.pairs * (a - shapes.mean).hypot2() / shapes.var
 }
@@ -195,7 +195,7 @@ impl Orbit {
     /// The orbit through `copies` (their indices along the step), with the step read
     /// from the shapes and the places; `prior` is the hand's mean square scatter assumed
     /// before the copies show their own.
-    pub fn fit(copies: &[Copy], shapes: Shapes, prior: f64) -> Option<Orbit> {
+    pub fn fit(copies: &[Placed], shapes: Shapes, prior: f64) -> Option<Orbit> {
         let hand = copies.iter().filter(|c| c.hand).count() as f64;
         // `z_0`, `v` and `a` take three copies' worth of the hand-drawn ones.
         let free = (hand - 3.0).max(0.0);
@@ -244,7 +244,7 @@ impl Orbit {
     }
 
     fn with(
-        copies: &[Copy],
+        copies: &[Placed],
         a: Vec2,
         bend: f64,
         scatter_at: impl Fn(f64) -> f64,
@@ -269,7 +269,7 @@ impl Orbit {
 
     /// The same copies on the orbit whose step is exactly `a` (a ring's turn snapped to
     /// a whole fraction): `a` is then known, and so is nothing of its error.
-    pub fn snapped(&self, copies: &[Copy], a: Vec2, prior: f64) -> Option<Orbit> {
+    pub fn snapped(&self, copies: &[Placed], a: Vec2, prior: f64) -> Option<Orbit> {
         let hand = copies.iter().filter(|c| c.hand).count() as f64;
         // (With `a` given, `z_0` and `v` take two copies' worth.)
         let free = (hand - 2.0).max(0.0);
@@ -324,11 +324,11 @@ impl Orbit {
 mod tests {
     use super::*;
 
-    fn ring(n: usize, drawn: usize, centre: Point, radius: f64) -> Vec<Copy> {
+    fn ring(n: usize, drawn: usize, centre: Point, radius: f64) -> Vec<Placed> {
         (0..drawn)
             .map(|k| {
                 let th = k as f64 * std::f64::consts::TAU / n as f64;
-                Copy { t: k as i64, z: centre + Vec2::new(th.cos(), th.sin()) * radius, weight: 1.0, hand: true }
+                Placed { t: k as i64, z: centre + Vec2::new(th.cos(), th.sin()) * radius, weight: 1.0, hand: true }
             })
             .collect()
     }
@@ -352,8 +352,8 @@ mod tests {
 
     #[test]
     fn a_row_is_the_orbit_of_a_translation() {
-        let copies: Vec<Copy> = (0..4)
-            .map(|k| Copy { t: k, z: Point::new(10.0 + 20.0 * k as f64, 5.0), weight: 1.0, hand: true })
+        let copies: Vec<Placed> = (0..4)
+            .map(|k| Placed { t: k, z: Point::new(10.0 + 20.0 * k as f64, 5.0), weight: 1.0, hand: true })
             .collect();
         let shapes = Shapes { mean: Vec2::new(1.0, 0.0), var: 1e-4, pairs: 3.0, bend: 0.0 };
         let o = Orbit::fit(&copies, shapes, 0.01).unwrap();

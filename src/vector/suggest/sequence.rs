@@ -23,7 +23,7 @@
 //! rotation and scale here (a petal turned is the same petal), and only motifs of one
 //! stroke are carried on.
 
-use super::orbit::{cost, Copy, Orbit, Shapes};
+use super::orbit::{cost, Orbit, Placed, Shapes};
 use super::turning::{turning, Relation};
 use super::{Suggestions, HAND_TO_PLACEMENT, TOLERANCE};
 use crate::rng::Rng;
@@ -140,10 +140,10 @@ struct Model {
 /// step read from the hand-drawn copies' shapes and places; `fallback` is the step to
 /// read the shapes' turn from when no two consecutive copies are hand-drawn.
 fn model(d: &Drawing, run: &[usize], step: f64, fallback: [Vec2; 2], lead: Option<(usize, usize)>) -> Option<Model> {
-    let copies: Vec<Copy> = run
+    let copies: Vec<Placed> = run
         .iter()
         .enumerate()
-        .map(|(t, &i)| Copy {
+        .map(|(t, &i)| Placed {
             t: t as i64,
             z: d.z(i),
             weight: if d.hand(i) { 1.0 } else { ACCEPTED_WEIGHT },
@@ -189,8 +189,8 @@ fn model(d: &Drawing, run: &[usize], step: f64, fallback: [Vec2; 2], lead: Optio
     let prior = (MIN_ERROR * step).powi(2).max(HAND_TO_PLACEMENT * wobble);
     // A hand that misplaces a copy by `e` turns it by about `e` over its radius: the
     // prior error of a relation's turn, no less than `TURN_ERROR`.
-    let radius = radius_of(d, run);
-    let turn_prior = TURN_ERROR.powi(2).max(prior / radius.powi(2));
+    let size = run.iter().map(|&i| d.size(i)).sum::<f64>() / run.len() as f64;
+    let turn_prior = TURN_ERROR.powi(2).max(prior / (0.5 * size).powi(2));
     let steps = relations.iter().map(|r| r.span).sum::<usize>() as f64;
     let scale = (relations.iter().map(|r| r.scale.ln()).sum::<f64>() / steps).exp();
     let scale_spread = relations.iter().map(|r| (r.scale.ln() - r.span as f64 * scale.ln()).powi(2)).sum::<f64>();
@@ -215,7 +215,7 @@ fn model(d: &Drawing, run: &[usize], step: f64, fallback: [Vec2; 2], lead: Optio
     if let Some(c) = orbit.centre() {
         let radius = copies.iter().map(|k| k.z.distance(c)).sum::<f64>() / copies.len() as f64;
         let turned = Similarity { a: orbit.a, b: Vec2::ZERO };
-        if let Some(k) = ring_steps(&turned, radius, 2.0 * radius_of(d, run), run.len()) {
+        if let Some(k) = ring_steps(&turned, radius, size, run.len()) {
             let sign = turned.turn().signum();
             let mut fits: Vec<(usize, Orbit, f64)> = (k.saturating_sub(1).max(3)..=k + 1)
                 .filter_map(|k| {
@@ -240,11 +240,6 @@ fn model(d: &Drawing, run: &[usize], step: f64, fallback: [Vec2; 2], lead: Optio
     // (A ring closes whole: its turn holds by construction.)
     let bend_error = if closes.is_some() { 0.0 } else { bend_error };
     Some(Model { orbit, closes, bend_error })
-}
-
-/// Half the mean size of the run's copies.
-fn radius_of(d: &Drawing, run: &[usize]) -> f64 {
-    0.5 * run.iter().map(|&i| d.size(i)).sum::<f64>() / run.len() as f64
 }
 
 /// How many times further off than it expected a model of the run has been: each of
