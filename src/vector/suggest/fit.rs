@@ -2,10 +2,11 @@
 //! positions, and the cells each stroke falls in.
 
 use super::certainty::Certainty;
-use super::lattice::{candidates, refine, shear, square, Lattice};
+use super::lattice::{candidates, refine, shear, square, Lattice, Residues};
 use super::TOLERANCE;
 use crate::vector::element::Element;
 use crate::vector::reference::Spread;
+use crate::vector::spatial::Grid;
 use kurbo::{Point, Vec2};
 
 /// Candidate periods evaluated in full, shortest first.
@@ -148,19 +149,18 @@ impl Fit {
         let mut motif: Vec<MotifPosition> = Vec::new();
         // Per component: its motif position and the cell shift that aligns it.
         let mut place = vec![(0usize, 0i64, 0i64); components];
+        let mut residues = Residues::new(lattice, tol);
         for (k, &(sum, count, class)) in sums.iter().enumerate() {
             let site = origin + sum / count as f64;
-            let found = motif.iter().enumerate().find_map(|(m, mp)| {
-                if mp.class != class {
-                    return None;
-                }
-                let (du, dw) = lattice.whole(site - mp.origin, tol)?;
+            let found = residues.first(class, site.to_vec2(), |m| {
+                let (du, dw) = lattice.whole(site - motif[m].origin, tol)?;
                 Some((m, du, dw))
             });
             place[k] = match found {
                 Some(p) => p,
                 None => {
                     motif.push(MotifPosition { class, origin: site, members: Vec::new() });
+                    residues.file(class, site.to_vec2(), motif.len() - 1);
                     (motif.len() - 1, 0, 0)
                 }
             };
@@ -201,7 +201,7 @@ impl Fit {
             (0..n).map(|i| fit.site(fit.cell[i].0, fit.cell[i].1).distance(elems[i].pos)).collect();
         crate::order::floats(&mut residuals);
         let residual = residuals[n / 2];
-        if residual > MAX_RESIDUAL * spread.spacing || fit.contradicted(elems, tol, strict) {
+        if residual > MAX_RESIDUAL * spread.spacing || fit.contradicted(elems, &spread.grid, tol, strict) {
             return None;
         }
         let quality = (explained as f64 / total as f64) * (1.0 - residual / spread.spacing);
@@ -247,7 +247,7 @@ impl Fit {
     /// lines (in a row: any when `strict`, else a third of them: a sub-period leaves
     /// half or more), or stops short of a stroke of its class further along a line
     /// (within three periods).
-    fn contradicted(&self, elems: &[Element], tol: f64, strict: bool) -> bool {
+    fn contradicted(&self, elems: &[Element], grid: &Grid, tol: f64, strict: bool) -> bool {
         // Sorted vectors rather than sets throughout: this runs on a few hundred strokes
         // and the module stays smaller without the tree code.
         let mut cells = self.cell.clone();
@@ -279,17 +279,29 @@ impl Fit {
                 }
                 for &(_, _, (u, w), _) in &lines {
                     let next = self.site(m, (u + du, w + dw));
-                    let beyond = elems.iter().any(|o| {
-                        if o.class != mp.class {
-                            return false;
+                    // (Looked up in the grid: a lattice tried on 200 hatching lines has
+                    // 200 lines along each axis, and scanning every stroke for each was
+                    // most of an autocomplete call.)
+                    let mut there = false;
+                    grid.for_each_near(next, tol, |j| {
+                        let o = &elems[j as usize];
+                        there |= o.class == mp.class && o.pos.distance(next) < tol;
+                    });
+                    if there {
+                        continue;
+                    }
+                    let mut beyond = false;
+                    grid.for_each_near(next + dir * 1.5, 1.5 * len + tol, |j| {
+                        let o = &elems[j as usize];
+                        if beyond || o.class != mp.class {
+                            return;
                         }
                         let d = o.pos - next;
                         let t = d.dot(dir) / len;
                         let off = (d.cross(dir) / len).abs();
-                        off < tol && t > tol && t < 3.0 * len
+                        beyond = off < tol && t > tol && t < 3.0 * len;
                     });
-                    let there = elems.iter().any(|o| o.class == mp.class && o.pos.distance(next) < tol);
-                    if beyond && !there {
+                    if beyond {
                         return true;
                     }
                 }
