@@ -234,3 +234,23 @@ fn a_second_ring_completes_as_the_first_did() {
     }
     assert_eq!(r.accepted, accepted.iter().filter(|&&a| a).count());
 }
+
+/// A ring finished by accepting ghosts says so (issue 27): rings of 5 to 12 at 1% to 5%,
+/// seeds 1-3, each drawn to its end; a ring whose count was never sure enough to snap
+/// (three petals of six, three accepted) is complete too, not "draw one more".
+#[test]
+fn a_finished_ring_is_reported_complete() {
+    for wobble in [0.01, 0.03, 0.05] {
+        for seed in 1..=3 {
+            for q in patternsynth::vector::sequences::sequences(wobble, seed) {
+                if !q.name.starts_with("ring") {
+                    continue;
+                }
+                let tol: Vec<f64> = q.steps.iter().map(|s| 0.3 * s).collect();
+                let r = replay_each(&q.strokes, &vec![0; q.strokes.len()], q.canvas, &tol, &[]);
+                let said = r.end_reason.unwrap_or_default();
+                assert!(said.contains("ring is complete"), "{} at {wobble}, seed {seed}: {said:?}", q.name);
+            }
+        }
+    }
+}

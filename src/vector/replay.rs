@@ -32,6 +32,8 @@ pub struct Replay {
     /// The finished drawing (hand-drawn and accepted strokes, in order) and its classes.
     pub drawing: Vec<Stroke>,
     pub drawing_classes: Vec<u32>,
+    /// What autocomplete says of the finished drawing (why it proposes nothing more).
+    pub end_reason: Option<String>,
 }
 
 impl Replay {
@@ -129,6 +131,7 @@ pub fn replay_each(truth: &[Stroke], classes: &[u32], region: Rect, tol: &[f64],
             }
         }
     }
+    r.end_reason = suggest_strokes(&drawn, &opts).expect("suggestions on a drawing").reason;
     r.drawing = drawn;
     r.drawing_classes = drawn_class;
     crate::order::floats(&mut times);

@@ -313,8 +313,10 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
     }
     if out.strokes.is_empty() && uncertain > 0 {
         // A row that bends (hatching along a turning contour) fits a lattice too loosely
-        // to propose from: the latest strokes may still carry on one another.
-        if let Some(s) = sequence::propose(strokes, &accepted, &ask(true)).filter(|s| !s.strokes.is_empty()) {
+        // to propose from: the latest strokes may still carry on one another; and where
+        // they do, with nothing to add, the sequence says why (a ring of six, three
+        // petals accepted, is complete, not uncertain).
+        if let Some(s) = sequence::propose(strokes, &accepted, &ask(true)) {
             return Ok(s);
         }
     }

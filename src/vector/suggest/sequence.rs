@@ -370,6 +370,14 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
             why = "The ring is complete: draw the next one.";
             break;
         }
+        let site = orbit.at(t);
+        let here = site.distance(orbit.at(t - 1));
+        // Round onto the run's own first copies: a ring, whole, even where its count
+        // was never sure enough to snap (three petals of six, three accepted).
+        if orbit.centre().is_some() && run.iter().any(|&i| d.z(i).distance(site) < 0.5 * here) {
+            why = "The ring is complete: draw the next one.";
+            break;
+        }
         // An open curve is not continued further past its last hand-drawn copy than
         // the hand-drawn copies span: a stem may bend the other way past what they
         // show (a ring that closes is known whole).
@@ -378,8 +386,6 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
             why = UNCERTAIN;
             break;
         }
-        let site = orbit.at(t);
-        let here = site.distance(orbit.at(t - 1));
         // (A bend off by `bend_error` puts the next step's turn off by it times half the
         // run's pairs, and each step ahead by it more.)
         let kf = k as f64;
