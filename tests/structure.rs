@@ -298,3 +298,49 @@ fn a_ring_drawn_in_part_is_counted_right() {
     let (right, _) = count(0.05, 3);
     assert!(right >= 35, "at 5% from three petals: {right} right of 50");
 }
+
+/// Hatching along a straight contour (3, 4 or all 14 lines drawn, 1% and 3%, seeds
+/// 1-3) continues as its row across the output, reported as a lattice (it was
+/// 'irregular'): the output's lines on one straight line (each within 0.3 of the
+/// spacing of their fitted line, which is level within 3 degrees: three lines drawn at
+/// 3% leave the row's slope uncertain by about 1.2),
+/// none closer to the next than half the spacing or further than 1.5 times it, and the
+/// row spanning the output's width.
+#[test]
+fn straight_hatching_continues_as_its_row() {
+    for wobble in [0.01, 0.03] {
+        for seed in 1..=3 {
+            let q = family(wobble, seed, "straight hatching");
+            for drawn in [3, 4, q.strokes.len()] {
+                let r = synth(&q.strokes[..drawn]);
+                let what = format!("{drawn} drawn at {wobble}, seed {seed}");
+                assert_eq!(r.structure, Structure::Lattice, "{what}");
+                let c: Vec<Point> = r.strokes.iter().map(Stroke::reference_point).collect();
+                // The output's line by least squares (y on x: the row is level).
+                let n = c.len() as f64;
+                let (mx, my) = (c.iter().map(|p| p.x).sum::<f64>() / n, c.iter().map(|p| p.y).sum::<f64>() / n);
+                let slope = c.iter().map(|p| (p.x - mx) * (p.y - my)).sum::<f64>()
+                    / c.iter().map(|p| (p.x - mx).powi(2)).sum::<f64>();
+                assert!(
+                    slope.atan().to_degrees().abs() < 3.0,
+                    "{what}: the row turns by {:.2} degrees",
+                    slope.atan().to_degrees()
+                );
+                for p in &c {
+                    let off = p.y - (my + slope * (p.x - mx));
+                    assert!(off.abs() < 0.3 * q.step, "{what}: a line {off:.2} off the row at {p:?}");
+                }
+                let mut xs: Vec<f64> = c.iter().map(|p| p.x).collect();
+                xs.sort_by(f64::total_cmp);
+                for w in xs.windows(2) {
+                    assert!((0.5 * q.step..=1.5 * q.step).contains(&(w[1] - w[0])), "{what}: gap {:?}", w);
+                }
+                assert!(
+                    xs[0] < 2.0 * q.step && xs[xs.len() - 1] > W - 2.0 * q.step,
+                    "{what}: {:?}",
+                    (xs[0], xs.last())
+                );
+            }
+        }
+    }
+}

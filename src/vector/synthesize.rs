@@ -2,7 +2,7 @@
 //! write SVG. This is the entry point the wasm layer and the tests call.
 
 use super::chain::{self, Chain, Structure};
-use super::classify::{classify, propose_tolerances, Tolerances};
+use super::classify::{classify, median, propose_tolerances, Tolerances};
 use super::grow::{find_periods, fit_lattice, grow, Element, GrowOptions, Grown};
 use super::mesh::Mesh;
 use super::motif::{self, Motifs};
@@ -11,6 +11,7 @@ use super::stroke::Stroke;
 use super::svg::to_svg;
 use crate::error::{invalid, Error, Result};
 use crate::progress::{Progress, Throttle};
+use kurbo::Vec2;
 use serde::{Deserialize, Serialize};
 
 /// Options of `synthesize_strokes`; every tolerance left out is proposed from the data.
@@ -269,7 +270,13 @@ pub fn synthesize_strokes(
             motifs.dress(strokes, &classification.classes, &placed, &orbit, opts.variation.then_some(opts.seed), area);
         (out, classes, sources, stats, periods)
     };
-    let structure = if periods.is_some() && !meshed { Structure::Lattice } else { Structure::Irregular };
+    // A row (hatching along a straight contour) grows along its one period: a lattice
+    // too, though it has no second period to report.
+    let structure = if !meshed && (periods.is_some() || straight_row(&elements)) {
+        Structure::Lattice
+    } else {
+        Structure::Irregular
+    };
     Throttle::new(progress).tick(1.0)?;
     Ok(StrokeResult {
         periods: periods.map(|(a, b)| [[a.x, a.y], [b.x, b.y]]),
@@ -310,6 +317,32 @@ impl StrokeResult {
 /// copies are drawn on.
 fn lattice_of(elems: &[Element]) -> Option<Periods> {
     find_periods(elems).ok().flatten().or_else(|| fit_lattice(elems).ok().flatten()?.periods(elems))
+}
+
+/// Whether `elems` make one straight row: evenly spaced along their principal axis
+/// (every gap within half the median gap of it) and off its line by at most a quarter
+/// of that gap. (A lattice fit reads a row into leaves along an S, which growth turns
+/// into a scatter.)
+fn straight_row(elems: &[Element]) -> bool {
+    let n = elems.len();
+    if n < 3 {
+        return false;
+    }
+    let mean = elems.iter().fold(Vec2::ZERO, |s, e| s + e.pos.to_vec2()) / n as f64;
+    let (mut sxx, mut sxy, mut syy) = (0.0, 0.0, 0.0);
+    for e in elems {
+        let d = e.pos.to_vec2() - mean;
+        (sxx, sxy, syy) = (sxx + d.x * d.x, sxy + d.x * d.y, syy + d.y * d.y);
+    }
+    // The principal axis: half the angle of the covariance's (2 sxy, sxx - syy).
+    let theta = 0.5 * (2.0 * sxy).atan2(sxx - syy);
+    let axis = Vec2::new(theta.cos(), theta.sin());
+    let mut along: Vec<f64> = elems.iter().map(|e| (e.pos.to_vec2() - mean).dot(axis)).collect();
+    crate::order::floats(&mut along);
+    let mut gaps: Vec<f64> = along.windows(2).map(|w| w[1] - w[0]).collect();
+    let gap = median(&mut gaps.clone());
+    gaps.retain(|g| (g - gap).abs() > 0.5 * gap);
+    gap > 0.0 && gaps.is_empty() && elems.iter().all(|e| (e.pos.to_vec2() - mean).cross(axis).abs() <= 0.25 * gap)
 }
 
 /// Whether the motif elements repeat by translation: only a drawing that does not is
