@@ -109,27 +109,117 @@ pub fn centroid(s: &[Point]) -> Point {
     (s.iter().fold(Vec2::ZERO, |m, p| m + p.to_vec2()) / s.len().max(1) as f64).to_point()
 }
 
-/// The similarity carrying `from` onto `to` (either way round along `to`), with its
+/// Whether a sampling is a closed loop: its ends within two sample steps of each other.
+fn closed(s: &[Point]) -> bool {
+    let n = s.len();
+    if n < 6 {
+        return false;
+    }
+    let len: f64 = s.windows(2).map(|w| w[0].distance(w[1])).sum();
+    s[0].distance(s[n - 1]) <= 2.0 * len / (n - 1) as f64
+}
+
+/// The similarities carrying `from` onto `to` (either way round along `to`), with their
 /// residual as a share of `size`, when they are the same shape: the residual at most
 /// `shape` of `size` and the scale within `1 / max_scale ..= max_scale`. A shape that
-/// looks the same either way round (a line, an ellipse) fits both: the smaller turn is
-/// the step (a line's next copy is not the line turned half round). The flag says
+/// looks the same either way round (a line, an ellipse) fits more than one way: the
+/// fits as good as the best (within half again its residual) come first, the smallest
+/// turn first (a line's next copy is not the line turned half round), then any other
+/// that passes; where the copies' places say which, the caller picks. The flag says
 /// whether `to` was read backwards.
-pub fn relate(from: &[Point], to: &[Point], size: f64, shape: f64, max_scale: f64) -> Option<(Similarity, f64, bool)> {
+///
+/// Two closed loops (petals, leaves, rings) are compared from every start along `to`:
+/// a hand starts each copy of a loop where it happens to put the pen, and samplings
+/// begun at different places pair the wrong points (a petal begun a tenth of the way
+/// round read as no copy at all). The residual of each start is the cyclic correlation
+/// of the centred loops: `|w|^2 - |sum conj(z) w_k|^2 / |z|^2`. (A loop symmetric under
+/// a half turn fits turned either way: both are given.)
+pub fn relations(from: &[Point], to: &[Point], size: f64, shape: f64, max_scale: f64) -> Vec<(Similarity, f64, bool)> {
     if from.len() != to.len() || from.len() < 2 || size <= 0.0 {
-        return None;
+        return Vec::new();
     }
     let reversed: Vec<Point> = to.iter().rev().copied().collect();
-    let (f, r) = (Similarity::fit(from, to), Similarity::fit(from, &reversed));
-    let fits = [(f.0, f.1, false), (r.0, r.1, true)];
-    let best = f.1.min(r.1);
+    let mut fits = vec![(Similarity::fit(from, to), false), (Similarity::fit(from, &reversed), true)];
+    if closed(from) && closed(to) {
+        let m = from.len() - 1;
+        let centred = |s: &[Point]| -> Vec<Vec2> {
+            let c = s[..m].iter().fold(Vec2::ZERO, |a, p| a + p.to_vec2()) / m as f64;
+            s[..m].iter().map(|p| p.to_vec2() - c).collect()
+        };
+        let z = centred(from);
+        let den: f64 = z.iter().map(|v| v.hypot2()).sum();
+        for (back, path) in [(false, to), (true, &reversed[..])] {
+            let w = centred(path);
+            let ww: f64 = w.iter().map(|v| v.hypot2()).sum();
+            let residual: Vec<f64> = (0..m)
+                .map(|k| {
+                    let num = z.iter().enumerate().fold(Vec2::ZERO, |a, (i, zi)| {
+                        let wi = w[(i + k) % m];
+                        a + Vec2::new(zi.x * wi.x + zi.y * wi.y, zi.x * wi.y - zi.y * wi.x)
+                    });
+                    ww - num.hypot2() / den.max(1e-300)
+                })
+                .collect();
+            // Every start that fits better than its neighbours (a loop symmetric under a
+            // half turn, an ellipse, fits begun at either end: the turn rule below picks
+            // among those as good as the best), each moved between samples to the vertex
+            // of the parabola through its neighbours (a start half a sample off turns the
+            // fit by a few degrees, and makes the other end of an ellipse fit worse).
+            for k in 0..m {
+                let (before, here, after) = (residual[(k + m - 1) % m], residual[k], residual[(k + 1) % m]);
+                // (Begun where `to` begins: the plain fits above, unmoved.)
+                if k == 0 || here > before || here > after {
+                    continue;
+                }
+                let curve = before - 2.0 * here + after;
+                let shift = if curve > 0.0 { (0.5 * (before - after) / curve).clamp(-0.5, 0.5) } else { 0.0 };
+                let cycle = &path[..m];
+                let mut started: Vec<Point> = (0..m)
+                    .map(|i| {
+                        let at = (i + k + m) as f64 + shift;
+                        let (j, f) = (at.floor() as usize, at - at.floor());
+                        cycle[j % m].lerp(cycle[(j + 1) % m], f)
+                    })
+                    .collect();
+                started.push(started[0]);
+                fits.push((Similarity::fit(from, &started), back));
+            }
+        }
+    }
+    let best = fits.iter().map(|f| f.0 .1).fold(f64::INFINITY, f64::min);
+    let plain = fits[0].0 .1.min(fits[1].0 .1);
     let turn = |t: &Similarity| (t.a - Vec2::new(1.0, 0.0)).hypot();
-    let (t, rms, back) = fits
+    // The rank of a fit: begun as drawn and as good as the better of those (the fits of
+    // copies begun alike, as before loops were begun anywhere: a loop symmetric under a
+    // half turn, an ellipse, also fits begun half round, and a hand's wobble can make
+    // that one fit a little better), then begun anywhere and as good as the best, then
+    // the others that still pass for the same shape.
+    let rank = |k: usize, rms: f64| {
+        if k < 2 && rms <= (1.5 * plain).max(0.02 * size) {
+            0
+        } else if rms <= (1.5 * best).max(0.02 * size) {
+            1
+        } else {
+            2
+        }
+    };
+    let mut out: Vec<(Similarity, f64, bool, u8)> = fits
         .into_iter()
-        .filter(|f| f.1 <= (1.5 * best).max(0.02 * size))
-        .min_by(|x, y| turn(&x.0).total_cmp(&turn(&y.0)))?;
-    let scale = t.scale();
-    (rms <= shape * size && (1.0 / max_scale..=max_scale).contains(&scale)).then_some((t, rms / size, back))
+        .enumerate()
+        .filter(|(_, ((t, rms), _))| *rms <= shape * size && (1.0 / max_scale..=max_scale).contains(&t.scale()))
+        .map(|(k, ((t, rms), back))| (t, rms / size, back, rank(k, rms)))
+        .collect();
+    // (The smallest turn first within a rank, the closest first among the others.)
+    out.sort_by(|x, y| {
+        x.3.cmp(&y.3).then_with(|| if x.3 < 2 { turn(&x.0).total_cmp(&turn(&y.0)) } else { x.1.total_cmp(&y.1) })
+    });
+    out.into_iter().map(|(t, r, back, _)| (t, r, back)).collect()
+}
+
+/// The relation `relations` ranks first: the smallest turn among the fits as good as
+/// the best.
+pub fn relate(from: &[Point], to: &[Point], size: f64, shape: f64, max_scale: f64) -> Option<(Similarity, f64, bool)> {
+    relations(from, to, size, shape, max_scale).into_iter().next()
 }
 
 #[cfg(test)]

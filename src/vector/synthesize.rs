@@ -319,13 +319,14 @@ fn lattice_of(elems: &[Element]) -> Option<Periods> {
     find_periods(elems).ok().flatten().or_else(|| fit_lattice(elems).ok().flatten()?.periods(elems))
 }
 
-/// Whether `elems` make one straight row: evenly spaced along their principal axis
+/// Whether `elems` make one straight row of four or more (three petals of a ring lie
+/// about as evenly): evenly spaced along their principal axis
 /// (every gap within half the median gap of it) and off its line by at most a quarter
 /// of that gap. (A lattice fit reads a row into leaves along an S, which growth turns
 /// into a scatter.)
 fn straight_row(elems: &[Element]) -> bool {
     let n = elems.len();
-    if n < 3 {
+    if n < 4 {
         return false;
     }
     let mean = elems.iter().fold(Vec2::ZERO, |s, e| s + e.pos.to_vec2()) / n as f64;

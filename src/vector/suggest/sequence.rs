@@ -77,10 +77,11 @@ const RUN_PLACE: f64 = 0.15;
 /// 98% of the time).
 const BACKTEST: f64 = 2.0;
 
-/// The similarity carrying `from` onto `to`, with its residual as a share of `size`,
-/// when they are the same shape (`similarity::relate` with this module's bounds).
-fn relate(from: &[Point], to: &[Point], size: f64) -> Option<(Similarity, f64)> {
-    similarity::relate(from, to, size, SHAPE, MAX_SCALE).map(|(t, r, _)| (t, r))
+/// The similarities carrying `from` onto `to`, with their residual as a share of
+/// `size`, when they are the same shape (`similarity::relations` with this module's
+/// bounds), the smallest turn first.
+fn relations(from: &[Point], to: &[Point], size: f64) -> Vec<(Similarity, f64)> {
+    similarity::relations(from, to, size, SHAPE, MAX_SCALE).into_iter().map(|(t, r, _)| (t, r)).collect()
 }
 
 /// What is asked of a sequence.
@@ -116,9 +117,27 @@ impl Drawing<'_> {
         self.strokes[i].bounds().size().to_vec2().hypot()
     }
 
-    /// The step from copy `i` to copy `j` and its shape residual, when they are one shape.
+    /// The steps from copy `i` to copy `j` with their shape residual, when they are one
+    /// shape (more than one where the shape looks the same turned: an ellipse half round).
+    fn steps(&self, i: usize, j: usize) -> Vec<(Similarity, f64)> {
+        match (&self.sampled[i], &self.sampled[j]) {
+            (Some(a), Some(b)) => relations(a, b, self.size(i)),
+            _ => Vec::new(),
+        }
+    }
+
+    /// The step from copy `i` to copy `j`, the smallest turn where several fit.
     fn same(&self, i: usize, j: usize) -> Option<(Similarity, f64)> {
-        relate(self.sampled[i].as_ref()?, self.sampled[j].as_ref()?, self.size(i))
+        self.steps(i, j).into_iter().next()
+    }
+
+    /// The step from copy `i` to copy `j` that turns nearest `turn` (radians).
+    fn near(&self, i: usize, j: usize, turn: f64) -> Option<(Similarity, f64)> {
+        let off = |t: &Similarity| {
+            let d = (t.turn() - turn).rem_euclid(TAU);
+            d.min(TAU - d)
+        };
+        self.steps(i, j).into_iter().min_by(|x, y| off(&x.0).total_cmp(&off(&y.0)))
     }
 
     /// Where a copy is, for the orbit: the centre of its sampling (a similarity carries
@@ -158,8 +177,8 @@ fn model(d: &Drawing, run: &[usize], step: f64, fallback: [Vec2; 2], lead: Optio
     let mut relations: Vec<Relation> = hands
         .windows(2)
         .filter_map(|w| {
-            let (t, r) = d.same(run[w[0]], run[w[1]])?;
             let span = w[1] - w[0];
+            let (t, r) = d.near(run[w[0]], run[w[1]], span as f64 * expected)?;
             // (Unwrapped to the whole turns `span` steps of about the expected turn make.)
             let turn = t.turn() + TAU * ((span as f64 * expected - t.turn()) / TAU).round();
             Some(Relation { from: w[0] as i64, span, turn, scale: t.scale(), residual: r * d.size(run[w[0]]) })
@@ -167,8 +186,8 @@ fn model(d: &Drawing, run: &[usize], step: f64, fallback: [Vec2; 2], lead: Optio
         .collect();
     // (The lead-in's turn onto the run's first hand-drawn copy, for the bend only.)
     let lead_in = lead.zip(hands.first()).and_then(|((p, back), &h)| {
-        let (t, _) = d.same(p, run[h])?;
         let span = h + back;
+        let (t, _) = d.near(p, run[h], span as f64 * expected)?;
         let turn = t.turn() + TAU * ((span as f64 * expected - t.turn()) / TAU).round();
         Some(Relation { from: -(back as i64), span, turn, scale: t.scale(), residual: 0.0 })
     });
@@ -287,9 +306,22 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
     let at = chain.iter().position(|&i| i == last)?;
     let second = *chain[..at].last()?;
     let first = (chain[0]..second).rev().find(|&i| d.same(i, second).is_some())?;
-    let (one, _) = d.same(first, second)?;
-    let (two, _) = d.same(second, last)?;
     let centre = |i: usize| strokes[i].reference_point();
+    // Of the steps that fit both pairs (a loop that looks the same turned half round
+    // fits either way), the pair that agree and carry the second copy nearest the
+    // latest: the places say which way the copies turn.
+    let (one, two) = {
+        let (ones, twos) = (d.steps(first, second), d.steps(second, last));
+        let miss = |o: &Similarity, t: &Similarity| {
+            (t.a - o.a).hypot() / o.a.hypot().max(1e-9)
+                + o.carry(&strokes[second]).reference_point().distance(centre(last))
+                    / centre(second).distance(centre(last)).max(1e-9)
+        };
+        let mut pairs: Vec<(Similarity, Similarity)> =
+            ones.iter().flat_map(|o| twos.iter().map(move |t| (o.0, t.0))).collect();
+        pairs.sort_by(|x, y| miss(&x.0, &x.1).total_cmp(&miss(&y.0, &y.1)));
+        *pairs.first()?
+    };
     let step = centre(second).distance(centre(last));
     // Copies a step apart, not one drawn over another (hatching lies a tenth of its
     // length apart, or closer).
@@ -316,7 +348,8 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
         let cur = *run.last()?;
         let gap = centre(p).distance(centre(cur));
         let near = (0.5 * step..=2.0 * step).contains(&gap);
-        let linked = d.same(p, cur).is_some_and(|(t, _)| (t.a - mean).hypot() <= FOLLOW_TURN * mean.hypot());
+        let linked =
+            d.near(p, cur, mean.atan2()).is_some_and(|(t, _)| (t.a - mean).hypot() <= FOLLOW_TURN * mean.hypot());
         if !linked || !near || run.iter().filter(|&&i| d.hand(i)).count() >= MAX_RUN {
             cut = (near && !linked).then_some(k);
             break;
