@@ -110,6 +110,13 @@ fn components(strokes: &[Stroke], tol: &Tolerances) -> Vec<u32> {
     for (i, e) in ends.iter().enumerate() {
         grid.entry(key(e.0)).or_default().push(i as u32);
     }
+    // Closed loops are matched from any start (see `Shape::starts`): filed by their
+    // extents as well, which two loops within the tolerance share within it.
+    let mut loops: HashMap<(i64, i64), Vec<u32>> = HashMap::new();
+    let extent = |m: usize| prepared.shapes[m].half_extent.to_point();
+    for m in (0..n).filter(|&m| prepared.shapes[m].closed) {
+        loops.entry(key(extent(m))).or_default().push(m as u32);
+    }
     let mut class = vec![u32::MAX; n];
     let mut next = 0u32;
     for seed in 0..n {
@@ -119,13 +126,18 @@ fn components(strokes: &[Stroke], tol: &Tolerances) -> Vec<u32> {
         class[seed] = next;
         let mut queue = vec![seed];
         while let Some(m) = queue.pop() {
-            for end in [ends[m].0, ends[m].1] {
-                let (cx, cy) = key(end);
+            let closed = prepared.shapes[m].closed;
+            for (in_loops, at) in
+                [(false, Some(ends[m].0)), (false, Some(ends[m].1)), (true, closed.then(|| extent(m)))]
+            {
+                let Some(at) = at else { continue };
+                let index = if in_loops { &mut loops } else { &mut grid };
+                let (cx, cy) = key(at);
                 for k in [(cx - 1, cy - 1), (cx, cy - 1), (cx + 1, cy - 1), (cx - 1, cy), (cx, cy), (cx + 1, cy)]
                     .into_iter()
                     .chain([(cx - 1, cy + 1), (cx, cy + 1), (cx + 1, cy + 1)])
                 {
-                    let Some(near) = grid.get_mut(&k) else { continue };
+                    let Some(near) = index.get_mut(&k) else { continue };
                     // Classified strokes leave the grid as their cells are visited.
                     near.retain(|&s| class[s as usize] == u32::MAX);
                     for &s in near.iter() {

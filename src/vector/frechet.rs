@@ -17,6 +17,9 @@ pub struct Shape {
     pub half_extent: Vec2,
     /// A digest of `points`, under which distances are remembered (see `MEMO`).
     key: u64,
+    /// A closed loop (its ends within two sample steps): compared from its best start
+    /// too (see `Shape::starts`).
+    pub closed: bool,
 }
 
 /// Distances already measured, by the two shapes' digests. Autocomplete classifies the
@@ -53,7 +56,10 @@ impl Shape {
         let centre = lo.midpoint(hi);
         let rel: Vec<Point> = pts.iter().map(|p| (*p - centre).to_point()).collect();
         let points = resample(&rel, spacing);
-        Shape { key: digest(&points), points, half_extent: (hi - lo) * 0.5 }
+        let n = points.len();
+        let len: f64 = points.windows(2).map(|w| w[0].distance(w[1])).sum();
+        let closed = n >= 6 && points[0].distance(points[n - 1]) <= 2.0 * len / (n - 1) as f64;
+        Shape { key: digest(&points), points, half_extent: (hi - lo) * 0.5, closed }
     }
 
     /// A lower bound on the Fréchet distance: the extreme points in each direction must
@@ -68,7 +74,54 @@ impl Shape {
         if self.extent_bound(other) >= eps {
             return false;
         }
-        decide(&self.points, &other.points, eps, false) || decide(&self.points, &other.points, eps, true)
+        decide(&self.points, &other.points, eps, false)
+            || decide(&self.points, &other.points, eps, true)
+            || self.starts(other).iter().any(|(q, rms)| *rms < eps && decide(&self.points, q, eps, false))
+    }
+
+    /// Two closed loops: `other` started where it best matches `self`'s start, each
+    /// way round (where that is not where it starts already), with the root mean square
+    /// distance of the points so paired. A hand starts each copy
+    /// of a loop wherever the pen lands, and the discrete distance pairs the two starts:
+    /// a circle begun a quarter of the way round measured a radius and a half off. The
+    /// best start minimises the sum of square distances between the loops' points
+    /// paired in order (both centred on their bounding boxes).
+    fn starts(&self, other: &Shape) -> Vec<(Vec<Point>, f64)> {
+        if !(self.closed && other.closed) {
+            return Vec::new();
+        }
+        let (p, n, m) = (&self.points, self.points.len() - 1, other.points.len() - 1);
+        let mut out = Vec::new();
+        for reversed in [false, true] {
+            // (Read backwards from its first point: begun there, it is `other` reversed.)
+            let cycle: Vec<Point> = (0..m).map(|j| other.points[if reversed { (m - j) % m } else { j }]).collect();
+            // The square distances of the points paired in order from start `k`, on
+            // every `stride`-th point (the cycle twice over: no remainder per point).
+            let twice: Vec<Point> = cycle.iter().chain(&cycle).copied().collect();
+            let paired: Vec<usize> = (0..n).map(|i| i * m / n).collect();
+            let cost = |k: usize, stride: usize| -> f64 {
+                paired
+                    .iter()
+                    .step_by(stride)
+                    .zip(p.iter().step_by(stride))
+                    .map(|(&j, pi)| pi.distance_squared(twice[j + k]))
+                    .sum()
+            };
+            // Every fourth start on every fourth point, then the best's neighbours on all
+            // (a loop's cost changes slowly with its start: about a fifth of the time of
+            // one distance, where every start on every point took twice that).
+            let coarse = (0..m).step_by(4).map(|k| (k, cost(k, 4))).min_by(|x, y| x.1.total_cmp(&y.1));
+            let Some((coarse, _)) = coarse else { continue };
+            let near = (coarse + m - 3..=coarse + m + 3).map(|k| k % m);
+            let Some((k, c)) = near.map(|k| (k, cost(k, 1))).min_by(|x, y| x.1.total_cmp(&y.1)) else { continue };
+            // (Begun where `other` begins: measured already.)
+            if k != 0 {
+                let mut q: Vec<Point> = cycle[k..].iter().chain(&cycle[..k]).copied().collect();
+                q.push(q[0]);
+                out.push((q, (c / n as f64).sqrt()));
+            }
+        }
+        out
     }
 
     /// The discrete Fréchet distance (smaller of the two directions). The direction
@@ -100,11 +153,20 @@ impl Shape {
             p0.distance(a).max(pn.distance(b))
         };
         let first = ends(true) < ends(false);
-        let best = value(p, q, first, f64::INFINITY);
-        if ends(!first) >= best {
-            return best;
+        let mut best = value(p, q, first, f64::INFINITY);
+        if ends(!first) < best {
+            best = best.min(value(p, q, !first, best));
         }
-        best.min(value(p, q, !first, best))
+        for (started, rms) in self.starts(other) {
+            // (Its first points must be paired: no nearer than they are. And a start
+            // whose points pair, in order, at a root mean square of 0.3 of the distance
+            // from the loops' own starts or more, is not where the same loop was begun:
+            // two petals turned apart, which differ anyway.)
+            if p[0].distance(started[0]) < best && rms < 0.3 * best {
+                best = best.min(value(p, &started, false, best));
+            }
+        }
+        best
     }
 }
 

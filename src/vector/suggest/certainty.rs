@@ -113,11 +113,22 @@ impl Fit {
     }
 }
 
+/// Whether a stroke closes on itself (its ends within a tenth of its size): a loop.
+fn closed(s: &Stroke) -> bool {
+    match (s.points.first(), s.points.last()) {
+        (Some(p), Some(q)) if s.points.len() > 3 => {
+            Vec2::new(p[0] - q[0], p[1] - q[1]).hypot() <= 0.1 * s.bounds().size().to_vec2().hypot()
+        }
+        _ => false,
+    }
+}
+
 /// How far a hand's copy strays from where it means to put it, as the drawing shows it
 /// before its repetition does: the mean square difference, between consecutive
 /// hand-drawn strokes of one class, of their ends' offsets from their reference
-/// points (either way round), halved. Exact copies give 0; a hand that wobbles its
-/// strokes' ends by `e` gives about `e^2`, and places its copies about as loosely.
+/// points (either way round), halved (of loops begun at different places, which end
+/// wherever the pen landed, their boxes' corners). Exact copies give 0; a hand that wobbles its strokes' ends
+/// by `e` gives about `e^2`, and places its copies about as loosely.
 pub(super) fn hand_scatter(strokes: &[Stroke], classes: &[u32], accepted: &[bool]) -> f64 {
     let ends = |s: &Stroke| {
         let r = s.reference_point().to_vec2();
@@ -131,10 +142,19 @@ pub(super) fn hand_scatter(strokes: &[Stroke], classes: &[u32], accepted: &[bool
             continue;
         }
         if let Some(j) = last[c as usize] {
-            let ((a0, a1), (b0, b1)) = (ends(&strokes[i]), ends(&strokes[j]));
+            let (a, b) = (&strokes[i], &strokes[j]);
+            let ((a0, a1), (b0, b1)) = (ends(a), ends(b));
             let same = (a0 - b0).hypot2() + (a1 - b1).hypot2();
             let reversed = (a0 - b1).hypot2() + (a1 - b0).hypot2();
-            sum += same.min(reversed) / 4.0;
+            let size = a.bounds().size().to_vec2().hypot();
+            sum += if closed(a) && closed(b) && same.min(reversed) > (0.25 * size).powi(2) {
+                // (Loops begun at different places: their ends say where the pen landed,
+                // their boxes' corners how the hand wobbled.)
+                let (ea, eb) = (a.bounds().size().to_vec2(), b.bounds().size().to_vec2());
+                2.0 * ((ea - eb) * 0.5).hypot2() / 4.0
+            } else {
+                same.min(reversed) / 4.0
+            };
             count += 1;
         }
         last[c as usize] = Some(i);
