@@ -90,8 +90,9 @@ export interface TextureOptions extends TextureBase {
    *  pixel is kept out; with several exemplars an array of one mask (or null) per exemplar. */
   sampleMask?: Mask | (Mask | null)[];
   /** Guide images: the output follows `target`'s light and dark where the exemplar's
-   *  own guide has them (luminance compared beside the colours; `weight` 1, the default,
-   *  counts it as much as all three colour channels). `exemplar`: one per exemplar. */
+   *  own guide has them (luminance compared beside the colours; `weight` 1 counts it as
+   *  much as all three colour channels, 2, the default, twice). `exemplar`: one per
+   *  exemplar. */
   guides?: Guides;
   /** Also return the layout: which exemplar pixel each output pixel came from. */
   keepLayout?: boolean;

@@ -109,7 +109,7 @@ pub fn guides(v: &JsValue, exemplars: usize, output: (usize, usize)) -> Result<O
         )));
     }
     let weight = match get("weight")? {
-        w if w.is_undefined() => 1.0,
+        w if w.is_undefined() => raster::guide::GUIDE_WEIGHT,
         w => match w.as_f64() {
             Some(x) if x.is_finite() && x >= 0.0 => x as f32,
             _ => return Err(error("guides.weight must be a number of at least 0.")),
