@@ -6,20 +6,8 @@
 //! begun alike. `cargo run --release --example loop_starts`
 use patternsynth::rng::Rng;
 use patternsynth::vector::replay::replay_each;
-use patternsynth::vector::sequences::sequences;
+use patternsynth::vector::sequences::{begun_at, sequences};
 use patternsynth::vector::Stroke;
-
-/// A closed loop rebegun `k` points round, read backwards when asked.
-fn started_at(s: &Stroke, k: usize, backwards: bool) -> Stroke {
-    let cycle = &s.points[..s.points.len() - 1];
-    let k = k % cycle.len();
-    let mut pts: Vec<[f64; 2]> = cycle[k..].iter().chain(&cycle[..k]).copied().collect();
-    if backwards {
-        pts.reverse();
-    }
-    pts.push(pts[0]);
-    Stroke { points: pts, ..s.clone() }
-}
 
 fn main() {
     println!("| family | wobble | begun alike: accepted, wrong/shown | begun anywhere: accepted, wrong/shown |");
@@ -35,7 +23,7 @@ fn main() {
                     let q = sequences(wobble, seed).into_iter().find(|q| q.name == name).unwrap();
                     let mut rng = Rng::new(seed + 40);
                     let strokes: Vec<Stroke> = if anywhere {
-                        q.strokes.iter().map(|s| started_at(s, rng.below(24), rng.below(2) == 1)).collect()
+                        q.strokes.iter().map(|s| begun_at(s, rng.below(24), rng.below(2) == 1)).collect()
                     } else {
                         q.strokes.clone()
                     };

@@ -2,6 +2,7 @@
 //! `suggest_strokes`; the figures are in `cargo run --release --example replay_suggest`.
 use patternsynth::vector::exemplar::{family_list, freehand_sketch, irregular_dashes};
 use patternsynth::vector::replay::{replay, replay_each};
+use patternsynth::vector::sequences::{begun_at, circle_grid};
 use patternsynth::vector::{suggest_strokes, Stroke, SuggestOptions};
 
 fn replayed(name: &str, jitter: f64) -> (patternsynth::vector::replay::Replay, usize) {
@@ -255,18 +256,6 @@ fn a_finished_ring_is_reported_complete() {
     }
 }
 
-/// A closed loop rebegun `k` points round (its closing point moved with it), and read
-/// backwards when asked: the same petal, started wherever the pen landed.
-fn started_at(s: &Stroke, k: usize, backwards: bool) -> Stroke {
-    let cycle = &s.points[..s.points.len() - 1];
-    let mut pts: Vec<[f64; 2]> = cycle[k % cycle.len()..].iter().chain(&cycle[..k % cycle.len()]).copied().collect();
-    if backwards {
-        pts.reverse();
-    }
-    pts.push(pts[0]);
-    Stroke { points: pts, ..s.clone() }
-}
-
 /// Petals and leaves begun anywhere round their loop, either way round (issue 27: a
 /// hand starts each copy where the pen lands, and only petals begun alike got ghosts):
 /// rings of 5-12 and leaves along an arc at 1% and 3%, seeds 1-3, each loop rebegun at
@@ -285,7 +274,7 @@ fn loops_begun_anywhere_are_carried_on() {
                 .filter(|q| q.name.starts_with("ring") || q.name == "leaves on an arc");
             for (k, q) in families.enumerate() {
                 let strokes: Vec<Stroke> =
-                    q.strokes.iter().map(|s| started_at(s, rng.below(24), rng.below(2) == 1)).collect();
+                    q.strokes.iter().map(|s| begun_at(s, rng.below(24), rng.below(2) == 1)).collect();
                 let tol: Vec<f64> = q.steps.iter().map(|s| 0.3 * s).collect();
                 let past: Vec<_> = q.beyond.iter().map(|(b, step)| (b.clone(), 0.3 * step)).collect();
                 let r = replay_each(&strokes, &vec![0; strokes.len()], q.canvas, &tol, &past);
@@ -305,19 +294,6 @@ fn loops_begun_anywhere_are_carried_on() {
     }
 }
 
-/// A circle of radius `r` at `(x, y)` begun at angle `start`, drawn either way round,
-/// 24 points and its first again, each point off by `noise`.
-fn circle(x: f64, y: f64, r: f64, start: f64, dir: f64, rng: &mut patternsynth::rng::Rng, noise: f64) -> Stroke {
-    let mut pts: Vec<[f64; 2]> = (0..24)
-        .map(|k| {
-            let t = start + dir * k as f64 / 24.0 * std::f64::consts::TAU;
-            [x + r * t.cos() + rng.normal() * noise, y + r * t.sin() + rng.normal() * noise]
-        })
-        .collect();
-    pts.push(pts[0]);
-    Stroke::new(pts, 2.0, None)
-}
-
 /// Circles on a grid, each begun at a random point of its outline and drawn either way
 /// round (issue 27's trial: a grid of circles begun anywhere got no ghost, and
 /// synthesis read no lattice): at 1% and 3% of the spacing, seeds 1-3, at least 70% of
@@ -330,18 +306,7 @@ fn circles_begun_anywhere_make_a_lattice() {
     for wobble in [0.01, 0.03] {
         let (mut accepted, mut wrong, mut shown) = (0.0, 0, 0);
         for seed in 1..=3 {
-            let mut rng = patternsynth::rng::Rng::new(seed);
-            let mut strokes = Vec::new();
-            for j in 0..4 {
-                for i in 0..6 {
-                    let (x, y) = (40.0 + spacing * i as f64, 40.0 + spacing * j as f64);
-                    let (jx, jy) = (rng.normal() * wobble * spacing, rng.normal() * wobble * spacing);
-                    let start = rng.below(360) as f64 / 360.0 * std::f64::consts::TAU;
-                    let dir = if rng.below(2) == 0 { 1.0 } else { -1.0 };
-                    strokes.push(circle(x + jx, y + jy, 18.0, start, dir, &mut rng, 0.2 * wobble * spacing));
-                }
-            }
-            let canvas = kurbo::Rect::new(10.0, 10.0, 40.0 + spacing * 5.5, 40.0 + spacing * 3.5);
+            let (strokes, canvas) = circle_grid(wobble, seed, true);
             let r = replay(&strokes, &vec![0; strokes.len()], canvas, 0.3 * spacing);
             accepted += r.accepted_after(2) / 3.0;
             wrong += r.wrong;

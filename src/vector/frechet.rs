@@ -76,7 +76,9 @@ impl Shape {
         }
         decide(&self.points, &other.points, eps, false)
             || decide(&self.points, &other.points, eps, true)
-            || self.starts(other).iter().any(|(q, rms)| *rms < eps && decide(&self.points, q, eps, false))
+            // (Two loops: their distance from every start, remembered, so that the
+            // drawing classified again after every stroke compares each pair once.)
+            || (self.closed && other.closed && self.distance(other) < eps)
     }
 
     /// Two closed loops: `other` started where it best matches `self`'s start, each

@@ -55,6 +55,55 @@ fn line(at: Point, theta: f64, len: f64, rng: &mut Rng, noise: f64) -> Stroke {
     Stroke::new(pts, 2.0, None)
 }
 
+/// A closed loop begun `k` points further round (its closing point moved with it), and
+/// read backwards when asked: the same loop, begun wherever the pen landed.
+pub fn begun_at(s: &Stroke, k: usize, backwards: bool) -> Stroke {
+    let cycle = &s.points[..s.points.len() - 1];
+    let k = k % cycle.len().max(1);
+    let mut points: Vec<[f64; 2]> = cycle[k..].iter().chain(&cycle[..k]).copied().collect();
+    if backwards {
+        points.reverse();
+    }
+    points.push(points[0]);
+    Stroke { points, ..s.clone() }
+}
+
+/// A circle of radius `r` round `at`, begun at angle `start` and drawn either way round
+/// (`dir` 1 or -1): 24 points and its first again, each off by `noise`.
+pub fn circle(at: Point, r: f64, start: f64, dir: f64, rng: &mut Rng, noise: f64) -> Stroke {
+    let mut pts: Vec<[f64; 2]> = (0..24)
+        .map(|k| {
+            let t = start + dir * k as f64 / 24.0 * TAU;
+            [at.x + r * t.cos() + rng.normal() * noise, at.y + r * t.sin() + rng.normal() * noise]
+        })
+        .collect();
+    pts.push(pts[0]);
+    Stroke::new(pts, 2.0, None)
+}
+
+/// A grid of 6 x 4 circles of radius 18, 60 apart from (40, 40), drawn row by row, each
+/// off its site by `wobble` of the spacing (its points by a fifth of that); begun at
+/// angle 0 and drawn one way, or `anywhere`: at a random point, either way round. With
+/// the canvas the grid's sites and half a spacing round them.
+pub fn circle_grid(wobble: f64, seed: u64, anywhere: bool) -> (Vec<Stroke>, kurbo::Rect) {
+    let spacing = 60.0;
+    let mut rng = Rng::new(seed);
+    let mut strokes = Vec::new();
+    for j in 0..4 {
+        for i in 0..6 {
+            let site = Point::new(40.0 + spacing * i as f64, 40.0 + spacing * j as f64);
+            let jitter = Vec2::new(rng.normal(), rng.normal()) * (wobble * spacing);
+            let (start, dir) = if anywhere {
+                (rng.below(360) as f64 / 360.0 * TAU, if rng.below(2) == 0 { 1.0 } else { -1.0 })
+            } else {
+                (0.0, 1.0)
+            };
+            strokes.push(circle(site + jitter, 18.0, start, dir, &mut rng, 0.2 * wobble * spacing));
+        }
+    }
+    (strokes, kurbo::Rect::new(10.0, 10.0, 40.0 + spacing * 5.5, 40.0 + spacing * 3.5))
+}
+
 /// Every family at `wobble` (share of the step), seeded.
 pub fn sequences(wobble: f64, seed: u64) -> Vec<Sequence> {
     let mut out = Vec::new();
