@@ -8,8 +8,9 @@ import { mkdirSync } from 'node:fs';
 import { openPlayground } from './harness.mjs';
 
 /** Draws a petal with the mouse: a loop 110 long from the centre (400, 250) of the
- *  800 x 500 canvas along `theta`, its points wobbling by `wobble` across. */
-async function drawPetal(page, theta, wobble, phase = 0) {
+ *  800 x 500 canvas along `theta`, its points wobbling by `wobble` across; begun `begin`
+ *  points of 28 round from its base, and drawn the other way round when `backwards`. */
+async function drawPetal(page, theta, wobble, phase = 0, begin = 0, backwards = false) {
   const box = await page.locator('#draw').boundingBox();
   const at = (x, y) => [box.x + (x * box.width) / 800, box.y + (y * box.height) / 500];
   const pts = [];
@@ -17,6 +18,12 @@ async function drawPetal(page, theta, wobble, phase = 0) {
     const t = (k / 28) * 2 * Math.PI;
     const along = 55 * (1 - Math.cos(t)), across = 18 * Math.sin(t) + ((k + phase) % 3 - 1) * wobble;
     pts.push([400 + along * Math.cos(theta) - across * Math.sin(theta), 250 + along * Math.sin(theta) + across * Math.cos(theta)]);
+  }
+  if (begin || backwards) {
+    const loop = pts.slice(0, 28);
+    const turned = [...loop.slice(begin), ...loop.slice(0, begin)];
+    if (backwards) turned.reverse();
+    pts.splice(0, pts.length, ...turned, turned[0]);
   }
   await page.mouse.move(...at(...pts[0]));
   await page.mouse.down();
@@ -59,6 +66,41 @@ test('three petals drawn around a centre: ghosts complete the ring, Tab accepts,
     for (const [x, y] of centres) assert.ok(Math.abs(Math.hypot(x - 400, y - 250) - 55) < 8, `${x}, ${y}`);
     await page.click('#undo');
     assert.ok((await count()) < 8, 'undo takes the accepted petals back');
+  } finally {
+    await close();
+  }
+});
+
+test('petals begun anywhere on their outline, one drawn the other way round, are completed too', async () => {
+  mkdirSync('out', { recursive: true });
+  const { page, close } = await openPlayground({ height: 1000 });
+  try {
+    await page.waitForFunction(() => /[1-9]\d* strokes/.test(document.querySelector('#stroke-count').textContent));
+    await page.click('#clear');
+    const settled = () => page.waitForFunction(() => document.querySelector('#suggest-status').getAttribute('aria-busy') === 'false', null, { timeout: 15000 });
+    const count = async () => Number((await page.textContent('#stroke-count')).split(' ')[0]);
+    const step = (2 * Math.PI) / 8;
+    // Begun at the base, a third of the way round, and near the tip drawn backwards.
+    for (const [k, begin, backwards] of [[0, 0, false], [1, 9, false], [2, 17, true]]) await drawPetal(page, k * step, 0.6, k, begin, backwards);
+    await settled();
+    const status = await page.textContent('#suggest-status');
+    assert.match(status, /^[1-9]\d* suggested stroke/, status);
+    await page.screenshot({ path: 'out/ring-begun-anywhere.png' });
+    let before = await count();
+    for (const key of ['Tab', 'Enter', 'Enter', 'Enter']) {
+      await page.keyboard.press(key);
+      await page.waitForFunction((n) => Number(document.querySelector('#stroke-count').textContent.split(' ')[0]) > n, before);
+      before = await count();
+      await settled();
+      if (!/suggested stroke/.test(await page.textContent('#suggest-status'))) break;
+    }
+    assert.equal(await count(), 8, 'the ring of eight is complete');
+    const centres = await page.evaluate(() => window.playground.drawing().strokes.map((s) => {
+      const xs = s.points.map((p) => p[0]), ys = s.points.map((p) => p[1]);
+      return [(Math.min(...xs) + Math.max(...xs)) / 2, (Math.min(...ys) + Math.max(...ys)) / 2];
+    }));
+    for (const [x, y] of centres) assert.ok(Math.abs(Math.hypot(x - 400, y - 250) - 55) < 8, `${x}, ${y}`);
+    await page.screenshot({ path: 'out/ring-begun-anywhere-accepted.png' });
   } finally {
     await close();
   }
