@@ -5,7 +5,6 @@
 //! after three copies and the wrong ghosts over those shown, beside the same drawings
 //! begun alike. `cargo run --release --example loop_starts`
 use patternsynth::rng::Rng;
-use patternsynth::vector::replay::replay_each;
 use patternsynth::vector::sequences::{begun_at, sequences};
 use patternsynth::vector::Stroke;
 
@@ -27,9 +26,7 @@ fn main() {
                     } else {
                         q.strokes.clone()
                     };
-                    let tol: Vec<f64> = q.steps.iter().map(|s| 0.3 * s).collect();
-                    let past: Vec<_> = q.beyond.iter().map(|(b, step)| (b.clone(), 0.3 * step)).collect();
-                    let r = replay_each(&strokes, &vec![0; strokes.len()], q.canvas, &tol, &past);
+                    let r = q.replay(&strokes);
                     acc += r.accepted_after(3) / 3.0;
                     wrong += r.wrong;
                     shown += r.shown;

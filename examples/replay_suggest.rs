@@ -4,7 +4,7 @@
 //! where nothing should be proposed. `cargo run --release --example replay_suggest
 //! [jitter]` (jitter as a fraction of the spacing, default 0.03).
 use patternsynth::vector::exemplar::{family_list, freehand_sketch, irregular_dashes};
-use patternsynth::vector::replay::{replay, replay_each};
+use patternsynth::vector::replay::replay;
 use patternsynth::vector::{suggest_strokes, SuggestOptions};
 
 fn main() {
@@ -87,10 +87,7 @@ fn main() {
             let svg = format!("<svg xmlns='http://www.w3.org/2000/svg' width='600' height='600'>{lines}</svg>");
             std::fs::write(format!("{dir}/{}.svg", q.name.replace(' ', "-")), svg).unwrap();
         }
-        let classes = vec![0; q.strokes.len()];
-        let tol: Vec<f64> = q.steps.iter().map(|s| 0.3 * s).collect();
-        let past: Vec<_> = q.beyond.iter().map(|(b, step)| (b.clone(), 0.3 * step)).collect();
-        let r = replay_each(&q.strokes, &classes, q.canvas, &tol, &past);
+        let r = q.replay(&q.strokes);
         println!(
             "| {} | {} | {} | {} | {:.1}% | {} | {} ({:.1}%) | {:.2} | {:.2} |",
             q.name,

@@ -1,7 +1,7 @@
 //! Autocomplete (issue 10): drawing sessions replayed stroke by stroke through
 //! `suggest_strokes`; the figures are in `cargo run --release --example replay_suggest`.
 use patternsynth::vector::exemplar::{family_list, freehand_sketch, irregular_dashes};
-use patternsynth::vector::replay::{replay, replay_each};
+use patternsynth::vector::replay::replay;
 use patternsynth::vector::sequences::{begun_at, circle_grid};
 use patternsynth::vector::{suggest_strokes, Stroke, SuggestOptions};
 
@@ -187,10 +187,7 @@ fn rings_spirals_arcs_and_hatching_are_carried_on_by_their_step() {
         let mut accepted: Vec<(String, f64)> = Vec::new();
         for seed in 1..=3 {
             for (k, q) in patternsynth::vector::sequences::sequences(wobble, seed).into_iter().enumerate() {
-                let classes = vec![0; q.strokes.len()];
-                let tol: Vec<f64> = q.steps.iter().map(|s| 0.3 * s).collect();
-                let past: Vec<_> = q.beyond.iter().map(|(b, step)| (b.clone(), 0.3 * step)).collect();
-                let r = replay_each(&q.strokes, &classes, q.canvas, &tol, &past);
+                let r = q.replay(&q.strokes);
                 wrong += r.wrong;
                 shown += r.shown;
                 if seed == 1 {
@@ -247,8 +244,7 @@ fn a_finished_ring_is_reported_complete() {
                 if !q.name.starts_with("ring") {
                     continue;
                 }
-                let tol: Vec<f64> = q.steps.iter().map(|s| 0.3 * s).collect();
-                let r = replay_each(&q.strokes, &vec![0; q.strokes.len()], q.canvas, &tol, &[]);
+                let r = q.replay(&q.strokes);
                 let said = r.end_reason.unwrap_or_default();
                 assert!(said.contains("ring is complete"), "{} at {wobble}, seed {seed}: {said:?}", q.name);
             }
@@ -275,9 +271,7 @@ fn loops_begun_anywhere_are_carried_on() {
             for (k, q) in families.enumerate() {
                 let strokes: Vec<Stroke> =
                     q.strokes.iter().map(|s| begun_at(s, rng.below(24), rng.below(2) == 1)).collect();
-                let tol: Vec<f64> = q.steps.iter().map(|s| 0.3 * s).collect();
-                let past: Vec<_> = q.beyond.iter().map(|(b, step)| (b.clone(), 0.3 * step)).collect();
-                let r = replay_each(&strokes, &vec![0; strokes.len()], q.canvas, &tol, &past);
+                let r = q.replay(&strokes);
                 if seed == 1 {
                     accepted.push((q.name.clone(), 0.0));
                 }

@@ -41,6 +41,17 @@ fn digest(points: &[Point]) -> u64 {
         .fold(0xcbf2_9ce4_8422_2325u64, |h, v| (h ^ v).wrapping_mul(0x0000_0100_0000_01b3))
 }
 
+/// Whether a path resampled at equal steps closes on itself: its ends within two steps
+/// of each other (a loop, begun wherever the pen landed), with six samples or more.
+pub(crate) fn closed_loop(points: &[Point]) -> bool {
+    let n = points.len();
+    if n < 6 {
+        return false;
+    }
+    let len: f64 = points.windows(2).map(|w| w[0].distance(w[1])).sum();
+    points[0].distance(points[n - 1]) <= 2.0 * len / (n - 1) as f64
+}
+
 /// At most this many samples per shape: keeps one comparison at a few thousand steps.
 pub const MAX_SAMPLES: usize = 64;
 
@@ -56,10 +67,7 @@ impl Shape {
         let centre = lo.midpoint(hi);
         let rel: Vec<Point> = pts.iter().map(|p| (*p - centre).to_point()).collect();
         let points = resample(&rel, spacing);
-        let n = points.len();
-        let len: f64 = points.windows(2).map(|w| w[0].distance(w[1])).sum();
-        let closed = n >= 6 && points[0].distance(points[n - 1]) <= 2.0 * len / (n - 1) as f64;
-        Shape { key: digest(&points), points, half_extent: (hi - lo) * 0.5, closed }
+        Shape { key: digest(&points), closed: closed_loop(&points), points, half_extent: (hi - lo) * 0.5 }
     }
 
     /// A lower bound on the Fréchet distance: the extreme points in each direction must
@@ -94,13 +102,14 @@ impl Shape {
         }
         let (p, n, m) = (&self.points, self.points.len() - 1, other.points.len() - 1);
         let mut out = Vec::new();
+        // (Each point of `self` paired with the point as far round `other`.)
+        let paired: Vec<usize> = (0..n).map(|i| i * m / n).collect();
         for reversed in [false, true] {
             // (Read backwards from its first point: begun there, it is `other` reversed.)
             let cycle: Vec<Point> = (0..m).map(|j| other.points[if reversed { (m - j) % m } else { j }]).collect();
             // The square distances of the points paired in order from start `k`, on
             // every `stride`-th point (the cycle twice over: no remainder per point).
             let twice: Vec<Point> = cycle.iter().chain(&cycle).copied().collect();
-            let paired: Vec<usize> = (0..n).map(|i| i * m / n).collect();
             let cost = |k: usize, stride: usize| -> f64 {
                 paired
                     .iter()

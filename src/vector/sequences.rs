@@ -4,6 +4,7 @@
 //! of the one before only locally), drawn copy by copy with a wobble
 //! (each copy's place off by `wobble` of the step, its points by a fifth of that).
 
+use super::replay::{replay_each, Replay};
 use super::stroke::Stroke;
 use crate::rng::Rng;
 use kurbo::{Point, Vec2};
@@ -24,6 +25,17 @@ pub struct Sequence {
     /// though not among the strokes to draw. Each with its step.
     pub beyond: Vec<(Stroke, f64)>,
     pub canvas: kurbo::Rect,
+}
+
+impl Sequence {
+    /// `strokes` (the sequence's own, or them drawn otherwise, one class) replayed
+    /// through autocomplete stroke by stroke (`replay::replay_each`): a ghost is right
+    /// within 0.3 of the step at its copy, or at a copy past the end.
+    pub fn replay(&self, strokes: &[Stroke]) -> Replay {
+        let tol: Vec<f64> = self.steps.iter().map(|s| 0.3 * s).collect();
+        let past: Vec<_> = self.beyond.iter().map(|(b, step)| (b.clone(), 0.3 * step)).collect();
+        replay_each(strokes, &vec![0; strokes.len()], self.canvas, &tol, &past)
+    }
 }
 
 /// Copies generated past the end of an open sequence (see `Sequence::beyond`).

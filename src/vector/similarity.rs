@@ -8,7 +8,7 @@
 //! length, and the least-squares similarity between two such samplings (either way
 //! round) is the relation between the copies, its residual how far they differ.
 
-use super::frechet::resample_count;
+use super::frechet::{closed_loop, resample_count};
 use super::stroke::Stroke;
 use kurbo::{Point, Vec2};
 
@@ -109,16 +109,6 @@ pub fn centroid(s: &[Point]) -> Point {
     (s.iter().fold(Vec2::ZERO, |m, p| m + p.to_vec2()) / s.len().max(1) as f64).to_point()
 }
 
-/// Whether a sampling is a closed loop: its ends within two sample steps of each other.
-fn closed(s: &[Point]) -> bool {
-    let n = s.len();
-    if n < 6 {
-        return false;
-    }
-    let len: f64 = s.windows(2).map(|w| w[0].distance(w[1])).sum();
-    s[0].distance(s[n - 1]) <= 2.0 * len / (n - 1) as f64
-}
-
 /// The similarities carrying `from` onto `to` (either way round along `to`), with their
 /// residual as a share of `size`, when they are the same shape: the residual at most
 /// `shape` of `size` and the scale within `1 / max_scale ..= max_scale`. A shape that
@@ -140,7 +130,7 @@ pub fn relations(from: &[Point], to: &[Point], size: f64, shape: f64, max_scale:
     }
     let reversed: Vec<Point> = to.iter().rev().copied().collect();
     let mut fits = vec![(Similarity::fit(from, to), false), (Similarity::fit(from, &reversed), true)];
-    if closed(from) && closed(to) {
+    if closed_loop(from) && closed_loop(to) {
         let m = from.len() - 1;
         let centred = |s: &[Point]| -> Vec<Vec2> {
             let c = s[..m].iter().fold(Vec2::ZERO, |a, p| a + p.to_vec2()) / m as f64;

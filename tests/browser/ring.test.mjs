@@ -31,41 +31,48 @@ async function drawPetal(page, theta, wobble, phase = 0, begin = 0, backwards = 
   await page.mouse.up();
 }
 
+/** Waits for the ghosts' request to settle. */
+const settled = (page) => page.waitForFunction(() => document.querySelector('#suggest-status').getAttribute('aria-busy') === 'false', null, { timeout: 15000 });
+const strokeCount = async (page) => Number((await page.textContent('#stroke-count')).split(' ')[0]);
+
+/** Accepts ghosts (Tab just after drawing, then Enter on the canvas) until none are
+ *  left, and checks that eight petals lie on the ring (each centre about 55 units from
+ *  (400, 250)). */
+async function acceptTheRing(page) {
+  let before = await strokeCount(page);
+  for (const key of ['Tab', 'Enter', 'Enter', 'Enter']) {
+    await page.keyboard.press(key);
+    await page.waitForFunction((n) => Number(document.querySelector('#stroke-count').textContent.split(' ')[0]) > n, before);
+    before = await strokeCount(page);
+    await settled(page);
+    if (!/suggested stroke/.test(await page.textContent('#suggest-status'))) break;
+  }
+  assert.equal(await strokeCount(page), 8, 'the ring of eight is complete');
+  const centres = await page.evaluate(() => window.playground.drawing().strokes.map((s) => {
+    const xs = s.points.map((p) => p[0]), ys = s.points.map((p) => p[1]);
+    return [(Math.min(...xs) + Math.max(...xs)) / 2, (Math.min(...ys) + Math.max(...ys)) / 2];
+  }));
+  for (const [x, y] of centres) assert.ok(Math.abs(Math.hypot(x - 400, y - 250) - 55) < 8, `${x}, ${y}`);
+}
+
 test('three petals drawn around a centre: ghosts complete the ring, Tab accepts, undo takes them back', async () => {
   mkdirSync('out', { recursive: true });
   const { page, close } = await openPlayground({ height: 1000 });
   try {
     await page.waitForFunction(() => /[1-9]\d* strokes/.test(document.querySelector('#stroke-count').textContent));
     await page.click('#clear');
-    const settled = () => page.waitForFunction(() => document.querySelector('#suggest-status').getAttribute('aria-busy') === 'false', null, { timeout: 15000 });
-    const count = async () => Number((await page.textContent('#stroke-count')).split(' ')[0]);
-    const petal = (theta, wobble) => drawPetal(page, theta, wobble);
     const step = (2 * Math.PI) / 8;
-    for (let k = 0; k < 3; k++) await petal(k * step, 0.6);
-    await settled();
+    for (let k = 0; k < 3; k++) await drawPetal(page, k * step, 0.6);
+    await settled(page);
     const status = await page.textContent('#suggest-status');
     assert.match(status, /^[1-9]\d* suggested stroke/, status);
     await page.screenshot({ path: 'out/ring-ghosts.png' });
     // Tab (the hand is on the canvas after drawing) accepts; then Enter on the canvas,
     // until the ring closes.
-    let before = await count();
-    for (const key of ['Tab', 'Enter', 'Enter', 'Enter']) {
-      await page.keyboard.press(key);
-      await page.waitForFunction((n) => Number(document.querySelector('#stroke-count').textContent.split(' ')[0]) > n, before);
-      before = await count();
-      await settled();
-      if (!/suggested stroke/.test(await page.textContent('#suggest-status'))) break;
-    }
-    assert.equal(await count(), 8, 'the ring of eight is complete');
+    await acceptTheRing(page);
     await page.screenshot({ path: 'out/ring-accepted.png' });
-    // The eight petals lie on the ring: each centre about 55 units from (400, 250).
-    const centres = await page.evaluate(() => window.playground.drawing().strokes.map((s) => {
-      const xs = s.points.map((p) => p[0]), ys = s.points.map((p) => p[1]);
-      return [(Math.min(...xs) + Math.max(...xs)) / 2, (Math.min(...ys) + Math.max(...ys)) / 2];
-    }));
-    for (const [x, y] of centres) assert.ok(Math.abs(Math.hypot(x - 400, y - 250) - 55) < 8, `${x}, ${y}`);
     await page.click('#undo');
-    assert.ok((await count()) < 8, 'undo takes the accepted petals back');
+    assert.ok((await strokeCount(page)) < 8, 'undo takes the accepted petals back');
   } finally {
     await close();
   }
@@ -77,29 +84,14 @@ test('petals begun anywhere on their outline, one drawn the other way round, are
   try {
     await page.waitForFunction(() => /[1-9]\d* strokes/.test(document.querySelector('#stroke-count').textContent));
     await page.click('#clear');
-    const settled = () => page.waitForFunction(() => document.querySelector('#suggest-status').getAttribute('aria-busy') === 'false', null, { timeout: 15000 });
-    const count = async () => Number((await page.textContent('#stroke-count')).split(' ')[0]);
     const step = (2 * Math.PI) / 8;
     // Begun at the base, a third of the way round, and near the tip drawn backwards.
     for (const [k, begin, backwards] of [[0, 0, false], [1, 9, false], [2, 17, true]]) await drawPetal(page, k * step, 0.6, k, begin, backwards);
-    await settled();
+    await settled(page);
     const status = await page.textContent('#suggest-status');
     assert.match(status, /^[1-9]\d* suggested stroke/, status);
     await page.screenshot({ path: 'out/ring-begun-anywhere.png' });
-    let before = await count();
-    for (const key of ['Tab', 'Enter', 'Enter', 'Enter']) {
-      await page.keyboard.press(key);
-      await page.waitForFunction((n) => Number(document.querySelector('#stroke-count').textContent.split(' ')[0]) > n, before);
-      before = await count();
-      await settled();
-      if (!/suggested stroke/.test(await page.textContent('#suggest-status'))) break;
-    }
-    assert.equal(await count(), 8, 'the ring of eight is complete');
-    const centres = await page.evaluate(() => window.playground.drawing().strokes.map((s) => {
-      const xs = s.points.map((p) => p[0]), ys = s.points.map((p) => p[1]);
-      return [(Math.min(...xs) + Math.max(...xs)) / 2, (Math.min(...ys) + Math.max(...ys)) / 2];
-    }));
-    for (const [x, y] of centres) assert.ok(Math.abs(Math.hypot(x - 400, y - 250) - 55) < 8, `${x}, ${y}`);
+    await acceptTheRing(page);
     await page.screenshot({ path: 'out/ring-begun-anywhere-accepted.png' });
   } finally {
     await close();

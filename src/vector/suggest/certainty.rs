@@ -4,6 +4,8 @@
 use super::fit::Fit;
 use super::SUGGESTED_WEIGHT;
 use crate::vector::element::Element;
+use crate::vector::frechet::closed_loop;
+use crate::vector::similarity::samples;
 use crate::vector::stroke::Stroke;
 use kurbo::Vec2;
 
@@ -113,16 +115,6 @@ impl Fit {
     }
 }
 
-/// Whether a stroke closes on itself (its ends within a tenth of its size): a loop.
-fn closed(s: &Stroke) -> bool {
-    match (s.points.first(), s.points.last()) {
-        (Some(p), Some(q)) if s.points.len() > 3 => {
-            Vec2::new(p[0] - q[0], p[1] - q[1]).hypot() <= 0.1 * s.bounds().size().to_vec2().hypot()
-        }
-        _ => false,
-    }
-}
-
 /// How far a hand's copy strays from where it means to put it, as the drawing shows it
 /// before its repetition does: the mean square difference, between consecutive
 /// hand-drawn strokes of one class, of their ends' offsets from their reference
@@ -147,7 +139,8 @@ pub(super) fn hand_scatter(strokes: &[Stroke], classes: &[u32], accepted: &[bool
             let same = (a0 - b0).hypot2() + (a1 - b1).hypot2();
             let reversed = (a0 - b1).hypot2() + (a1 - b0).hypot2();
             let size = a.bounds().size().to_vec2().hypot();
-            sum += if closed(a) && closed(b) && same.min(reversed) > (0.25 * size).powi(2) {
+            let closed = |s: &Stroke| closed_loop(&samples(s));
+            sum += if same.min(reversed) > (0.25 * size).powi(2) && closed(a) && closed(b) {
                 // (Loops begun at different places: their ends say where the pen landed,
                 // their boxes' corners how the hand wobbled.)
                 let (ea, eb) = (a.bounds().size().to_vec2(), b.bounds().size().to_vec2());

@@ -307,6 +307,7 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
     let second = *chain[..at].last()?;
     let first = (chain[0]..second).rev().find(|&i| d.same(i, second).is_some())?;
     let centre = |i: usize| strokes[i].reference_point();
+    let step = centre(second).distance(centre(last));
     // Of the steps that fit both pairs (a loop that looks the same turned half round
     // fits either way), the pair that agree and carry the second copy nearest the
     // latest: the places say which way the copies turn.
@@ -314,15 +315,11 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
         let (ones, twos) = (d.steps(first, second), d.steps(second, last));
         let miss = |o: &Similarity, t: &Similarity| {
             (t.a - o.a).hypot() / o.a.hypot().max(1e-9)
-                + o.carry(&strokes[second]).reference_point().distance(centre(last))
-                    / centre(second).distance(centre(last)).max(1e-9)
+                + o.carry(&strokes[second]).reference_point().distance(centre(last)) / step.max(1e-9)
         };
-        let mut pairs: Vec<(Similarity, Similarity)> =
-            ones.iter().flat_map(|o| twos.iter().map(move |t| (o.0, t.0))).collect();
-        pairs.sort_by(|x, y| miss(&x.0, &x.1).total_cmp(&miss(&y.0, &y.1)));
-        *pairs.first()?
+        let pairs = ones.iter().flat_map(|o| twos.iter().map(move |t| (o.0, t.0)));
+        pairs.min_by(|x, y| miss(&x.0, &x.1).total_cmp(&miss(&y.0, &y.1)))?
     };
-    let step = centre(second).distance(centre(last));
     // Copies a step apart, not one drawn over another (hatching lies a tenth of its
     // length apart, or closer).
     if step <= (0.02 * d.size(last)).max(3.0 * strokes[last].width) {
