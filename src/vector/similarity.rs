@@ -184,8 +184,11 @@ pub fn relations(from: &[Point], to: &[Point], size: f64, shape: f64, max_scale:
     // half turn, an ellipse, also fits begun half round, and a hand's wobble can make
     // that one fit a little better), then begun anywhere and as good as the best, then
     // the others that still pass for the same shape.
+    // (Begun alike: the better of those within a few times the best of all; a loop begun
+    // elsewhere fits as drawn many times worse, or not at all.)
+    let alike = plain <= (3.0 * best).max(0.02 * size);
     let rank = |k: usize, rms: f64| {
-        if k < 2 && rms <= (1.5 * plain).max(0.02 * size) {
+        if alike && k < 2 && rms <= (1.5 * plain).max(0.02 * size) {
             0
         } else if rms <= (1.5 * best).max(0.02 * size) {
             1
