@@ -86,11 +86,19 @@ pub(super) fn turn_between(a: Vec2, bend: f64, from: i64, to: i64) -> Vec2 {
 }
 
 /// The sum of the steps' turns up to copy `t`: `g_t = (a^t - 1) / (a - 1)` for a
-/// constant step (`t` for `a = 1`); with a `bend`, the sum of `turn_between(0, j)` over
-/// the steps `j` from 0 to `t` (less those from `t` to 0 for a negative `t`).
+/// constant step (`t` for `a = 1`); with a `bend`, the sum over the steps `j` from 0 to
+/// `t` (less those from `t` to 0 for a negative `t`) of `turn_between(0, j)` turned on
+/// by `bend j / 2`: the chord from copy `j` to the next runs along the curve's tangent
+/// half way between them, turned from the first chord by the turns before `j` and half
+/// of `j`'s own less half the first's (without it, a stem bending on at 0.05 a step put
+/// the third copy ahead 0.4 of a step off).
 fn geometric(a: Vec2, bend: f64, t: i64) -> Vec2 {
     if bend != 0.0 {
-        let sum = |range: std::ops::Range<i64>| range.fold(Vec2::ZERO, |s, j| s + turn_between(a, bend, 0, j));
+        let chord = |j: i64| {
+            let half = 0.5 * bend * j as f64;
+            mul(turn_between(a, bend, 0, j), Vec2::new(half.cos(), half.sin()))
+        };
+        let sum = |range: std::ops::Range<i64>| range.fold(Vec2::ZERO, |s, j| s + chord(j));
         return if t >= 0 { sum(0..t) } else { -sum(t..0) };
     }
     let d = a - Vec2::new(1.0, 0.0);
@@ -359,6 +367,33 @@ mod tests {
         let o = Orbit::fit(&copies, shapes, 0.01).unwrap();
         assert!(o.at(6).distance(Point::new(130.0, 5.0)) < 1e-3, "{:?}", o.at(6));
         assert!(o.centre().is_none() || o.centre().unwrap().to_vec2().hypot() > 1e4);
+    }
+
+    #[test]
+    fn a_stem_that_bends_on_is_continued_along_its_curve() {
+        // Copies every 40 along an Euler spiral (its curvature changing steadily along
+        // it, as an S's does between its bends): step `j` turns by 0.2 - 0.05 j.
+        let (len, k0, k1): (f64, f64, f64) = (40.0, 0.225 / 40.0, -0.05 / 1600.0);
+        let mut copies = Vec::new();
+        let (mut p, mut s) = (Vec2::ZERO, 0.0);
+        for t in 0..9 {
+            if t > 0 {
+                // (Integrated finely between copies.)
+                for _ in 0..400 {
+                    let h = len / 400.0;
+                    let th = k0 * (s + h / 2.0) + k1 * (s + h / 2.0).powi(2) / 2.0;
+                    p += Vec2::new(th.cos(), th.sin()) * h;
+                    s += h;
+                }
+            }
+            copies.push(Placed { t, z: p.to_point(), weight: 1.0, hand: true });
+        }
+        let th: f64 = 0.2;
+        let shapes = Shapes { mean: Vec2::new(th.cos(), th.sin()), var: 1e-6, pairs: 16.0, bend: -0.05 };
+        let o = Orbit::fit(&copies[..5], shapes, 1e-4).unwrap();
+        for c in &copies[5..] {
+            assert!(o.at(c.t).distance(c.z) < 0.02 * len, "copy {}: {:?} vs {:?}", c.t, o.at(c.t), c.z);
+        }
     }
 
     #[test]

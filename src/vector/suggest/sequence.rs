@@ -263,9 +263,10 @@ fn model(d: &Drawing, run: &[usize], step: f64, fallback: [Vec2; 2], lead: Optio
 
 /// How many times further off than it expected a model of the run has been: each of
 /// the last two hand-drawn copies predicted from the run before it (one and two steps
-/// ahead), its miss over the miss the model expected. 1 unless some miss passes
+/// ahead, read with the run's lead-in, which a stem's bend is read from), its miss over
+/// the miss the model expected. 1 unless some miss passes
 /// `BACKTEST` (a stem that bends the other way is missed by several times that).
-fn backtest(d: &Drawing, run: &[usize], step: f64, fallback: [Vec2; 2]) -> f64 {
+fn backtest(d: &Drawing, run: &[usize], step: f64, fallback: [Vec2; 2], lead: Option<(usize, usize)>) -> f64 {
     let hands: Vec<usize> = (0..run.len()).filter(|&k| d.hand(run[k])).collect();
     let mut worst: f64 = 1.0;
     for (target, ahead) in [(1, 1), (1, 2), (2, 1)] {
@@ -275,7 +276,7 @@ fn backtest(d: &Drawing, run: &[usize], step: f64, fallback: [Vec2; 2]) -> f64 {
         if sub.iter().filter(|&&i| d.hand(i)).count() < 3 {
             continue;
         }
-        let Some(m) = model(d, sub, step, fallback, None) else { continue };
+        let Some(m) = model(d, sub, step, fallback, lead) else { continue };
         let ratio = m.orbit.at(k as i64).distance(d.z(run[k])) / m.orbit.miss(k as i64).max(1e-9);
         if ratio > BACKTEST {
             worst = worst.max(ratio / BACKTEST);
@@ -386,7 +387,7 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
             return None;
         }
     }
-    let inflate = backtest(&d, &run, step, [one.a, two.a]);
+    let inflate = backtest(&d, &run, step, [one.a, two.a], lead);
     let pairs = (run.len() - 1) as f64;
     let reach = super::certainty::reach(orbit.copies);
     let mut out = Suggestions::default();
