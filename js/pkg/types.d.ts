@@ -146,8 +146,8 @@ export interface TileResult {
   svg: string;
 }
 export interface SeamlessOptions {
-  /** 'etfmcm' (the paper, default), 'tfmcm' (its predecessor), 'synthesis' (toroidal
-   *  neighbourhood synthesis: keeps structure) or 'mend' (the image kept, any size, only a
+  /** 'synthesis' (toroidal neighbourhood synthesis: keeps structure; the default, as
+   *  on the page), 'etfmcm' (the paper's co-occurrence tile), 'tfmcm' (its predecessor) or 'mend' (the image kept, any size, only a
    *  band around its wrap re-made). */
   method?: 'etfmcm' | 'tfmcm' | 'synthesis' | 'mend';
   /** 'mend': the band's whole width as a share of each side, half along each edge

@@ -89,6 +89,10 @@ test('seamlessTile: E-TFMCM and synthesis tiles with their figures, clear errors
   assert.equal(s.image.width, 32);
   assert.equal(s.channel, null);
   assert.match(s.warnings[0], /Scaled 64x64 to 32x32/);
+  // The default is the page's: toroidal synthesis (issue 25: it keeps structure).
+  const d = ps.seamlessTile(img, { size: 32 });
+  assert.equal(d.channel, null);
+  assert.deepEqual(d.image.data, s.image.data);
   assert.throws(() => ps.seamlessTile(img, { method: 'fractal' }), /unknown variant `fractal`/);
   assert.throws(() => ps.seamlessTile(img, { size: 48 }), /power of two/);
   assert.throws(() => ps.seamlessTile(img, { maxCount: 3 }), /unknown option `maxCount`/);
