@@ -94,9 +94,12 @@ fn main() {
         let hole: Vec<bool> = m.data.chunks_exact(4).map(|p| p[0] > 127).collect();
         let mut ratios = Vec::new();
         let mut energies = Vec::new();
+        let mut times = Vec::new();
         for seed in 1..=3 {
+            let t = std::time::Instant::now();
             let out =
                 inpaint_texture(&img, &hole, &InpaintOptions { seed, ..Default::default() }, &mut Silent).unwrap();
+            times.push(t.elapsed().as_secs_f64() * 1e3);
             ratios.push(edge_ratio(&out, &hole, 8));
             energies.push(fill_energy(&out, &img, &hole));
             if seed == 1 {
@@ -111,12 +114,14 @@ fn main() {
         }
         ratios.sort_by(f64::total_cmp);
         energies.sort_by(f64::total_cmp);
+        times.sort_by(f64::total_cmp);
         println!(
-            "{photo}: edge ratio {:.2} (photo's own {:.2}), fill energy {:.2} (photo's own {:.2})",
+            "{photo}: edge ratio {:.2} (photo's own {:.2}), fill energy {:.2} (photo's own {:.2}), {:.0} ms",
             ratios[1],
             edge_ratio(&img, &hole, 8),
             energies[1],
-            fill_energy(&img, &img, &hole)
+            fill_energy(&img, &img, &hole),
+            times[1]
         );
         all.push((ratios[1], energies[1]));
     }

@@ -106,7 +106,10 @@ export type Mask = Rgba;
 export interface Layout { width: number; height: number; exemplars: [number, number][]; data: Uint32Array }
 export interface TextureWithLayout { image: RgbaImage; layout: Layout }
 export interface InpaintOptions {
-  seed?: number; levels?: number; neighbourhood?: number;
+  seed?: number; levels?: number;
+  /** Side of the matched neighbourhood, odd (default 11: wider than synthesis's 5, the
+   *  fill matched to more of the photograph round it). */
+  neighbourhood?: number;
   /** Pixels never copied into the hole (opaque white: kept out). */
   sampleMask?: Mask;
 }

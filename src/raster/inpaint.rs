@@ -21,10 +21,17 @@ pub struct InpaintOptions {
     pub sample_mask: Option<Vec<bool>>,
 }
 
+/// The fill's neighbourhood side by default, wider than synthesis's 5: a hole is matched
+/// to more of the photograph round it. On eight photographs from Debian's game and GIMP
+/// packages with holes of 8-11% (seeds 1-3, examples/inpaint_edge), 11 against 5 took
+/// the fill's median patch energy from 12.11 to 10.35 and the step at its edge from
+/// 1.14 to 1.08 of the steps around it (9: 10.67 and 1.12).
+pub const FILL_NEIGHBOURHOOD: usize = 11;
+
 impl Default for InpaintOptions {
     fn default() -> Self {
         let p = Params::default();
-        InpaintOptions { seed: p.seed, levels: None, neighbourhood: p.neighbourhood, sample_mask: None }
+        InpaintOptions { seed: p.seed, levels: None, neighbourhood: FILL_NEIGHBOURHOOD, sample_mask: None }
     }
 }
 
@@ -108,8 +115,8 @@ impl Fill {
             height: image.height,
             seed: self.seed,
             levels: self.levels,
-            neighbourhood: self.neighbourhood,
             tileable: self.torus,
+            neighbourhood: self.neighbourhood,
             constraints: Constraints { allowed: vec![Some(allowed)], known: Some(self.known), guide: None },
             ..Params::default()
         };

@@ -152,7 +152,7 @@ test('sampleMask keeps exemplar pixels out of synthesizeTexture, blendTextures a
   let orange = 0;
   for (let i = 0; i < 64 * 64; i++) orange += tile.image.data[4 * i] - tile.image.data[4 * i + 2] > 40 ? 1 : 0;
   assert.ok(orange < 40, `a synthesized tile with the wood kept out has ${orange} orange pixels`);
-  assert.throws(() => ps.seamlessTile(both, { sampleMask: woodOut }), /applies to methods 'synthesis' and 'mend'/);
+  assert.throws(() => ps.seamlessTile(both, { method: 'etfmcm', sampleMask: woodOut }), /applies to methods 'synthesis' and 'mend'/);
   assert.throws(() => ps.synthesizeTexture(both, { width: 32, height: 32, sampleMask: maskOf(128, 64, () => true) }), /leaves no pixel/);
   assert.throws(() => ps.synthesizeTexture(both, { width: 32, height: 32, sampleMask: maskOf(64, 64, () => false) }), /must be 128x64/);
 });
