@@ -179,7 +179,8 @@ fn a_shaky_hand_drawing_motifs_of_several_strokes_gets_whole_right_copies() {
 /// stroke with a wobble of 1% and 3% of the step (seeds 1-3), accepting the right
 /// ghosts: each family's mean share accepted after three copies, and the wrong ghosts
 /// over all of them. Leaves along an S (the turn reverses: no one step carries them)
-/// are held to less.
+/// are held to less (0.55 and 0.45: 0.48 and 0.37 before a bending stem's chords and
+/// lead-in were read right).
 #[test]
 fn rings_spirals_arcs_and_hatching_are_carried_on_by_their_step() {
     for wobble in [0.01, 0.03] {
@@ -198,7 +199,8 @@ fn rings_spirals_arcs_and_hatching_are_carried_on_by_their_step() {
         }
         for (name, share) in &accepted {
             let least = match (name.contains("S-curve"), wobble < 0.02) {
-                (true, _) => 0.3,
+                (true, true) => 0.55,
+                (true, false) => 0.45,
                 (false, true) => 0.75,
                 (false, false) => 0.6,
             };

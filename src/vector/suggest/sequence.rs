@@ -69,8 +69,9 @@ const SNAP_WORSE: f64 = 2.5;
 const SNAP_SURE: f64 = 20.0;
 /// Why nothing (more) is proposed while the sequence goes on.
 const UNCERTAIN: &str = "The copies drawn so far leave the next ones too uncertain: draw one more.";
-/// A run that does not pass the local test holds at least four hand-drawn copies, each
-/// within this share of the step of its site on the run's orbit.
+/// A run that does not pass the local test holds at least four hand-drawn copies, its
+/// lead-in counted (a stem that bends on, past ghosts accepted from its earlier turn),
+/// each within this share of the step of its site on the run's orbit.
 const RUN_PLACE: f64 = 0.15;
 /// A run's own copies, predicted from those before them, may miss by up to this many
 /// expected misses before the model is taken to be off (a Rayleigh miss passes it
@@ -383,7 +384,9 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
     let Model { orbit, closes, bend_error } = model(&d, &run, step, [one.a, two.a], lead)?;
     if !local {
         let hand: Vec<usize> = (0..run.len()).filter(|&t| d.hand(run[t])).collect();
-        if hand.len() < 4 || hand.iter().any(|&t| orbit.at(t as i64).distance(d.z(run[t])) > RUN_PLACE * step) {
+        if hand.len() + usize::from(lead.is_some()) < 4
+            || hand.iter().any(|&t| orbit.at(t as i64).distance(d.z(run[t])) > RUN_PLACE * step)
+        {
             return None;
         }
     }
