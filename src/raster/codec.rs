@@ -19,16 +19,29 @@ pub fn decode_image(bytes: &[u8]) -> Result<Rgba> {
         }
         other => Error::Image(format!("{other}.")),
     };
+    // A photograph larger than the engine takes is named by its size, with what to do
+    // (its header is read before any pixel).
+    let fits = |(w, h): (u32, u32)| {
+        if w as usize > MAX_SIDE || h as usize > MAX_SIDE {
+            return Err(Error::TooLarge(format!(
+                "The image is {w}x{h} pixels; the largest side accepted is {MAX_SIDE}: scale it down first (the \
+                 playground does so itself when an image is dropped on it)."
+            )));
+        }
+        Ok(())
+    };
     // The format decoders directly, not DynamicImage: its conversions between every
     // pixel type cost the wasm module about a hundred kilobytes.
     match format {
         ImageFormat::Png => {
             let mut d = image::codecs::png::PngDecoder::new(Cursor::new(bytes)).map_err(failed)?;
+            fits(d.dimensions())?;
             d.set_limits(limits).map_err(failed)?;
             read(d).map_err(failed)
         }
         ImageFormat::Jpeg => {
             let mut d = image::codecs::jpeg::JpegDecoder::new(Cursor::new(bytes)).map_err(failed)?;
+            fits(d.dimensions())?;
             d.set_limits(limits).map_err(failed)?;
             read(d).map_err(failed)
         }
@@ -106,5 +119,25 @@ mod tests {
         assert!(decode_image(b"GIF89a....").unwrap_err().to_string().contains("not supported"));
         assert!(decode_image(b"hello").is_err());
         assert!(decode_image(&png[..png.len() / 2]).is_err());
+    }
+
+    #[test]
+    fn a_photograph_too_large_is_named_by_its_size() {
+        // A PNG whose header says 6028 x 3391 (a phone's photograph): refused before any
+        // pixel is read, with its size and what to do.
+        let mut png = encode_png(3, 2, &[0; 24]).unwrap();
+        png[16..20].copy_from_slice(&6028u32.to_be_bytes());
+        png[20..24].copy_from_slice(&3391u32.to_be_bytes());
+        // (The header chunk's CRC-32 over its type and data, bit by bit.)
+        let crc = !png[12..29].iter().fold(!0u32, |mut c, &b| {
+            c ^= b as u32;
+            for _ in 0..8 {
+                c = if c & 1 == 1 { (c >> 1) ^ 0xEDB8_8320 } else { c >> 1 };
+            }
+            c
+        });
+        png[29..33].copy_from_slice(&crc.to_be_bytes());
+        let err = decode_image(&png).unwrap_err().to_string();
+        assert!(err.contains("6028x3391") && err.contains("largest side accepted is 4096"), "{err}");
     }
 }
