@@ -16,6 +16,20 @@ export async function openPlayground({ width = 1400, height = 1000, tab, touch =
   return { page, url, close: async () => { await browser.close(); server.close(); } };
 }
 
+/** The playground with its example drawing loaded and then cleared: an empty canvas to
+ *  draw on (options as `openPlayground`'s). */
+export async function openEmptyCanvas(options) {
+  const opened = await openPlayground(options);
+  try {
+    await opened.page.waitForFunction(() => /[1-9]\d* strokes/.test(document.querySelector('#stroke-count').textContent));
+    await opened.page.click('#clear');
+  } catch (e) {
+    await opened.close();
+    throw e;
+  }
+  return opened;
+}
+
 /** RMS over sampled pixels of the best 7x7 match in the exemplar (as the benchmark). */
 export function patchEnergy(out, ex, rows, samples = 60) {
   let seed = 7;

@@ -6,7 +6,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync } from 'node:fs';
-import { openPlayground } from './harness.mjs';
+import { openEmptyCanvas } from './harness.mjs';
 import { parseSvg } from '../../pkg/node/index.js';
 
 const centre = (s) => {
@@ -16,10 +16,8 @@ const centre = (s) => {
 
 test('a hexagonal layout set and dragged by hand repeats one drawn motif on it', async () => {
   mkdirSync('out', { recursive: true });
-  const { page, close } = await openPlayground({ height: 1300 });
+  const { page, close } = await openEmptyCanvas({ height: 1300 });
   try {
-    await page.waitForFunction(() => /[1-9]\d* strokes/.test(document.querySelector('#stroke-count').textContent));
-    await page.click('#clear');
     const box = await page.locator('#draw').boundingBox();
     const at = (x, y) => [box.x + (x * box.width) / 800, box.y + (y * box.height) / 500];
     const drag = async (points) => {

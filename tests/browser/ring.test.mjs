@@ -5,7 +5,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync } from 'node:fs';
-import { openPlayground } from './harness.mjs';
+import { openEmptyCanvas } from './harness.mjs';
 
 /** Draws a petal with the mouse: a loop 110 long from the centre (400, 250) of the
  *  800 x 500 canvas along `theta`, its points wobbling by `wobble` across; begun `begin`
@@ -57,10 +57,8 @@ async function acceptTheRing(page) {
 
 test('three petals drawn around a centre: ghosts complete the ring, Tab accepts, undo takes them back', async () => {
   mkdirSync('out', { recursive: true });
-  const { page, close } = await openPlayground({ height: 1000 });
+  const { page, close } = await openEmptyCanvas({ height: 1000 });
   try {
-    await page.waitForFunction(() => /[1-9]\d* strokes/.test(document.querySelector('#stroke-count').textContent));
-    await page.click('#clear');
     const step = (2 * Math.PI) / 8;
     for (let k = 0; k < 3; k++) await drawPetal(page, k * step, 0.6);
     await settled(page);
@@ -80,10 +78,8 @@ test('three petals drawn around a centre: ghosts complete the ring, Tab accepts,
 
 test('petals begun anywhere on their outline, one drawn the other way round, are completed too', async () => {
   mkdirSync('out', { recursive: true });
-  const { page, close } = await openPlayground({ height: 1000 });
+  const { page, close } = await openEmptyCanvas({ height: 1000 });
   try {
-    await page.waitForFunction(() => /[1-9]\d* strokes/.test(document.querySelector('#stroke-count').textContent));
-    await page.click('#clear');
     const step = (2 * Math.PI) / 8;
     // Begun at the base, a third of the way round, and near the tip drawn backwards.
     for (const [k, begin, backwards] of [[0, 0, false], [1, 9, false], [2, 17, true]]) await drawPetal(page, k * step, 0.6, k, begin, backwards);
@@ -100,10 +96,8 @@ test('petals begun anywhere on their outline, one drawn the other way round, are
 
 test('three petals drawn around a centre synthesize into rosettes of eight', async () => {
   mkdirSync('out', { recursive: true });
-  const { page, close } = await openPlayground({ height: 1000 });
+  const { page, close } = await openEmptyCanvas({ height: 1000 });
   try {
-    await page.waitForFunction(() => /[1-9]\d* strokes/.test(document.querySelector('#stroke-count').textContent));
-    await page.click('#clear');
     // Three petals of eight, by hand (a little wobble in each).
     for (let k = 0; k < 3; k++) await drawPetal(page, (k * 2 * Math.PI) / 8, 0.6, k);
     await page.click('#synthesize');
