@@ -1,5 +1,5 @@
 //! Hand-drawn repetitions that are not lattices (test support, issue 27): rings of
-//! petals, spirals, leaves along an arc and along an S, hatching along a turning and
+//! petals, spirals, leaves along an arc and along S-shaped and wavy stems, hatching along a turning and
 //! a straight contour, each copy a similarity transform of the one before (along the S,
 //! of the one before only locally), drawn copy by copy with a wobble
 //! (each copy's place off by `wobble` of the step, its points by a fifth of that).
@@ -116,6 +116,32 @@ pub fn circle_grid(wobble: f64, seed: u64, anywhere: bool) -> (Vec<Stroke>, kurb
     (strokes, kurbo::Rect::new(10.0, 10.0, 40.0 + spacing * 5.5, 40.0 + spacing * 3.5))
 }
 
+/// Leaves one every 40 along the sine `y = 300 + amplitude sin((x - 300) / scale)` from
+/// `x0`, each turned with it: `n` drawn and `BEYOND` more.
+fn stem(name: &str, amplitude: f64, scale: f64, x0: f64, n: usize, wobble: f64, seed: u64) -> Sequence {
+    let mut rng = Rng::new(seed);
+    let step = 40.0;
+    let path = |x: f64| Point::new(x, 300.0 + amplitude * ((x - 300.0) / scale).sin());
+    let (mut sites, mut along, mut x) = (Vec::new(), 0.0, x0);
+    while sites.len() < n + BEYOND {
+        let (p, q) = (path(x), path(x + 0.5));
+        along += p.distance(q);
+        x += 0.5;
+        if along >= step || sites.is_empty() {
+            along = 0.0;
+            sites.push((p, (q.y - p.y).atan2(q.x - p.x)));
+        }
+    }
+    let strokes = sites
+        .iter()
+        .map(|&(p, phi)| {
+            let jitter = Vec2::new(rng.normal(), rng.normal()) * (wobble * step);
+            leaf(p + jitter, phi - 0.6, 36.0, &mut rng, 0.2 * wobble * step)
+        })
+        .collect();
+    Sequence { name: name.into(), strokes, step, steps: Vec::new(), beyond: Vec::new(), canvas: kurbo::Rect::ZERO }
+}
+
 /// Every family at `wobble` (share of the step), seeded.
 pub fn sequences(wobble: f64, seed: u64) -> Vec<Sequence> {
     let mut out = Vec::new();
@@ -217,37 +243,12 @@ pub fn sequences(wobble: f64, seed: u64) -> Vec<Sequence> {
         });
     }
     // Leaves along an S: a stem that bends one way and then the other (no one similarity
-    // carries every leaf onto the next), one leaf every 40 along it, each turned with it.
-    {
-        let mut rng = Rng::new(seed * 131 + 13);
-        let step = 40.0;
-        let path = |x: f64| Point::new(x, 300.0 + 70.0 * ((x - 300.0) / 110.0).sin());
-        let (mut sites, mut along, mut x) = (Vec::new(), 0.0, 70.0);
-        while sites.len() < 12 + BEYOND {
-            let (p, q) = (path(x), path(x + 0.5));
-            along += p.distance(q);
-            x += 0.5;
-            if along >= step || sites.is_empty() {
-                along = 0.0;
-                sites.push((p, (q.y - p.y).atan2(q.x - p.x)));
-            }
-        }
-        let strokes = sites
-            .iter()
-            .map(|&(p, phi)| {
-                let jitter = Vec2::new(rng.normal(), rng.normal()) * (wobble * step);
-                leaf(p + jitter, phi - 0.6, 36.0, &mut rng, 0.2 * wobble * step)
-            })
-            .collect();
-        out.push(Sequence {
-            name: "leaves on an S-curve".into(),
-            strokes,
-            step,
-            steps: Vec::new(),
-            beyond: Vec::new(),
-            canvas,
-        });
-    }
+    // carries every leaf onto the next), one leaf every 40 along it, each turned with it;
+    // and along wavier stems, whose turn (up to 0.4 and 1 radian a step) changes sign
+    // every few leaves.
+    out.push(stem("leaves on an S-curve", 70.0, 110.0, 70.0, 12, wobble, seed * 131 + 13));
+    out.push(stem("leaves on a wavy stem", 40.0, 400.0 / TAU, 50.0, 16, wobble, seed * 131 + 19));
+    out.push(stem("leaves on a curly stem", 60.0, 300.0 / TAU, 50.0, 16, wobble, seed * 131 + 23));
     // Hatching along a straight contour: a row, the lattice's (lines 70 long, 9 apart, at
     // 60 degrees).
     {

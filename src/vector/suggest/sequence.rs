@@ -257,14 +257,18 @@ fn model(d: &Drawing, run: &[usize], step: f64, fallback: [Vec2; 2], lead: Optio
             }
         }
     }
-    // (A ring closes whole: its turn holds by construction.)
-    let bend_error = if closes.is_some() { 0.0 } else { bend_error };
+    // (A ring closes whole: its turn holds by construction; unless a lead-in shows the
+    // turn changing into it, as where four leaves over a wavy stem's crest turn as
+    // petals of nine would: the stem turns back after them.)
+    let bend_error = if closes.is_some() && lead.is_none() { 0.0 } else { bend_error };
     Some(Model { orbit, closes, bend_error })
 }
 
 /// How many times further off than it expected a model of the run has been: each of
 /// the last two hand-drawn copies predicted from the run before it (one and two steps
-/// ahead, read with the run's lead-in, which a stem's bend is read from), its miss over
+/// ahead, read with the run's lead-in, which a stem's bend is read from and which counts
+/// as one of the three hand-drawn copies a model needs: a bend read from the lead-in
+/// and two copies has no degree of freedom left to show it wrong), its miss over
 /// the miss the model expected. 1 unless some miss passes
 /// `BACKTEST` (a stem that bends the other way is missed by several times that).
 fn backtest(d: &Drawing, run: &[usize], step: f64, fallback: [Vec2; 2], lead: Option<(usize, usize)>) -> f64 {
@@ -274,7 +278,7 @@ fn backtest(d: &Drawing, run: &[usize], step: f64, fallback: [Vec2; 2], lead: Op
         let Some(&k) = hands.len().checked_sub(target).and_then(|x| hands.get(x)) else { continue };
         let Some(before) = k.checked_sub(ahead - 1) else { continue };
         let sub = &run[..before];
-        if sub.iter().filter(|&&i| d.hand(i)).count() < 3 {
+        if sub.iter().filter(|&&i| d.hand(i)).count() + usize::from(lead.is_some()) < 3 {
             continue;
         }
         let Some(m) = model(d, sub, step, fallback, lead) else { continue };
