@@ -181,34 +181,41 @@ fn a_shaky_hand_drawing_motifs_of_several_strokes_gets_whole_right_copies() {
 /// and the wrong ghosts over all of them. Leaves along an S (the turn reverses: no one
 /// step carries them) are held to less (0.55 and 0.45: 0.48 and 0.37 before a bending
 /// stem's chords and lead-in were read right); along a wavy stem (the turn, up to 0.4
-/// radian a step, changes sign every six leaves) to 0.2; along a curly one (up to 1
-/// radian a step) to nothing but the wrong ghosts.
+/// radian a step, changes sign every six leaves) to 0.2 and 0.12; along a curly one (up
+/// to 1 radian a step) to nothing but the wrong ghosts. At most 5% of each family's
+/// ghosts and 2.5% of all are wrong.
 #[test]
 fn rings_spirals_arcs_and_hatching_are_carried_on_by_their_step() {
     for wobble in [0.01, 0.03] {
         let (mut wrong, mut shown) = (0, 0);
-        let mut accepted: Vec<(String, f64)> = Vec::new();
+        // Each family's name, mean share accepted, wrong and shown ghosts.
+        let mut families: Vec<(String, f64, usize, usize)> = Vec::new();
         for seed in 1..=3 {
             for (k, q) in patternsynth::vector::sequences::sequences(wobble, seed).into_iter().enumerate() {
                 let r = q.replay(&q.strokes);
                 wrong += r.wrong;
                 shown += r.shown;
                 if seed == 1 {
-                    accepted.push((q.name.clone(), 0.0));
+                    families.push((q.name.clone(), 0.0, 0, 0));
                 }
-                accepted[k].1 += r.accepted_after(3) / 3.0;
+                families[k].1 += r.accepted_after(3) / 3.0;
+                families[k].2 += r.wrong;
+                families[k].3 += r.shown;
             }
         }
-        for (name, share) in &accepted {
+        for (name, share, wrong, shown) in &families {
             let least = match (name.as_str(), wobble < 0.02) {
                 ("leaves on an S-curve", true) => 0.55,
                 ("leaves on an S-curve", false) => 0.45,
-                ("leaves on a wavy stem", _) => 0.2,
+                ("leaves on a wavy stem", true) => 0.2,
+                ("leaves on a wavy stem", false) => 0.12,
                 ("leaves on a curly stem", _) => 0.0,
                 (_, true) => 0.75,
                 (_, false) => 0.6,
             };
             assert!(*share >= least, "{name} at {wobble}: {share:.2} accepted after three copies");
+            // (Per family too: a wavy stem's 1 wrong of 12 hid in the others' 200.)
+            assert!(*wrong as f64 <= 0.05 * *shown as f64, "{name} at {wobble}: {wrong} wrong of {shown} shown");
         }
         assert!(wrong as f64 <= 0.025 * shown as f64, "at {wobble}: {wrong} wrong of {shown} shown");
     }

@@ -67,6 +67,13 @@ const PRIOR_PAIRS: f64 = 2.0;
 const SNAP_WORSE: f64 = 2.5;
 /// A ring's count is taken when it is this many times likelier than the next best.
 const SNAP_SURE: f64 = 20.0;
+/// A bend that has held its sign over `L` steps (the run and its lead-in) is a stretch
+/// of a stem whose turn may reverse: a sine turn that has kept its sign half a period
+/// changes its bend by up to `bend π / L` a step. A line through the turns misses that
+/// change quadratically ahead of the hand-drawn copies; this share of it is counted in
+/// the next copies' expected miss (leaves over a wavy stem's crest: the bend read on its
+/// rising side carried the ghosts past the crest, 22 off at a step of 40).
+const BEND_CHANGE: f64 = 0.25;
 /// Why nothing (more) is proposed while the sequence goes on.
 const UNCERTAIN: &str = "The copies drawn so far leave the next ones too uncertain: draw one more.";
 /// A run that does not pass the local test holds at least four hand-drawn copies, its
@@ -290,6 +297,18 @@ fn backtest(d: &Drawing, run: &[usize], step: f64, fallback: [Vec2; 2], lead: Op
     worst
 }
 
+/// How far off the turns' line puts copy `t` (in steps), where the bend `bend` may
+/// change (`BEND_CHANGE`): a turn off by `c (h + i)^2 / 2` at step `i` past the last
+/// hand-drawn copy (`h` half the hand-drawn copies' span, less the mean square the line
+/// absorbs over them), summed over the steps. Counted from the hand-drawn copies: an
+/// accepted one repeats the line and says nothing of its change.
+fn bend_change(bend: f64, (first_hand, last_hand): (i64, i64), lead: usize, t: i64) -> f64 {
+    let span = (last_hand - first_hand) as f64;
+    let c = BEND_CHANGE * bend.abs() * std::f64::consts::PI / (span + lead as f64).max(1.0);
+    let h = 0.5 * span;
+    0.5 * c * (1..=t - last_hand).map(|i| (h + i as f64).powi(2) - h * h / 3.0).sum::<f64>()
+}
+
 /// Proposals continuing the sequence that ends with the latest of `strokes` (none, with
 /// the reason, when it is complete or too uncertain to go on), or `None` when the
 /// latest strokes make no sequence. The steps are read from hand-drawn copies only
@@ -425,9 +444,11 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
             break;
         }
         // (A bend off by `bend_error` puts the next step's turn off by it times half the
-        // run's pairs, and each step ahead by it more.)
+        // run's pairs, and each step ahead by it more; a bend that changes, more still.)
         let kf = k as f64;
         let drift = here * bend_error * (0.5 * pairs * kf + 0.5 * kf * (kf + 1.0));
+        let change = bend_change(orbit.bend, (first_hand, last_hand), lead.map_or(0, |l| l.1), t);
+        let drift = drift.hypot(here * change);
         if reach * (inflate * inflate * orbit.miss(t).powi(2) + drift * drift).sqrt() > TOLERANCE * here {
             why = UNCERTAIN;
             break;
