@@ -326,3 +326,41 @@ fn circles_begun_anywhere_make_a_lattice() {
         assert!(wrong as f64 <= 0.025 * shown as f64, "at {wobble}: {wrong} wrong of {shown} shown");
     }
 }
+
+/// What the page says while no ghost is shown (issue 27's trial: "The drawing shows no
+/// repetition yet" with seventeen leaves drawn along a wavy stem): leaves along the S,
+/// wavy and curly stems drawn one by one at 1% and 3% (seeds 1-3), every prefix of six
+/// leaves or more that gets no ghost says why in other words; irregular dashes and a
+/// freehand sketch are still "no repetition" at least nine times in ten.
+#[test]
+fn a_repetition_without_ghosts_is_not_called_no_repetition() {
+    let said = |strokes: &[Stroke]| suggest_strokes(strokes, &SuggestOptions::default()).unwrap();
+    for wobble in [0.01, 0.03] {
+        for seed in 1..=3 {
+            for q in patternsynth::vector::sequences::sequences(wobble, seed) {
+                if !q.name.contains("stem") && !q.name.contains("S-curve") {
+                    continue;
+                }
+                for n in 6..=q.strokes.len() {
+                    let s = said(&q.strokes[..n]);
+                    let reason = s.reason.unwrap_or_default();
+                    assert!(
+                        !s.strokes.is_empty() || !reason.contains("no repetition"),
+                        "{} at {wobble}, seed {seed}, {n} drawn: {reason:?}",
+                        q.name
+                    );
+                }
+            }
+        }
+    }
+    let (mut none, mut calls) = (0, 0);
+    for seed in 1..=3 {
+        for strokes in [irregular_dashes(60, 300.0, seed), freehand_sketch(40, 300.0, seed)] {
+            for n in 3..=strokes.len() {
+                calls += 1;
+                none += usize::from(said(&strokes[..n]).reason.is_some_and(|r| r.contains("no repetition")));
+            }
+        }
+    }
+    assert!(none as f64 >= 0.9 * calls as f64, "{none} of {calls} calls on irregular input say no repetition");
+}

@@ -76,6 +76,11 @@ const SNAP_SURE: f64 = 20.0;
 const BEND_CHANGE: f64 = 0.25;
 /// Why nothing (more) is proposed while the sequence goes on.
 const UNCERTAIN: &str = "The copies drawn so far leave the next ones too uncertain: draw one more.";
+/// Why nothing is proposed where copies repeat but do not yet show the next step.
+const UNFOLLOWED: &str = "The copies drawn so far do not yet show where the next one goes: draw one more.";
+/// ...and the path through their latest four turns by at most this much a step (1.3
+/// radians: leaves along a curly stem turn by up to 1).
+const UNFOLLOWED_TURN: f64 = 1.3;
 /// A run that does not pass the local test holds at least four hand-drawn copies, its
 /// lead-in counted (a stem that bends on, past ghosts accepted from its earlier turn),
 /// each within this share of the step of its site on the run's orbit.
@@ -404,13 +409,29 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
     if !run.contains(&last) {
         return None;
     }
-    let Model { orbit, closes, bend_error } = model(&d, &run, step, [one.a, two.a], lead)?;
+    // Where no step carries the copies on (a stem that bends, mid-way), they may still
+    // repeat: the latest four of one shape each about a step on from the one before,
+    // along a path that turns by less than `UNFOLLOWED_TURN` a step (dashes scattered
+    // anywhere seldom are), and the page says so, not "no repetition yet" with seventeen
+    // leaves drawn.
+    let unfollowed = || {
+        let moves: Vec<Vec2> = (at >= 3)
+            .then(|| chain[at - 3..=at].windows(2).map(|w| centre(w[1]) - centre(w[0])).collect())
+            .unwrap_or_default();
+        let spaced = moves.len() == 3
+            && moves.iter().all(|m| (0.75 * step..=step / 0.75).contains(&m.hypot()))
+            && moves.windows(2).all(|w| w[0].cross(w[1]).atan2(w[0].dot(w[1])).abs() < UNFOLLOWED_TURN);
+        spaced.then(|| Suggestions { reason: Some(UNFOLLOWED.into()), ..Default::default() })
+    };
+    let Some(Model { orbit, closes, bend_error }) = model(&d, &run, step, [one.a, two.a], lead) else {
+        return unfollowed();
+    };
     if !local {
         let hand: Vec<usize> = (0..run.len()).filter(|&t| d.hand(run[t])).collect();
         if hand.len() + usize::from(lead.is_some()) < 4
             || hand.iter().any(|&t| orbit.at(t as i64).distance(d.z(run[t])) > RUN_PLACE * step)
         {
-            return None;
+            return unfollowed();
         }
     }
     let inflate = backtest(&d, &run, step, [one.a, two.a], lead);
