@@ -415,9 +415,8 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
     // anywhere seldom are), and the page says so, not "no repetition yet" with seventeen
     // leaves drawn.
     let unfollowed = || {
-        let moves: Vec<Vec2> = (at >= 3)
-            .then(|| chain[at - 3..=at].windows(2).map(|w| centre(w[1]) - centre(w[0])).collect())
-            .unwrap_or_default();
+        let latest = &chain[at.saturating_sub(3)..=at];
+        let moves: Vec<Vec2> = latest.windows(2).map(|w| centre(w[1]) - centre(w[0])).collect();
         let spaced = moves.len() == 3
             && moves.iter().all(|m| (0.75 * step..=step / 0.75).contains(&m.hypot()))
             && moves.windows(2).all(|w| w[0].cross(w[1]).atan2(w[0].dot(w[1])).abs() < UNFOLLOWED_TURN);
