@@ -1,6 +1,8 @@
 // Zoom and pan of the texture previews (issue 29): the blend's texture and the seamless
 // tile repeated zoom with the buttons and the keyboard (+, −, 0, arrows on the focused
 // view), pan once zoomed, stay inside their frame, and fit again with a new result.
+// The level is screen pixels per picture pixel (issue 25's trial: a tile shown at twice
+// its size read 100%), and 1 shows the pixels one to one.
 // Screenshots: out/zoom-blend.png, out/zoom-seamless.png.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
@@ -21,13 +23,19 @@ const transform = (id) => page.$eval(`#${id}`, (v) => {
   return m ? [Number(m[3]), Number(m[1]), Number(m[2])] : [1, 0, 0];
 });
 
-async function zoomsAndPans(prefix, view) {
-  assert.equal(await page.textContent(`#${prefix}-zoom-level`), '100%');
+/** Screen pixels per picture pixel of the fitted picture, measured on the page:
+ *  the picture's laid-out width over the result's own (`natural`, in pixels). */
+const fittedScale = (view, natural) => page.$eval(`#${view}`, (v, n) => v.firstElementChild.clientWidth / n, natural);
+const level = async (prefix) => Number((await page.textContent(`#${prefix}-zoom-level`)).replace('%', ''));
+
+async function zoomsAndPans(prefix, view, natural) {
+  const fit = await fittedScale(view, natural);
+  assert.equal(await level(prefix), Math.round(100 * fit), `fitted at ${fit}`);
   await page.click(`#${prefix}-zoom-in`);
   assert.equal((await transform(view))[0], 1.5);
   await page.focus(`#${view}`);
   await page.keyboard.press('+');
-  assert.equal(await page.textContent(`#${prefix}-zoom-level`), '225%');
+  assert.equal(await level(prefix), Math.round(225 * fit));
   const [s, x0, y0] = await transform(view);
   await page.keyboard.press('ArrowLeft');
   await page.keyboard.press('ArrowUp');
@@ -40,6 +48,12 @@ async function zoomsAndPans(prefix, view) {
   await page.screenshot({ path: `out/zoom-${prefix === 'seam' ? 'seamless' : 'blend'}.png` });
   await page.keyboard.press('0');
   assert.deepEqual(await transform(view), [1, 0, 0]);
+  // One to one where the fitted picture is smaller; else it stays fitted.
+  await page.keyboard.press('1');
+  assert.equal(await level(prefix), Math.max(100, Math.round(100 * fit)));
+  const one = (await transform(view))[0];
+  assert.ok(Math.abs(one - Math.max(1, 1 / fit)) < 1e-4, `zoom ${one} for a picture fitted at ${fit}`);
+  await page.keyboard.press('0');
 }
 
 test('the blend texture zooms and pans', async () => {
@@ -49,7 +63,7 @@ test('the blend texture zooms and pans', async () => {
   await page.fill('#blend-height', '128');
   await page.click('#blend-run');
   await page.waitForFunction(() => document.querySelector('#blend-messages').textContent === 'Done.', null, { timeout: 60000 });
-  await zoomsAndPans('blend', 'blend-view');
+  await zoomsAndPans('blend', 'blend-view', 128);
 });
 
 test('the seamless tile repeated zooms and pans, and a new tile is fitted again', async () => {
@@ -57,7 +71,8 @@ test('the seamless tile repeated zooms and pans, and a new tile is fitted again'
   await page.waitForFunction(() => document.querySelector('#seam-source').width > 0);
   await page.click('#seam-run');
   await page.waitForFunction(() => document.querySelector('#seam-repeat').classList.contains('shown'), null, { timeout: 120_000 });
-  await zoomsAndPans('seam', 'seam-view');
+  const tile = await page.$eval('#seam-result', (c) => c.width);
+  await zoomsAndPans('seam', 'seam-view', 3 * tile);
   await page.click('#seam-zoom-in');
   await page.click('#seam-run');
   await page.waitForFunction(() => !document.querySelector('#seam-run').disabled && document.querySelector('#seam-repeat').classList.contains('shown'), null, { timeout: 120_000 });

@@ -1,16 +1,20 @@
 // Zoom and pan of a result preview, as image viewers do it: Ctrl/⌘ + wheel (a
 // trackpad's pinch) or two fingers zoom about the pointer, a drag pans once zoomed,
 // and the buttons and keys (+, −, 0 and the arrows on the focused view) do the same
-// from a keyboard. A picture put in its place (the same result restyled) keeps the
-// zoom; `reset()` fits a new result.
+// from a keyboard; 1 shows a picture of pixels one to one. A picture put in its place
+// (the same result restyled) keeps the zoom; `reset()` fits a new result.
 
 const MAX_ZOOM = 16;
 const STEP = 1.5;
 
 /** Makes `view` (its first child is the picture) zoomable; `controls`: the zoom in,
  *  zoom out and fit buttons and an output for the level; `shown()`: whether there is a
- *  picture yet (a blank canvas is none). */
-export function zoomable(view, { zoomIn, zoomOut, fit, level, onSettle, shown = () => true }) {
+ *  picture yet (a blank canvas is none); `natural()`: for a picture of pixels, its
+ *  width in them. The level then reads as a designer's image editor reads it, screen
+ *  pixels (CSS) per picture pixel: 100% is one to one, and a tile fitted at twice its
+ *  size reads 200% (it read 100%, the fitted view's zoom, whatever the picture's
+ *  scale); else it is the zoom over the fitted view. */
+export function zoomable(view, { zoomIn, zoomOut, fit, level, onSettle, shown = () => true, natural }) {
   let s = 1, x = 0, y = 0;
   // Once the zoom stops changing, the owner may draw the picture again at that scale
   // (sharp instead of a bitmap stretched).
@@ -21,11 +25,16 @@ export function zoomable(view, { zoomIn, zoomOut, fit, level, onSettle, shown = 
     x = Math.min(0, Math.max(w - w * s, x));
     y = Math.min(0, Math.max(h - h * s, y));
   };
+  /** The fitted picture's screen pixels per picture pixel (1 without `natural`). */
+  const fitted = () => {
+    const c = content(), n = natural?.();
+    return c && n > 0 && c.clientWidth > 0 ? c.clientWidth / n : 1;
+  };
   const apply = () => {
     const c = content();
     clamp();
     if (c) Object.assign(c.style, { transformOrigin: '0 0', transform: s === 1 ? '' : `translate(${x}px, ${y}px) scale(${s})` });
-    level.value = `${Math.round(s * 100)}%`;
+    level.value = `${Math.round(s * fitted() * 100)}%`;
     view.classList.toggle('zoomed', s > 1);
     zoomOut.disabled = fit.disabled = s === 1 || !c;
     zoomIn.disabled = s >= MAX_ZOOM || !c;
@@ -92,6 +101,8 @@ export function zoomable(view, { zoomIn, zoomOut, fit, level, onSettle, shown = 
     if (e.key === '+' || e.key === '=') zoomAt(STEP);
     else if (e.key === '-') zoomAt(1 / STEP);
     else if (e.key === '0') reset();
+    // (One to one, where the fitted picture is shown smaller than that.)
+    else if (e.key === '1' && natural) zoomAt(Math.max(1, 1 / fitted()) / s);
     else if (pan && s > 1) {
       x += pan[0];
       y += pan[1];

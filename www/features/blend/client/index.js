@@ -270,6 +270,7 @@ export function mountBlend(root, client) {
   const zoom = zoomable($('blend-view'), {
     zoomIn: $('blend-zoom-in'), zoomOut: $('blend-zoom-out'), fit: $('blend-zoom-fit'), level: $('blend-zoom-level'),
     shown: () => $('blend-download').getAttribute('aria-disabled') !== 'true',
+    natural: () => $('blend-result').width,
   });
 
   // --- start ---

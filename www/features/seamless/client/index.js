@@ -57,6 +57,7 @@ export function mountSeamless(root, client) {
   const zoom = zoomable($('seam-view'), {
     zoomIn: $('seam-zoom-in'), zoomOut: $('seam-zoom-out'), fit: $('seam-zoom-fit'), level: $('seam-zoom-level'),
     shown: () => $('seam-repeat').classList.contains('shown'),
+    natural: () => 3 * $('seam-result').width,
   });
 
   // --- run ---
