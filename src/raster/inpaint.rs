@@ -29,6 +29,13 @@ pub struct InpaintOptions {
 /// and 1.12).
 pub const FILL_NEIGHBOURHOOD: usize = 11;
 
+/// The fill's finest level is matched with 5 x 5 neighbourhoods (`Params::detail_levels`):
+/// the wide side places the structure at the coarser levels. On the same eight
+/// photographs (examples/inpaint_edge, seeds 1-3) the fill's median patch energy fell
+/// from 11.06 to 9.35 and its edge step from 1.08 to 1.06, in about two thirds of the
+/// time; with the two finest levels so, 10.15 and 1.09.
+pub const FILL_DETAIL_LEVELS: usize = 1;
+
 impl Default for InpaintOptions {
     fn default() -> Self {
         let p = Params::default();
@@ -75,6 +82,7 @@ pub fn inpaint_texture(
         seed: opts.seed,
         levels: opts.levels,
         neighbourhood: opts.neighbourhood,
+        detail_levels: FILL_DETAIL_LEVELS,
     };
     fill.run(image, progress)
 }
@@ -89,6 +97,8 @@ pub struct Fill {
     pub seed: u64,
     pub levels: Option<usize>,
     pub neighbourhood: usize,
+    /// The finest levels matched with 5 x 5 neighbourhoods (`Params::detail_levels`).
+    pub detail_levels: usize,
 }
 
 impl Fill {
@@ -117,6 +127,7 @@ impl Fill {
             seed: self.seed,
             levels: self.levels,
             neighbourhood: self.neighbourhood,
+            detail_levels: self.detail_levels,
             tileable: self.torus,
             constraints: Constraints { allowed: vec![Some(allowed)], known: Some(self.known), guide: None },
             ..Params::default()

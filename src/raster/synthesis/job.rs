@@ -332,15 +332,18 @@ impl Job {
     /// One pass over `level`, whose parent level's sources are `parent_src` (empty at the
     /// coarsest level).
     pub(crate) fn pass<'a>(&'a self, level: usize, parent_src: &'a [Vec<u32>]) -> Pass<'a> {
+        self.pass_shaped(level, parent_src, &self.full)
+    }
+
+    /// `pass` whose full neighbourhood is `full` (a known pixel's fine levels).
+    pub(crate) fn pass_shaped<'a>(&'a self, level: usize, parent_src: &'a [Vec<u32>], full: &Shape) -> Pass<'a> {
         let (lw, lh) = self.sizes[level];
         let exs = &self.mix.exs;
         let with_parent = level + 1 < self.levels;
         let side = self.params.neighbourhood;
         let offsets = exs
             .iter()
-            .map(|ex| {
-                (Offsets::new(&self.causal, ex.levels[level].width), Offsets::new(&self.full, ex.levels[level].width))
-            })
+            .map(|ex| (Offsets::new(&self.causal, ex.levels[level].width), Offsets::new(full, ex.levels[level].width)))
             .collect();
         Pass {
             mix: &self.mix,

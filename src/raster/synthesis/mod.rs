@@ -50,6 +50,11 @@ pub struct Params {
     pub levels: Option<usize>,
     /// Neighbourhood side (odd, at least 3): 5 means a 5x5 causal L-shape.
     pub neighbourhood: usize,
+    /// Around known pixels (`pinned`), the finest levels matched with 5 x 5
+    /// neighbourhoods whatever `neighbourhood` is: the wide side places the structure at
+    /// the coarser levels, and its search, whose candidates come from every neighbour,
+    /// costs the side's fourth power where the pixels are most.
+    pub detail_levels: usize,
     pub exhaustive: bool,
     /// Make the output tile: its wrap-around seams are re-synthesized with full,
     /// wrapping neighbourhoods.
@@ -137,6 +142,7 @@ impl Default for Params {
             seed: 1,
             levels: None,
             neighbourhood: 5,
+            detail_levels: 0,
             exhaustive: false,
             tileable: false,
             random_candidates: 2,

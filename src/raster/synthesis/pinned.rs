@@ -20,6 +20,7 @@ use super::reuse::Uses;
 use crate::error::Result;
 use crate::progress::Throttle;
 use crate::raster::image::wrap;
+use crate::raster::neighbourhood::Shape;
 use crate::rng::Rng;
 use std::collections::VecDeque;
 
@@ -52,19 +53,22 @@ pub(super) fn sources(job: &Job, progress: &mut Throttle) -> Result<Vec<Vec<u32>
     let total = free.iter().map(Vec::len).sum::<usize>().max(1) * passes;
     let mut done = 0usize;
     let mut parent_src: Vec<Vec<u32>> = Vec::new();
+    // (The finest `detail_levels` match 5 x 5 neighbourhoods: see `Params`.)
+    let detail = Shape::full(2);
     for level in (0..job.levels).rev() {
         let (lw, lh) = job.sizes[level];
         let src =
             if job.started(level) { job.starts()[0].clone() } else { upsampled(job, level, &parent_src[0], &mut rng) };
         let uses = Uses::count(job, level, |_, y, out| out.extend_from_slice(&src[y * lw..(y + 1) * lw]));
         let mut map = Map::whole(vec![src], uses, lw, lh);
-        let pass = job.pass(level, &parent_src);
+        let shape = if level < params.detail_levels && job.full.half > 2 { &detail } else { &job.full };
+        let pass = job.pass_shaped(level, &parent_src, shape);
         let mut scratch = Scratch::new(&job.full);
         let free = &free[level];
         for p in 0..passes {
             for k in 0..free.len() {
                 let i = free[if p % 2 == 1 { free.len() - 1 - k } else { k }] as usize;
-                pass.pixel(&mut map, &job.full, true, i % lw, i / lw, &mut rng, &mut scratch);
+                pass.pixel(&mut map, shape, true, i % lw, i / lw, &mut rng, &mut scratch);
                 if k % lw == lw - 1 {
                     progress.tick((done + k) as f64 / total as f64)?;
                 }
