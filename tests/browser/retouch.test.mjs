@@ -80,6 +80,13 @@ test('from the keyboard: the arrows move the brush and Space paints; Clear empti
 test('the mask and the settings survive a reload', async () => {
   const mask = await painted();
   await page.selectOption('#ret-action', 'mend');
+  // (The write starts with the change; a reload before IndexedDB commits it may lose it,
+  // as settings.test.mjs waits for too: under a loaded machine the page came back with
+  // 'fill'.)
+  await page.waitForFunction((key) => new Promise((ok) => {
+    const r = indexedDB.open('patternsynth');
+    r.onsuccess = () => { const g = r.result.transaction('kept').objectStore('kept').get(`settings:${key}`); g.onsuccess = () => ok(g.result?.action === 'mend'); };
+  }), 'patternsynth.retouch.settings.v1');
   await page.reload();
   await page.click('[data-tab="retouch"]');
   await page.waitForFunction(() => document.querySelector('#ret-mask-info').textContent === 'painted', null, { timeout: 10000 });
