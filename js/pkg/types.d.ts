@@ -108,7 +108,8 @@ export interface TextureWithLayout { image: RgbaImage; layout: Layout }
 export interface InpaintOptions {
   seed?: number; levels?: number;
   /** Side of the matched neighbourhood, odd (default 11: wider than synthesis's 5, the
-   *  fill matched to more of the photograph round it). */
+   *  fill matched to more of the photograph round it); the finest level is matched
+   *  5 x 5 whatever the side, where it only refines detail. */
   neighbourhood?: number;
   /** Pixels never copied into the hole (opaque white: kept out). */
   sampleMask?: Mask;

@@ -1,8 +1,9 @@
 //! Hand-drawn repetitions that are not lattices (test support, issue 27): rings of
-//! petals, spirals, leaves along an arc and along S-shaped and wavy stems, hatching along a turning and
-//! a straight contour, each copy a similarity transform of the one before (along the S,
-//! of the one before only locally), drawn copy by copy with a wobble
-//! (each copy's place off by `wobble` of the step, its points by a fifth of that).
+//! petals, spirals, leaves along an arc and along S-shaped, wavy and curly stems,
+//! hatching along a turning and a straight contour, each copy a similarity transform of
+//! the one before (along the stems, of the one before only locally), drawn copy by copy
+//! with a wobble (each copy's place off by `wobble` of the step, its points by a fifth
+//! of that).
 
 use super::replay::{replay_each, Replay};
 use super::stroke::Stroke;

@@ -355,8 +355,13 @@ impl Job {
             // The coarsest level is searched exhaustively when that is cheap (a few
             // hundred exemplar positions); a thin exemplar has only one level, at full
             // size, where exhaustive search would take minutes: coherent search there.
+            // Around known pixels the onion start has searched the coarsest level already
+            // (`pinned`): its passes search coherently, as the finer levels' do (searching
+            // again with 11 x 11 neighbourhoods was a third of a small tile's mending: the
+            // 128-pixel grass and gravel fixtures took 35-36 ms rather than 23-24).
             exhaustive: self.params.exhaustive
                 || (level + 1 == self.levels
+                    && self.known.is_none()
                     && (lw * lh)
                         .saturating_mul(exs.iter().map(|e| e.levels[level].data.len()).sum())
                         .saturating_mul(side * side)

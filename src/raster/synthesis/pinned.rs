@@ -15,7 +15,7 @@
 use super::exemplar::Plane;
 use super::job::Job;
 use super::lanes::{Px, Sum};
-use super::pass::{Map, Pass, Scratch};
+use super::pass::{Map, Scratch};
 use super::reuse::Uses;
 use crate::error::Result;
 use crate::progress::Throttle;
@@ -62,11 +62,7 @@ pub(super) fn sources(job: &Job, progress: &mut Throttle) -> Result<Vec<Vec<u32>
         let uses = Uses::count(job, level, |_, y, out| out.extend_from_slice(&src[y * lw..(y + 1) * lw]));
         let mut map = Map::whole(vec![src], uses, lw, lh);
         let shape = if level < params.detail_levels && job.full.half > 2 { &detail } else { &job.full };
-        // (The coarsest level's passes search coherently, as the finer levels' do: the
-        // onion start searched it exhaustively already, and again with 11 x 11
-        // neighbourhoods was half a small tile's mending time: 128-pixel fixtures, 35
-        // ms rather than 24, their wraps as well joined.)
-        let pass = Pass { exhaustive: false, ..job.pass_shaped(level, &parent_src, shape) };
+        let pass = job.pass_shaped(level, &parent_src, shape);
         let mut scratch = Scratch::new(&job.full);
         let free = &free[level];
         for p in 0..passes {
