@@ -101,6 +101,17 @@ pub struct Fill {
     pub detail_levels: usize,
 }
 
+/// The neighbourhood side a fill uses on an image whose short side is `short`: `side`,
+/// or on a small image the largest odd side that leaves at least four positions a row
+/// and a column to copy from (at least 3). A 10-pixel image was refused as "smaller
+/// than the 11x11 neighbourhood", which a fill's user never chose: mending promises 8
+/// pixels a side, and did so with 5 x 5.
+fn fitted_side(side: usize, short: usize) -> usize {
+    let most = short.saturating_sub(3);
+    let odd = if most % 2 == 1 { most } else { most.saturating_sub(1) };
+    side.min(odd).max(3)
+}
+
 impl Fill {
     pub fn run(self, image: &Rgba, progress: &mut dyn Progress) -> Result<Rgba> {
         let mut out = image.clone();
@@ -114,8 +125,9 @@ impl Fill {
         // filled from such columns came out as streaks (brick's mended wrap: boundaries
         // 0.2 times the mean difference, then a step of 2.5 where the streaks met the
         // photograph).
-        let half = self.neighbourhood / 2;
         let (w, h) = (image.width, image.height);
+        let side = fitted_side(self.neighbourhood, w.min(h));
+        let half = side / 2;
         let inside = |i: usize| {
             let (x, y) = (i % w, i / w);
             x >= half && y >= half && x + half < w && y + half < h
@@ -126,7 +138,7 @@ impl Fill {
             height: image.height,
             seed: self.seed,
             levels: self.levels,
-            neighbourhood: self.neighbourhood,
+            neighbourhood: side,
             detail_levels: self.detail_levels,
             tileable: self.torus,
             constraints: Constraints { allowed: vec![Some(allowed)], known: Some(self.known), guide: None },
@@ -145,5 +157,26 @@ impl Fill {
         // at the hole's edge (`heal`).
         super::heal::heal(&mut out, image, &src[0], known, params.tileable);
         Ok(out)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::Silent;
+
+    #[test]
+    fn a_small_image_is_filled_with_the_neighbourhood_it_allows() {
+        assert_eq!([8, 10, 13, 14, 40].map(|short| fitted_side(11, short)), [5, 7, 9, 11, 11]);
+        assert_eq!(fitted_side(5, 40), 5);
+        assert_eq!(fitted_side(11, 2), 3);
+        // A 10 x 10 picture with a 2 x 2 hole, by default (11): filled, the rest kept.
+        let data: Vec<u8> = (0..100).flat_map(|i| [(i * 7 % 256) as u8, (i * 13 % 256) as u8, 90, 255]).collect();
+        let image = Rgba { width: 10, height: 10, data };
+        let hole: Vec<bool> = (0..100).map(|i| (4..6).contains(&(i % 10)) && (4..6).contains(&(i / 10))).collect();
+        let out = inpaint_texture(&image, &hole, &InpaintOptions::default(), &mut Silent).expect("a small fill");
+        for i in (0..100).filter(|&i| !hole[i]) {
+            assert_eq!(out.data[4 * i..4 * i + 4], image.data[4 * i..4 * i + 4]);
+        }
     }
 }
