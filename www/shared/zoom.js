@@ -9,12 +9,12 @@ const STEP = 1.5;
 
 /** Makes `view` (its first child is the picture) zoomable; `controls`: the zoom in,
  *  zoom out and fit buttons and an output for the level; `shown()`: whether there is a
- *  picture yet (a blank canvas is none); `natural()`: for a picture of pixels, its
- *  width in them. The level then reads as a designer's image editor reads it, screen
- *  pixels (CSS) per picture pixel: 100% is one to one, and a tile fitted at twice its
- *  size reads 200% (it read 100%, the fitted view's zoom, whatever the picture's
- *  scale); else it is the zoom over the fitted view. */
-export function zoomable(view, { zoomIn, zoomOut, fit, level, onSettle, shown = () => true, natural }) {
+ *  picture yet (a blank canvas is none); `scale()`: for a picture of pixels, the
+ *  screen pixels (CSS) each of its pixels covers when fitted. The level then reads as a
+ *  designer's image editor reads it, screen pixels per picture pixel: 100% is one to
+ *  one, and a tile fitted at twice its size reads 200% (it read 100%, the fitted view's
+ *  zoom, whatever the picture's scale); else it is the zoom over the fitted view. */
+export function zoomable(view, { zoomIn, zoomOut, fit, level, onSettle, shown = () => true, scale }) {
   let s = 1, x = 0, y = 0;
   // Once the zoom stops changing, the owner may draw the picture again at that scale
   // (sharp instead of a bitmap stretched).
@@ -25,10 +25,10 @@ export function zoomable(view, { zoomIn, zoomOut, fit, level, onSettle, shown = 
     x = Math.min(0, Math.max(w - w * s, x));
     y = Math.min(0, Math.max(h - h * s, y));
   };
-  /** The fitted picture's screen pixels per picture pixel (1 without `natural`). */
+  /** The fitted picture's screen pixels per picture pixel (1 without `scale`). */
   const fitted = () => {
-    const c = content(), n = natural?.();
-    return c && n > 0 && c.clientWidth > 0 ? c.clientWidth / n : 1;
+    const k = content() && scale?.();
+    return k > 0 ? k : 1;
   };
   const apply = () => {
     const c = content();
@@ -102,7 +102,7 @@ export function zoomable(view, { zoomIn, zoomOut, fit, level, onSettle, shown = 
     else if (e.key === '-') zoomAt(1 / STEP);
     else if (e.key === '0') reset();
     // (One to one, where the fitted picture is shown smaller than that.)
-    else if (e.key === '1' && natural) zoomAt(Math.max(1, 1 / fitted()) / s);
+    else if (e.key === '1' && scale) zoomAt(Math.max(1, 1 / fitted()) / s);
     else if (pan && s > 1) {
       x += pan[0];
       y += pan[1];

@@ -270,7 +270,8 @@ export function mountBlend(root, client) {
   const zoom = zoomable($('blend-view'), {
     zoomIn: $('blend-zoom-in'), zoomOut: $('blend-zoom-out'), fit: $('blend-zoom-fit'), level: $('blend-zoom-level'),
     shown: () => $('blend-download').getAttribute('aria-disabled') !== 'true',
-    natural: () => $('blend-result').width,
+    // (The canvas's pixels are stretched over its box, borders excluded.)
+    scale: () => $('blend-result').clientWidth / $('blend-result').width,
   });
 
   // --- start ---

@@ -19,6 +19,7 @@ export function mountSeamless(root, client) {
   };
   let image = null;
   let resultUrl = null;
+  let shownScale = 1; // the tile's screen pixels per pixel in its repeat (see `tilePanel.show`)
 
   // --- the exemplar ---
   function show(rgba) {
@@ -57,7 +58,9 @@ export function mountSeamless(root, client) {
   const zoom = zoomable($('seam-view'), {
     zoomIn: $('seam-zoom-in'), zoomOut: $('seam-zoom-out'), fit: $('seam-zoom-fit'), level: $('seam-zoom-level'),
     shown: () => $('seam-repeat').classList.contains('shown'),
-    natural: () => 3 * $('seam-result').width,
+    // (The tile is drawn as a background at the scale it was shown at, whatever
+    // width its repeat's box is given.)
+    scale: () => shownScale,
   });
 
   // --- run ---
@@ -93,6 +96,7 @@ export function mountSeamless(root, client) {
       // Whole pixels when the column has room, scaled down to fit it when it has not.
       const fit = Math.min(512, $('seam-view').parentElement.clientWidth - 16) / (3 * width);
       const scale = fit >= 1 ? Math.floor(fit) : fit;
+      shownScale = scale;
       tile.show({ url: resultUrl, file: `seamless-${settings.method}-${width}x${height}.png`, width, height, scale });
       zoom.reset(); // (after the tile is shown: it enables the zoom)
       $('seam-info').textContent = `${width}×${height}, restoration rate ${(100 * r.restorationRate).toFixed(1)}%, seam score ${r.seamScore.toFixed(2)} (about 1: no seam), ${ms.toFixed(0)} ms`;
