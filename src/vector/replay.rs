@@ -21,6 +21,8 @@ pub struct Replay {
     pub wrong: usize,
     /// Shown proposals where the hand would go on past the drawing's end.
     pub beyond: usize,
+    /// How many strokes were on the page when each wrong proposal was shown.
+    pub wrong_at: Vec<usize>,
     /// Of the wrong ones, those on a stroke of their class already drawn (or accepted):
     /// a copy proposed again beside itself.
     pub stacked: usize,
@@ -96,6 +98,7 @@ pub fn replay_each(truth: &[Stroke], classes: &[u32], region: Rect, tol: &[f64],
                 None if past => r.beyond += 1,
                 None => {
                     r.wrong += 1;
+                    r.wrong_at.push(drawn.len());
                     r.stacked +=
                         usize::from((0..truth.len()).any(|g| {
                             done[g] && classes[g] == class && truth[g].reference_point().distance(p) < tol[g]

@@ -1,6 +1,7 @@
 //! Hand-drawn repetitions that are not lattices (test support, issue 27): rings of
-//! petals, spirals, leaves along an arc and along S-shaped, wavy and curly stems,
-//! hatching along a turning and a straight contour, each copy a similarity transform of
+//! petals, spirals, leaves along an arc, along S-shaped, wavy and curly stems, along
+//! Bézier curves and along a row that turns a corner, hatching along a turning and a
+//! straight contour, each copy a similarity transform of
 //! the one before (along the stems, of the one before only locally), drawn copy by copy
 //! with a wobble (each copy's place off by `wobble` of the step, its points by a fifth
 //! of that).
@@ -120,14 +121,29 @@ pub fn circle_grid(wobble: f64, seed: u64, anywhere: bool) -> (Vec<Stroke>, kurb
 /// Leaves one every 40 along the sine `y = 300 + amplitude sin((x - 300) / scale)` from
 /// `x0`, each turned with it: `n` drawn and `BEYOND` more.
 fn stem(name: &str, amplitude: f64, scale: f64, x0: f64, n: usize, wobble: f64, seed: u64) -> Sequence {
+    let path = |x: f64| Point::new(x, 300.0 + amplitude * ((x - 300.0) / scale).sin());
+    leaves_along(name, path, (x0, 0.5), n, (wobble, 0.0), seed)
+}
+
+/// Leaves one every 40 (of arc length) along `path(t)` from `t = from.0` on in steps of
+/// `from.1`, each turned with the path: `n` drawn and `BEYOND` more. Each leaf is off
+/// its place by `wobble.0` of the step (its points by a fifth of that) and turned off
+/// the path's direction by `wobble.1` radian (the angle a hand gets wrong too).
+fn leaves_along(
+    name: &str,
+    path: impl Fn(f64) -> Point,
+    from: (f64, f64),
+    n: usize,
+    wobble: (f64, f64),
+    seed: u64,
+) -> Sequence {
     let mut rng = Rng::new(seed);
     let step = 40.0;
-    let path = |x: f64| Point::new(x, 300.0 + amplitude * ((x - 300.0) / scale).sin());
-    let (mut sites, mut along, mut x) = (Vec::new(), 0.0, x0);
+    let (mut sites, mut along, mut t) = (Vec::new(), 0.0, from.0);
     while sites.len() < n + BEYOND {
-        let (p, q) = (path(x), path(x + 0.5));
+        let (p, q) = (path(t), path(t + from.1));
         along += p.distance(q);
-        x += 0.5;
+        t += from.1;
         if along >= step || sites.is_empty() {
             along = 0.0;
             sites.push((p, (q.y - p.y).atan2(q.x - p.x)));
@@ -136,11 +152,34 @@ fn stem(name: &str, amplitude: f64, scale: f64, x0: f64, n: usize, wobble: f64, 
     let strokes = sites
         .iter()
         .map(|&(p, phi)| {
-            let jitter = Vec2::new(rng.normal(), rng.normal()) * (wobble * step);
-            leaf(p + jitter, phi - 0.6, 36.0, &mut rng, 0.2 * wobble * step)
+            let jitter = Vec2::new(rng.normal(), rng.normal()) * (wobble.0 * step);
+            let turn = if wobble.1 > 0.0 { rng.normal() * wobble.1 } else { 0.0 };
+            leaf(p + jitter, phi - 0.6 + turn, 36.0, &mut rng, 0.2 * wobble.0 * step)
         })
         .collect();
     Sequence { name: name.into(), strokes, step, steps: Vec::new(), beyond: Vec::new(), canvas: kurbo::Rect::ZERO }
+}
+
+/// The cubic Bézier curve through `p[0]` and `p[3]` with control points `p[1]`, `p[2]`.
+fn bezier(p: [(f64, f64); 4]) -> impl Fn(f64) -> Point {
+    move |t| {
+        let u = 1.0 - t;
+        let w = [u * u * u, 3.0 * u * u * t, 3.0 * u * t * t, t * t * t];
+        let (x, y) = p.iter().zip(w).fold((0.0, 0.0), |(x, y), (q, w)| (x + w * q.0, y + w * q.1));
+        Point::new(x, y)
+    }
+}
+
+/// A straight row from (60, 300), 400 long, that turns by `angle` and goes on as far.
+fn kinked(angle: f64) -> impl Fn(f64) -> Point {
+    move |t| {
+        let d = 800.0 * t;
+        if d <= 400.0 {
+            Point::new(60.0 + d, 300.0)
+        } else {
+            Point::new(460.0, 300.0) + Vec2::new(angle.cos(), angle.sin()) * (d - 400.0)
+        }
+    }
 }
 
 /// Every family at `wobble` (share of the step), seeded.
@@ -250,6 +289,18 @@ pub fn sequences(wobble: f64, seed: u64) -> Vec<Sequence> {
     out.push(stem("leaves on an S-curve", 70.0, 110.0, 70.0, 12, wobble, seed * 131 + 13));
     out.push(stem("leaves on a wavy stem", 40.0, 400.0 / TAU, 50.0, 16, wobble, seed * 131 + 19));
     out.push(stem("leaves on a curly stem", 60.0, 300.0 / TAU, 50.0, 16, wobble, seed * 131 + 23));
+    // A new user's curves (a helper's trial): leaves along a Bézier arch and a Bézier S,
+    // and along a row that turns by 60 and by 30 degrees half way, each leaf turned off
+    // the path by the wobble too.
+    let arch = bezier([(60.0, 500.0), (250.0, 50.0), (650.0, 50.0), (840.0, 500.0)]);
+    let s = bezier([(60.0, 150.0), (700.0, -50.0), (200.0, 750.0), (840.0, 450.0)]);
+    let along = |k: u64, name: &str, path: &dyn Fn(f64) -> Point| {
+        leaves_along(name, path, (0.0, 1.0 / 8000.0), 16, (wobble, wobble), seed * 131 + 29 + k)
+    };
+    out.push(along(0, "leaves on a Bézier arch", &arch));
+    out.push(along(1, "leaves on a Bézier S", &s));
+    out.push(along(2, "leaves on a row turning 60°", &kinked(60f64.to_radians())));
+    out.push(along(3, "leaves on a row turning 30°", &kinked(30f64.to_radians())));
     // Hatching along a straight contour: a row, the lattice's (lines 70 long, 9 apart, at
     // 60 degrees).
     {

@@ -201,7 +201,8 @@ impl Fit {
             (0..n).map(|i| fit.site(fit.cell[i].0, fit.cell[i].1).distance(elems[i].pos)).collect();
         crate::order::floats(&mut residuals);
         let residual = residuals[n / 2];
-        if residual > MAX_RESIDUAL * spread.spacing || fit.contradicted(elems, &spread.grid, tol, strict) {
+        if residual > MAX_RESIDUAL * spread.spacing || fit.contradicted(elems, &spread.grid, tol, strict) || fit.apart()
+        {
             return None;
         }
         let quality = (explained as f64 / total as f64) * (1.0 - residual / spread.spacing);
@@ -308,6 +309,79 @@ impl Fit {
             }
         }
         false
+    }
+
+    /// Whether the motif positions are not parts of one copy. Each position is moved by
+    /// whole periods next to the first (of the shifts that round its origin's offset
+    /// down or up, the one whose cells share most with the first's), and positions
+    /// that share more than half the cells of the smaller are parts of one group. A
+    /// group that shares at most half its cells with the others must then hold most of
+    /// theirs (a second part filled in after the first was drawn all along its row).
+    /// A motif of several parts drawn in order is one group; a row that turns a corner,
+    /// read as a lattice of the periods before and after it (the leaves past the corner
+    /// parts ten periods off those before it), is two, sharing one cell at most.
+    fn apart(&self) -> bool {
+        let positions: Vec<&MotifPosition> = self.motif.iter().filter(|m| m.members.len() >= 2).collect();
+        if positions.len() < 2 {
+            return false;
+        }
+        let lattice = self.lattice();
+        let cells_of = |mp: &MotifPosition, (du, dw): (i64, i64)| {
+            let mut cells: Vec<(i64, i64)> = mp
+                .members
+                .iter()
+                .map(|&i| {
+                    let (u, w) = self.cell[i].1;
+                    (u + du, w + dw)
+                })
+                .collect();
+            cells.sort_unstable();
+            cells.dedup();
+            cells
+        };
+        let shared = |x: &[(i64, i64)], y: &[(i64, i64)]| x.iter().filter(|c| y.binary_search(c).is_ok()).count();
+        let first = cells_of(positions[0], (0, 0));
+        let mut cells = vec![first.clone()];
+        for mp in &positions[1..] {
+            let (u, w) = lattice.coords(mp.origin - positions[0].origin);
+            let shifts = [(u.floor(), w.floor()), (u.ceil(), w.floor()), (u.floor(), w.ceil()), (u.ceil(), w.ceil())];
+            let best = shifts
+                .iter()
+                .map(|&(du, dw)| cells_of(mp, (du as i64, dw as i64)))
+                .max_by_key(|c| shared(c, &first))
+                .unwrap_or_default();
+            cells.push(best);
+        }
+        // Groups: each position's group's least member (positions are few, a handful
+        // of parts; hatching read on a coarse lattice makes a few dozen at most).
+        let mut group: Vec<usize> = (0..cells.len()).collect();
+        for k in 1..cells.len() {
+            for j in 0..k {
+                if 2 * shared(&cells[k], &cells[j]) > cells[k].len().min(cells[j].len()) {
+                    let (gk, gj) = (group[k], group[j]);
+                    group.iter_mut().filter(|g| **g == gk).for_each(|g| *g = gj.min(gk));
+                    group.iter_mut().filter(|g| **g == gj).for_each(|g| *g = gj.min(gk));
+                }
+            }
+        }
+        let mut groups: Vec<Vec<(i64, i64)>> = Vec::new();
+        for g in 0..cells.len() {
+            let mut union: Vec<(i64, i64)> =
+                (0..cells.len()).filter(|&k| group[k] == g).flat_map(|k| cells[k].iter().copied()).collect();
+            union.sort_unstable();
+            union.dedup();
+            if !union.is_empty() {
+                groups.push(union);
+            }
+        }
+        groups.len() > 1
+            && (0..groups.len()).any(|k| {
+                let mut others: Vec<(i64, i64)> =
+                    (0..groups.len()).filter(|&j| j != k).flat_map(|j| groups[j].iter().copied()).collect();
+                others.sort_unstable();
+                others.dedup();
+                2 * shared(&groups[k], &others) <= groups[k].len() && 2 * shared(&others, &groups[k]) <= others.len()
+            })
     }
 
     pub(super) fn lattice(&self) -> Lattice {

@@ -103,15 +103,22 @@ impl Lattice {
         self.a * u as f64 + self.b.unwrap_or(Vec2::ZERO) * w as f64
     }
 
-    /// The whole periods `(u, w)` that make up `d` (within `tol`), if any.
-    pub(super) fn whole(&self, d: Vec2, tol: f64) -> Option<(i64, i64)> {
-        let (u, w) = match self.b {
+    /// `d` in periods: `(u, w)` with `d = u a + w b` (a row's `w` is 0; its `u`, `d`'s
+    /// length along `a`).
+    pub(super) fn coords(&self, d: Vec2) -> (f64, f64) {
+        match self.b {
             Some(b) => {
                 let det = self.a.cross(b);
-                ((d.cross(b) / det).round() as i64, (self.a.cross(d) / det).round() as i64)
+                (d.cross(b) / det, self.a.cross(d) / det)
             }
-            None => ((d.dot(self.a) / self.a.hypot2()).round() as i64, 0),
-        };
+            None => (d.dot(self.a) / self.a.hypot2(), 0.0),
+        }
+    }
+
+    /// The whole periods `(u, w)` that make up `d` (within `tol`), if any.
+    pub(super) fn whole(&self, d: Vec2, tol: f64) -> Option<(i64, i64)> {
+        let (u, w) = self.coords(d);
+        let (u, w) = (u.round() as i64, w.round() as i64);
         ((d - self.step(u, w)).hypot() < tol).then_some((u, w))
     }
 }

@@ -37,6 +37,7 @@
 
 mod ahead;
 mod certainty;
+mod drift;
 mod fit;
 mod lattice;
 mod orbit;
@@ -130,6 +131,9 @@ const MIN_SCATTER: f64 = 0.04;
 /// A hand places its copies more loosely than it shapes them: the prior scatter of a
 /// copy's place is this multiple of the mean square wobble of its strokes' ends.
 const HAND_TO_PLACEMENT: f64 = 8.0;
+/// A copy turned by more than this (radians, about 11 degrees) from the first of its
+/// place is no translated copy (a hand turns its copies by a few degrees at random).
+const TURNED: f64 = 0.2;
 /// Weight of an accepted proposal in the periods' fit (a hand-drawn stroke's is 1).
 const SUGGESTED_WEIGHT: f64 = 0.05;
 
@@ -230,7 +234,26 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
         return Ok(nothing("The copy being drawn is not finished: the next copies are proposed once it is."));
     }
     if fit.motif[fit.cell[latest].0].members.len() < 2 {
-        return Ok(nothing("The latest stroke does not repeat the pattern."));
+        // The lattice of the earlier copies does not hold the latest, but they may carry
+        // on one another (a row that turns a corner: the leaves past it).
+        return Ok(sequence::propose(strokes, &accepted, &ask(true))
+            .filter(|s| !s.strokes.is_empty())
+            .unwrap_or_else(|| nothing("The latest stroke does not repeat the pattern.")));
+    }
+    // A lattice carries its copies on by translation: where the latest hand-drawn copy is
+    // turned from the first of its place (leaves past the corner of a row that turns,
+    // read as a lattice of the periods before and after it), they may carry on one
+    // another by turns instead.
+    let hand_copy = |x: usize| weight[x] >= 1.0 && motifs.instances[x].len() == 1;
+    if let Some(last) = (0..elems.len()).rev().find(|&x| hand_copy(x)) {
+        let first = fit.motif[fit.cell[last].0].members.iter().copied().filter(|&x| hand_copy(x)).min();
+        let stroke = |x: usize| &strokes[motifs.instances[x][0] as usize];
+        let turn = first.filter(|&f| f != last).and_then(|f| drift::turn_between(stroke(f), stroke(last)));
+        if turn.is_some_and(|t| t.abs() > TURNED) {
+            return Ok(sequence::propose(strokes, &accepted, &ask(true))
+                .filter(|s| !s.strokes.is_empty())
+                .unwrap_or_else(|| nothing(sequence::UNFOLLOWED)));
+        }
     }
     let points = strokes.iter().map(|s| s.points.len().max(1)).sum::<usize>();
     let per_copy = points.div_ceil(elems.len()) * fit.motif.len();
@@ -270,11 +293,39 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
         hit
     };
     let stacked = Stacked::new(strokes, &classification.classes, &accepted);
+    // A row may bend: each motif position's hand-drawn copies along it (of one stroke),
+    // whose shapes show how much its steps turn (see `drift`).
+    let hand_rows: Vec<Vec<(i64, &Stroke)>> = if fit.b.is_none() {
+        fit.motif
+            .iter()
+            .map(|mp| {
+                let mut row: Vec<(i64, &Stroke)> = mp
+                    .members
+                    .iter()
+                    .filter(|&&x| weight[x] >= 1.0 && motifs.instances[x].len() == 1)
+                    .map(|&x| (fit.cell[x].1 .0, &strokes[motifs.instances[x][0] as usize]))
+                    .collect();
+                row.sort_by_key(|r| r.0);
+                row
+            })
+            .collect()
+    } else {
+        Vec::new()
+    };
+    let row_turn = drift::row_turn(&hand_rows);
     let mut uncertain = 0;
     for (m, cell, steps) in wanted {
         // Not so far ahead of the hand-drawn copies that the site is likely off by more
-        // than the tolerance (fill is asked for explicitly and goes everywhere).
-        if !opts.fill && fit.certainty.reach() * fit.miss_at(m, cell) > tol {
+        // than the tolerance (fill is asked for explicitly and goes everywhere); a row
+        // drifts as far as its turn may take it.
+        let bent = match (row_turn, hand_rows.get(m).and_then(|r| Some((r.first()?.0, r.last()?.0)))) {
+            (Some(turn), Some((first, last))) => {
+                let past = (cell.0 - last).max(first - cell.0).max(0);
+                drift::drift(fit.a.hypot(), turn.abs(), (last - first) as f64, past as f64)
+            }
+            _ => 0.0,
+        };
+        if !opts.fill && fit.certainty.reach() * fit.miss_at(m, cell).hypot(bent) > tol {
             uncertain += 1;
             continue;
         }

@@ -23,6 +23,7 @@
 //! rotation and scale here (a petal turned is the same petal), and only motifs of one
 //! stroke are carried on.
 
+use super::drift::drift;
 use super::orbit::{cost, Orbit, Placed, Shapes};
 use super::turning::{turning, Relation};
 use super::{Suggestions, HAND_TO_PLACEMENT, TOLERANCE};
@@ -38,7 +39,7 @@ use std::f64::consts::TAU;
 const LOOK_BACK: usize = 16;
 /// A copy is the same shape when the best similarity leaves an rms residual of at most
 /// this share of its size.
-const SHAPE: f64 = 0.12;
+pub(super) const SHAPE: f64 = 0.12;
 /// The two steps agree when their `a` differ by at most this share of `|a|` (about 5°
 /// of turn or 5% of scale)...
 const TURN: f64 = 0.09;
@@ -74,10 +75,15 @@ const SNAP_SURE: f64 = 20.0;
 /// the next copies' expected miss (leaves over a wavy stem's crest: the bend read on its
 /// rising side carried the ghosts past the crest, 22 off at a step of 40).
 const BEND_CHANGE: f64 = 0.25;
+/// A bend of more than this (radians a step, per step: about a degree) is carried one
+/// copy past the last hand-drawn one only (leaves over the top of a Bézier S: the turn
+/// read growing from 7 to 15 degrees a step fell to 14 and 10, and the ghost two copies
+/// on missed by 17-27 at a step of 44; an arc's noise reads up to 0.003).
+const CLEAR_BEND: f64 = 0.015;
 /// Why nothing (more) is proposed while the sequence goes on.
 const UNCERTAIN: &str = "The copies drawn so far leave the next ones too uncertain: draw one more.";
 /// Why nothing is proposed where copies repeat but do not yet show the next step.
-const UNFOLLOWED: &str = "The copies drawn so far do not yet show where the next one goes: draw one more.";
+pub(super) const UNFOLLOWED: &str = "The copies drawn so far do not yet show where the next one goes: draw one more.";
 /// ...and the path through their latest four turns by at most this much a step (1.3
 /// radians: leaves along a curly stem turn by up to 1).
 const UNFOLLOWED_TURN: f64 = 1.3;
@@ -93,7 +99,7 @@ const BACKTEST: f64 = 2.0;
 /// The similarities carrying `from` onto `to`, with their residual as a share of
 /// `size`, when they are the same shape (`similarity::relations` with this module's
 /// bounds), the smallest turn first.
-fn relations(from: &[Point], to: &[Point], size: f64) -> Vec<(Similarity, f64)> {
+pub(super) fn relations(from: &[Point], to: &[Point], size: f64) -> Vec<(Similarity, f64)> {
     similarity::relations(from, to, size, SHAPE, MAX_SCALE).into_iter().map(|(t, r, _)| (t, r)).collect()
 }
 
@@ -434,7 +440,6 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
         }
     }
     let inflate = backtest(&d, &run, step, [one.a, two.a], lead);
-    let pairs = (run.len() - 1) as f64;
     let reach = super::certainty::reach(orbit.copies);
     let mut out = Suggestions::default();
     let end = run.len() as i64 - 1;
@@ -459,14 +464,17 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
         // the hand-drawn copies span: a stem may bend the other way past what they
         // show (a ring that closes is known whole).
         let (first_hand, last_hand) = (hands[0] as i64, *hands.last()? as i64);
-        if closes.is_none() && t - last_hand > (last_hand - first_hand).max(1) {
+        // A clear bend, no further than the next copy: when it stops (the top of an S,
+        // where the turn that grew falls again) the copies before do not say.
+        if closes.is_none()
+            && (t - last_hand > (last_hand - first_hand).max(1) || (orbit.bend.abs() > CLEAR_BEND && t - last_hand > 1))
+        {
             why = UNCERTAIN;
             break;
         }
-        // (A bend off by `bend_error` puts the next step's turn off by it times half the
-        // run's pairs, and each step ahead by it more; a bend that changes, more still.)
-        let kf = k as f64;
-        let drift = here * bend_error * (0.5 * pairs * kf + 0.5 * kf * (kf + 1.0));
+        // (A bend off by `bend_error` drifts the copies past the hand-drawn ones: see
+        // `drift`; a bend that changes, more still.)
+        let drift = drift(here, bend_error, (last_hand - first_hand) as f64, (t - last_hand) as f64);
         let change = bend_change(orbit.bend, (first_hand, last_hand), lead.map_or(0, |l| l.1), t);
         let drift = drift.hypot(here * change);
         if reach * (inflate * inflate * orbit.miss(t).powi(2) + drift * drift).sqrt() > TOLERANCE * here {

@@ -1,0 +1,70 @@
+//! How far copies drift off a model that reads their steps' turn wrong. Each step's
+//! turn is off by `error` times its steps from the middle of those the hand-drawn
+//! copies span (where the turn is read); past the last hand-drawn copy the headings add
+//! up, step by step (copies accepted since pin nothing: they sit where the model put
+//! them).
+//!
+//! A sequence counts its bend's error so (`sequence`: the turn changes along a stem).
+//! A row, which a lattice carries on straight, counts the turn its copies' shapes show
+//! (`row_turn`): leaves along a gentle curve fit a row within the hand's wobble, each
+//! turned a little more than the last, and a row's third ghost fell 16-22 off at a step
+//! of 40 (leaves on a Bézier arch and S, turning 2.5-3 degrees a step).
+
+use super::sequence::{relations, SHAPE};
+use crate::vector::frechet::closed_loop;
+use crate::vector::similarity::{samples, Similarity};
+use crate::vector::stroke::Stroke;
+use kurbo::Point;
+
+/// How far off a copy `past` steps beyond the last hand-drawn one is put, the hand-drawn
+/// copies spanning `span` steps, when each step's turn is off by `error` (radians) times
+/// its steps from their middle: `step` times the headings' errors summed over the steps
+/// from the last hand-drawn copy on.
+pub(super) fn drift(step: f64, error: f64, span: f64, past: f64) -> f64 {
+    step * error * (past * (0.5 * span + 1.0) + 0.5 * past * (past - 1.0))
+}
+
+/// The turn of a row's steps as its copies' shapes show it (radians a step): each
+/// hand-drawn copy of a motif position against the next along the row (`span` steps
+/// on), by least squares. From each motif position's hand-drawn copies, in order along
+/// the row: their step along it and their stroke (copies of several strokes are left
+/// out, as are shapes that look the same turned, a circle, whose turn nothing shows).
+/// `None` without a relation.
+///
+/// The turn read is what a row carried on straight misses by, however sure: the
+/// lattice's own certainty holds the rest (a row whose shapes show no turn is not held
+/// back for the turn they might hide: a hand's copies turn by a degree or two at random,
+/// and a prior of that much cost a straight row its third ghost).
+pub(super) fn row_turn(rows: &[Vec<(i64, &Stroke)>]) -> Option<f64> {
+    // (span, turn) of consecutive hand-drawn copies.
+    let pairs: Vec<(f64, f64)> = rows
+        .iter()
+        .flat_map(|row| row.windows(2))
+        .filter_map(|w| Some(((w[1].0 - w[0].0) as f64, turn_between(w[0].1, w[1].1)?)))
+        .collect();
+    let s2: f64 = pairs.iter().map(|p| p.0 * p.0).sum();
+    (s2 > 0.0).then(|| pairs.iter().map(|p| p.0 * p.1).sum::<f64>() / s2)
+}
+
+/// The turn (radians) carrying stroke `from` onto `to`, when they are one shape (up to
+/// a similarity) and it shows a turn (not a circle: see `looks_the_same_turned`).
+pub(super) fn turn_between(from: &Stroke, to: &Stroke) -> Option<f64> {
+    let (p, q) = (samples(from), samples(to));
+    let size = from.bounds().size().to_vec2().hypot();
+    if looks_the_same_turned(&p, size) {
+        return None;
+    }
+    relations(&p, &q, size).into_iter().next().map(|(t, _)| t.turn())
+}
+
+/// Whether a closed loop fits itself begun a quarter of the way round (a circle, a
+/// square): its copies' turn is then not in their shapes.
+fn looks_the_same_turned(p: &[Point], size: f64) -> bool {
+    if !closed_loop(p) {
+        return false;
+    }
+    let m = p.len() - 1;
+    let mut turned: Vec<Point> = (0..m).map(|i| p[(i + m / 4) % m]).collect();
+    turned.push(turned[0]);
+    Similarity::fit(p, &turned).1 <= SHAPE * size
+}
