@@ -1,10 +1,9 @@
 //! Hand-drawn repetitions that are not lattices (test support, issue 27): rings of
 //! petals, spirals, leaves along an arc, along S-shaped, wavy and curly stems, along
-//! Bézier curves and along a row that turns a corner, hatching along a turning and a
-//! straight contour, each copy a similarity transform of
-//! the one before (along the stems, of the one before only locally), drawn copy by copy
-//! with a wobble (each copy's place off by `wobble` of the step, its points by a fifth
-//! of that).
+//! Bézier curves, an inward spiral and a row that turns a corner, hatching along a
+//! turning and a straight contour, each copy a similarity transform of the one before
+//! (along the stems, of the one before only locally), drawn copy by copy with a wobble
+//! (each copy's place off by `wobble` of the step, its points by a fifth of that).
 
 use super::replay::{replay_each, Replay};
 use super::stroke::Stroke;
@@ -301,6 +300,12 @@ pub fn sequences(wobble: f64, seed: u64) -> Vec<Sequence> {
     out.push(along(1, "leaves on a Bézier S", &s));
     out.push(along(2, "leaves on a row turning 60°", &kinked(60f64.to_radians())));
     out.push(along(3, "leaves on a row turning 30°", &kinked(30f64.to_radians())));
+    // And a spiral drawn inwards, its turn growing as it closes in.
+    let inwards = |t: f64| {
+        let theta = 5.0 * std::f64::consts::PI * (1.0 - t);
+        Point::new(450.0, 450.0) + Vec2::new(theta.cos(), theta.sin()) * (40.0 + 28.0 * theta)
+    };
+    out.push(along(4, "leaves on an inward spiral", &inwards));
     // Hatching along a straight contour: a row, the lattice's (lines 70 long, 9 apart, at
     // 60 degrees).
     {
