@@ -155,7 +155,7 @@ export interface SeamlessOptions {
    *  band around its wrap re-made). */
   method?: 'etfmcm' | 'tfmcm' | 'synthesis' | 'mend';
   /** 'mend': the band's whole width as a share of each side, half along each edge
-   *  (default 0.25: the inner 75% x 75% kept bit for bit). */
+   *  and at least 4 pixels there (default 0.25: the inner 75% x 75% kept bit for bit). */
   band?: number;
   /** 'synthesis' and 'mend': pixels of the image never copied (opaque white). */
   sampleMask?: Mask;

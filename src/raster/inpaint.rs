@@ -66,6 +66,12 @@ pub fn inpaint_texture(
             return invalid("The sample mask is not of the image's size.");
         }
     }
+    if image.width.min(image.height) < 3 {
+        return invalid(format!(
+            "The image is {}x{}; a fill needs at least 3 pixels on a side.",
+            image.width, image.height
+        ));
+    }
     let known: Vec<bool> = mask.iter().map(|&m| !m).collect();
     if !known.iter().any(|&k| k) {
         return invalid("The mask covers the whole image: nothing is left to fill it from.");
@@ -83,6 +89,7 @@ pub fn inpaint_texture(
         levels: opts.levels,
         neighbourhood: opts.neighbourhood,
         detail_levels: FILL_DETAIL_LEVELS,
+        kept_out: if opts.sample_mask.is_some() { "The mask and the sample mask leave" } else { "The mask leaves" },
     };
     fill.run(image, progress)
 }
@@ -99,6 +106,9 @@ pub struct Fill {
     pub neighbourhood: usize,
     /// The finest levels matched with 5 x 5 neighbourhoods (`Params::detail_levels`).
     pub detail_levels: usize,
+    /// What keeps pixels out of copying, for the message when none is left (a fill
+    /// copies whole neighbourhoods: a hole that leaves a strip of one pixel leaves none).
+    pub kept_out: &'static str,
 }
 
 /// The neighbourhood side a fill uses on an image whose short side is `short`: `side`,
@@ -141,7 +151,12 @@ impl Fill {
             neighbourhood: side,
             detail_levels: self.detail_levels,
             tileable: self.torus,
-            constraints: Constraints { allowed: vec![Some(allowed)], known: Some(self.known), guide: None },
+            constraints: Constraints {
+                allowed: vec![Some(allowed)],
+                known: Some(self.known),
+                guide: None,
+                kept_out: Some(self.kept_out),
+            },
             ..Params::default()
         };
         let job = Job::new(Sources::One(&img), &params)?;
@@ -178,5 +193,30 @@ mod tests {
         for i in (0..100).filter(|&i| !hole[i]) {
             assert_eq!(out.data[4 * i..4 * i + 4], image.data[4 * i..4 * i + 4]);
         }
+    }
+
+    #[test]
+    fn a_fill_says_what_leaves_it_nothing_to_copy() {
+        let picture = |w: usize, h: usize| Rgba {
+            width: w,
+            height: h,
+            data: (0..w * h).flat_map(|i| [(i * 7 % 256) as u8, (i * 13 % 256) as u8, 90, 255]).collect(),
+        };
+        let fill = |img: &Rgba, hole: &dyn Fn(usize, usize) -> bool, sample: Option<Vec<bool>>| {
+            let mask: Vec<bool> = (0..img.width * img.height).map(|i| hole(i % img.width, i / img.width)).collect();
+            let opts = InpaintOptions { sample_mask: sample, ..Default::default() };
+            inpaint_texture(img, &mask, &opts, &mut Silent).unwrap_err().to_string()
+        };
+        // A hole that leaves one pixel: the mask is why (no sample mask was given).
+        let all_but_one = fill(&picture(64, 64), &|x, y| (x, y) != (5, 5), None);
+        assert!(all_but_one.starts_with("The mask leaves no"), "{all_but_one}");
+        let centre = fill(&picture(3, 3), &|x, y| (x, y) == (1, 1), None);
+        assert!(centre.starts_with("The mask leaves no pixel"), "{centre}");
+        // With a sample mask that keeps a corner only, both.
+        let corner: Vec<bool> = (0..64 * 64).map(|i| i % 64 < 2 && i / 64 < 2).collect();
+        let both = fill(&picture(64, 64), &|x, _| x > 40, Some(corner));
+        assert!(both.starts_with("The mask and the sample mask leave no"), "{both}");
+        let thin = fill(&picture(1, 40), &|_, y| y == 5, None);
+        assert_eq!(thin, "The image is 1x40; a fill needs at least 3 pixels on a side.");
     }
 }

@@ -284,7 +284,8 @@ pub fn options<T: serde::de::DeserializeOwned + Default>(
     let known = field_names::<T>();
     for key in own_keys(v, what)? {
         if !known.contains(&key.as_str()) && !extra.contains(&key.as_str()) {
-            let msg = format!("Invalid {what}: unknown option `{key}` (expected one of {}).", known.join(", "));
+            let all: Vec<&str> = known.iter().chain(extra).copied().collect();
+            let msg = format!("Invalid {what}: unknown option `{key}` (expected one of {}).", all.join(", "));
             return Err(error(&msg));
         }
     }

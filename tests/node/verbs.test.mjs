@@ -224,6 +224,13 @@ test('bad masks and layouts are refused with the reason', () => {
   assert.throws(() => ps.inpaintTexture(img, maskOf(64, 64, () => true)), /mask is 64x64; it must be 128x128/);
   assert.throws(() => ps.inpaintTexture(img, maskOf(128, 128, () => true)), /covers the whole image/);
   assert.throws(() => ps.inpaintTexture(img, 'hole'), /mask must be an object/);
+  // A mask that leaves one pixel: the mask is why, not a sample mask nobody gave.
+  let err = '';
+  try { ps.inpaintTexture(img, maskOf(128, 128, (x, y) => x !== 5 || y !== 5)); } catch (e) { err = e.message; }
+  assert.match(err, /The mask leaves no (pixel|region) to copy from/);
+  assert.doesNotMatch(err, /sample mask/);
+  assert.throws(() => ps.inpaintTexture({ width: 1, height: 40, data: new Uint8Array(160) }, maskOf(1, 40, (x, y) => y === 5)), /1x40; a fill needs at least 3 pixels on a side/);
+  assert.throws(() => ps.inpaintTexture(img, maskOf(128, 128, () => false), { sampleMsk: img }), /unknown option `sampleMsk` \(expected one of [^)]*sampleMask/);
   assert.throws(() => ps.applyLayout({ width: 2, height: 1, exemplars: [[4, 4]], data: new Uint32Array([0, 9]) }, [img]), /entry 1 points at exemplar 1 pixel \(9, 0\)/);
   assert.throws(() => ps.applyLayout('layout', [img]), /must be the `layout`/);
   // An inpaint with nothing masked returns the image.

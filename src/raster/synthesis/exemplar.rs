@@ -111,8 +111,15 @@ impl Exemplar {
     /// their colours are first filled from around them (`mask::fill`), so that coarser
     /// levels do not carry them, and each level's allowed positions are eroded from the
     /// finer one's (`mask::pyramid`). `guide`: a grey image of `img`'s size and its
-    /// lane's scale (see `Guide`).
-    pub fn new(img: &Image, levels: usize, allowed: Option<&[bool]>, guide: Option<(&Image, f32)>) -> Result<Exemplar> {
+    /// lane's scale (see `Guide`). `kept_out` begins the message when no allowed
+    /// position is left ("The sample mask leaves", "The mask leaves").
+    pub fn new(
+        img: &Image,
+        levels: usize,
+        allowed: Option<&[bool]>,
+        guide: Option<(&Image, f32)>,
+        kept_out: &str,
+    ) -> Result<Exemplar> {
         let filled;
         let img = match allowed {
             Some(a) => {
@@ -134,10 +141,10 @@ impl Exemplar {
             for (l, m) in mask::pyramid(a.to_vec(), img.width, img.height, levels, false).into_iter().enumerate() {
                 let list: Vec<u32> = (0..m.len() as u32).filter(|&p| m[p as usize]).collect();
                 if list.is_empty() {
+                    let scale = if l == 0 { String::new() } else { format!(" at 1/{} scale", 1 << l) };
                     return invalid(format!(
-                        "The sample mask leaves no {} to copy from{}: keep more of the image.",
-                        if l == 0 { "pixel".to_string() } else { "region".to_string() },
-                        if l == 0 { String::new() } else { format!(" at 1/{} scale", 1 << l) }
+                        "{kept_out} no {} to copy from{scale}: keep more of the image.",
+                        if l == 0 { "pixel" } else { "region" }
                     ));
                 }
                 planes[l].allowed = Some(Allowed { mask: m, list });

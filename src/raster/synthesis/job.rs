@@ -157,7 +157,7 @@ impl Job {
             .enumerate()
             .map(|(i, e)| {
                 let allowed = c.allowed.get(i).and_then(|a| a.as_deref());
-                Exemplar::new(e, levels, allowed, guide.map(|g| (&g.exemplar, g.scale())))
+                Exemplar::new(e, levels, allowed, guide.map(|g| (&g.exemplar, g.scale())), c.kept_out())
             })
             .collect::<Result<_>>()?;
         let sizes: Vec<_> = (0..levels).map(|l| (width.div_ceil(1 << l), height.div_ceil(1 << l))).collect();

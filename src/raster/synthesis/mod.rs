@@ -84,6 +84,15 @@ pub struct Constraints {
     /// tile's band mended); see `synthesize`.
     pub known: Option<Vec<bool>>,
     pub guide: Option<Guide>,
+    /// What keeps the disallowed pixels out, beginning the message when it leaves none
+    /// to copy from (`None`: "The sample mask leaves"; a fill's hole: "The mask leaves").
+    pub kept_out: Option<&'static str>,
+}
+
+impl Constraints {
+    pub(crate) fn kept_out(&self) -> &'static str {
+        self.kept_out.unwrap_or("The sample mask leaves")
+    }
 }
 
 /// A guide: grey images of the exemplar's and of the output's size whose values are
