@@ -3,7 +3,9 @@
 //! the measure of the issue-30 peer comparison), and the fill's patch energy (windows in
 //! the hole against windows wholly outside it), for
 //! photographs and hole masks given as PNG pairs (`photo.png:hole.png`, white = hole),
-//! over seeds 1-3. `cargo run --release --example inpaint_edge -- a.png:a_hole.png ...`
+//! over seeds 1-3; and the share of filled pixels whose colour is nowhere outside the
+//! hole (within 8 levels a channel: a heal that carries a structure's step into the
+//! fill tints it, purple on a green circuit board). `cargo run --release --example inpaint_edge -- a.png:a_hole.png ...`
 use patternsynth::raster::codec::{decode_image, encode_png};
 use patternsynth::raster::{inpaint_texture, InpaintOptions, Rgba};
 use patternsynth::Silent;
@@ -85,6 +87,28 @@ fn fill_energy(out: &Rgba, img: &Rgba, hole: &[bool]) -> f64 {
     (total / n as f64).sqrt()
 }
 
+/// Share of the hole's pixels whose colour, in steps of 8 levels a channel, is not
+/// within one step (each channel) of a colour outside the hole.
+fn foreign(out: &Rgba, img: &Rgba, hole: &[bool]) -> f64 {
+    let bin = |im: &Rgba, i: usize| [0, 1, 2].map(|c| (im.data[4 * i + c] / 8) as i32);
+    let mut seen = vec![false; 32 * 32 * 32];
+    for i in (0..hole.len()).filter(|&i| !hole[i]) {
+        let [r, g, b] = bin(img, i);
+        for (dr, dg, db) in (-1..=1).flat_map(|x| (-1..=1).flat_map(move |y| (-1..=1).map(move |z| (x, y, z)))) {
+            let (r, g, b) = (r + dr, g + dg, b + db);
+            if [r, g, b].iter().all(|v| (0..32).contains(v)) {
+                seen[((r * 32 + g) * 32 + b) as usize] = true;
+            }
+        }
+    }
+    let filled: Vec<usize> = (0..hole.len()).filter(|&i| hole[i]).collect();
+    let alien = filled.iter().filter(|&&i| {
+        let [r, g, b] = bin(out, i);
+        !seen[((r * 32 + g) * 32 + b) as usize]
+    });
+    alien.count() as f64 / filled.len().max(1) as f64
+}
+
 fn main() {
     let mut all = Vec::new();
     for arg in std::env::args().skip(1) {
@@ -95,6 +119,7 @@ fn main() {
         let mut ratios = Vec::new();
         let mut energies = Vec::new();
         let mut times = Vec::new();
+        let mut aliens = Vec::new();
         for seed in 1..=3 {
             let t = std::time::Instant::now();
             let out =
@@ -102,6 +127,7 @@ fn main() {
             times.push(t.elapsed().as_secs_f64() * 1e3);
             ratios.push(edge_ratio(&out, &hole, 8));
             energies.push(fill_energy(&out, &img, &hole));
+            aliens.push(foreign(&out, &img, &hole));
             if seed == 1 {
                 let name = std::path::Path::new(photo).file_stem().unwrap().to_string_lossy().to_string();
                 std::fs::create_dir_all("out/fill").unwrap();
@@ -115,20 +141,28 @@ fn main() {
         ratios.sort_by(f64::total_cmp);
         energies.sort_by(f64::total_cmp);
         times.sort_by(f64::total_cmp);
+        aliens.sort_by(f64::total_cmp);
         println!(
-            "{photo}: edge ratio {:.2} (photo's own {:.2}), fill energy {:.2} (photo's own {:.2}), {:.0} ms",
+            "{photo}: edge ratio {:.2} (photo's own {:.2}), fill energy {:.2} (photo's own {:.2}), foreign colours {:.2}% (photo's own {:.2}%), {:.0} ms",
             ratios[1],
             edge_ratio(&img, &hole, 8),
             energies[1],
             fill_energy(&img, &img, &hole),
+            100.0 * aliens[1],
+            100.0 * foreign(&img, &img, &hole),
             times[1]
         );
-        all.push((ratios[1], energies[1]));
+        all.push((ratios[1], energies[1], aliens[1]));
     }
     let median = |k: usize| {
-        let mut v: Vec<f64> = all.iter().map(|a| if k == 0 { a.0 } else { a.1 }).collect();
+        let mut v: Vec<f64> = all.iter().map(|a| [a.0, a.1, a.2][k]).collect();
         v.sort_by(f64::total_cmp);
         v[v.len() / 2]
     };
-    println!("median edge ratio {:.2}, fill energy {:.2}", median(0), median(1));
+    println!(
+        "median edge ratio {:.2}, fill energy {:.2}, foreign colours {:.2}%",
+        median(0),
+        median(1),
+        100.0 * median(2)
+    );
 }
