@@ -431,6 +431,13 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
     let Some(Model { orbit, closes, bend_error }) = model(&d, &run, step, [one.a, two.a], lead) else {
         return unfollowed();
     };
+    // A step turning by more than a ring of two and a half copies would (about half a
+    // turn) carries each copy back near the one before the last: nothing goes on by it.
+    // (Dashes dropped at random, each about a half turn of the one before, were called
+    // a complete ring: 14 of 288 prefixes.)
+    if orbit.a.atan2().abs() > TAU / 2.5 {
+        return None;
+    }
     if !local {
         let hand: Vec<usize> = (0..run.len()).filter(|&t| d.hand(run[t])).collect();
         if hand.len() + usize::from(lead.is_some()) < 4
