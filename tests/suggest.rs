@@ -221,7 +221,7 @@ fn rings_spirals_arcs_and_hatching_are_carried_on_by_their_step() {
                 ("leaves on an S-curve", false) => 0.4,
                 ("leaves on a wavy stem", true) => 0.2,
                 ("leaves on a wavy stem", false) => 0.12,
-                ("leaves on a curly stem", _) => 0.0,
+                ("leaves on a curly stem" | "leaves on a tight stem", _) => 0.0,
                 ("leaves on a Bézier arch", true) => 0.7,
                 ("leaves on a Bézier arch", false) => 0.5,
                 ("leaves on a Bézier S", true) => 0.4,

@@ -288,6 +288,8 @@ pub fn sequences(wobble: f64, seed: u64) -> Vec<Sequence> {
     out.push(stem("leaves on an S-curve", 70.0, 110.0, 70.0, 12, wobble, seed * 131 + 13));
     out.push(stem("leaves on a wavy stem", 40.0, 400.0 / TAU, 50.0, 16, wobble, seed * 131 + 19));
     out.push(stem("leaves on a curly stem", 60.0, 300.0 / TAU, 50.0, 16, wobble, seed * 131 + 23));
+    // (A new user's tighter sine, 50 high and 250 long: up to 1.3 radians a leaf.)
+    out.push(stem("leaves on a tight stem", 50.0, 250.0 / TAU, 40.0, 16, wobble, seed * 131 + 37));
     // A new user's curves (a helper's trial): leaves along a Bézier arch and a Bézier S,
     // and along a row that turns by 60 and by 30 degrees half way, each leaf turned off
     // the path by the wobble too.

@@ -84,9 +84,14 @@ const CLEAR_BEND: f64 = 0.015;
 const UNCERTAIN: &str = "The copies drawn so far leave the next ones too uncertain: draw one more.";
 /// Why nothing is proposed where copies repeat but do not yet show the next step.
 pub(super) const UNFOLLOWED: &str = "The copies drawn so far do not yet show where the next one goes: draw one more.";
-/// ...and the path through their latest four turns by at most this much a step (1.3
-/// radians: leaves along a curly stem turn by up to 1).
-const UNFOLLOWED_TURN: f64 = 1.3;
+/// ...the latest four each a step apart within this factor either way (a leaf's
+/// centre swings round its base as the stem turns: leaves 40 apart along a sine 50 high
+/// and 250 long lay 25 to 60 apart)...
+const UNFOLLOWED_SPACING: f64 = 0.6;
+/// ...and the path through them turns by at most this much a step (leaves along that
+/// sine turn by up to 1.3 radians; dashes dropped at random, none of 288 prefixes
+/// passed).
+const UNFOLLOWED_TURN: f64 = 1.6;
 /// A run that does not pass the local test holds at least four hand-drawn copies, its
 /// lead-in counted (a stem that bends on, past ghosts accepted from its earlier turn),
 /// each within this share of the step of its site on the run's orbit.
@@ -416,15 +421,15 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
         return None;
     }
     // Where no step carries the copies on (a stem that bends, mid-way), they may still
-    // repeat: the latest four of one shape each about a step on from the one before,
-    // along a path that turns by less than `UNFOLLOWED_TURN` a step (dashes scattered
-    // anywhere seldom are), and the page says so, not "no repetition yet" with seventeen
-    // leaves drawn.
+    // repeat: the latest four of one shape each about a step on from the one before
+    // (`UNFOLLOWED_SPACING`), along a path that turns by less than `UNFOLLOWED_TURN` a
+    // step (dashes scattered anywhere seldom are), and the page says so, not "no
+    // repetition yet" with seventeen leaves drawn.
     let unfollowed = || {
         let latest = &chain[at.saturating_sub(3)..=at];
         let moves: Vec<Vec2> = latest.windows(2).map(|w| centre(w[1]) - centre(w[0])).collect();
         let spaced = moves.len() == 3
-            && moves.iter().all(|m| (0.75 * step..=step / 0.75).contains(&m.hypot()))
+            && moves.iter().all(|m| (UNFOLLOWED_SPACING * step..=step / UNFOLLOWED_SPACING).contains(&m.hypot()))
             && moves.windows(2).all(|w| w[0].cross(w[1]).atan2(w[0].dot(w[1])).abs() < UNFOLLOWED_TURN);
         spaced.then(|| Suggestions { reason: Some(UNFOLLOWED.into()), ..Default::default() })
     };
