@@ -2,7 +2,7 @@
 // tile repeated zoom with the buttons and the keyboard (+, −, 0, arrows on the focused
 // view), pan once zoomed, stay inside their frame, and fit again with a new result.
 // The level is screen pixels per picture pixel (issue 25's trial: a tile shown at twice
-// its size read 100%), and 1 shows the pixels one to one.
+// its size read 100%), and 1 (or the 1:1 button) shows the pixels one to one.
 // Screenshots: out/zoom-blend.png, out/zoom-seamless.png.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
@@ -58,13 +58,24 @@ async function zoomsAndPans(prefix, view) {
   const one = (await transform(view))[0];
   assert.ok(Math.abs(one - Math.max(1, 1 / fit)) < 1e-4, `zoom ${one} for a picture fitted at ${fit}`);
   await page.keyboard.press('0');
+  // The 1:1 button does it for a mouse or a finger, where the picture is fitted smaller
+  // than one to one (and is off where it is not, or already one to one).
+  const button = `#${prefix}-zoom-actual`;
+  if (prefix === 'blend') assert.ok(fit < 1, `a 512 texture fitted at ${fit}`);
+  if (fit < 1) {
+    await page.click(button);
+    assert.equal(await level(prefix), 100);
+    assert.ok(await page.$eval(button, (b) => b.disabled), 'off once one to one');
+    await page.keyboard.press('0');
+  } else assert.ok(await page.$eval(button, (b) => b.disabled), `off for a picture fitted at ${fit}`);
 }
 
 test('the blend texture zooms and pans', async () => {
   await page.click('#tab-button-blend');
   await page.waitForFunction(() => document.querySelector('#slot-a canvas').width === 128);
-  await page.fill('#blend-width', '128');
-  await page.fill('#blend-height', '128');
+  // (Larger than its box: fitted under one to one, so 1:1 zooms in.)
+  await page.fill('#blend-width', '512');
+  await page.fill('#blend-height', '512');
   await page.click('#blend-run');
   await page.waitForFunction(() => document.querySelector('#blend-messages').textContent === 'Done.', null, { timeout: 60000 });
   await zoomsAndPans('blend', 'blend-view');

@@ -1,20 +1,22 @@
 // Zoom and pan of a result preview, as image viewers do it: Ctrl/⌘ + wheel (a
 // trackpad's pinch) or two fingers zoom about the pointer, a drag pans once zoomed,
 // and the buttons and keys (+, −, 0 and the arrows on the focused view) do the same
-// from a keyboard; 1 shows a picture of pixels one to one. A picture put in its place
-// (the same result restyled) keeps the zoom; `reset()` fits a new result.
+// from a keyboard; 1 (or the 1:1 button, for a mouse or a finger) shows a picture of
+// pixels one to one. A picture put in its place (the same result restyled) keeps the
+// zoom; `reset()` fits a new result.
 
 const MAX_ZOOM = 16;
 const STEP = 1.5;
 
 /** Makes `view` (its first child is the picture) zoomable; `controls`: the zoom in,
- *  zoom out and fit buttons and an output for the level; `shown()`: whether there is a
+ *  zoom out and fit buttons, an output for the level and (with `scale`) a one to one
+ *  button, `actual`, enabled where the fitted picture is shown smaller than that; `shown()`: whether there is a
  *  picture yet (a blank canvas is none); `scale()`: for a picture of pixels, the
  *  screen pixels (CSS) each of its pixels covers when fitted. The level then reads as a
  *  designer's image editor reads it, screen pixels per picture pixel: 100% is one to
  *  one, and a tile fitted at twice its size reads 200% (it read 100%, the fitted view's
  *  zoom, whatever the picture's scale); else it is the zoom over the fitted view. */
-export function zoomable(view, { zoomIn, zoomOut, fit, level, onSettle, shown = () => true, scale }) {
+export function zoomable(view, { zoomIn, zoomOut, fit, actual, level, onSettle, shown = () => true, scale }) {
   let s = 1, x = 0, y = 0;
   // Once the zoom stops changing, the owner may draw the picture again at that scale
   // (sharp instead of a bitmap stretched).
@@ -38,6 +40,7 @@ export function zoomable(view, { zoomIn, zoomOut, fit, level, onSettle, shown = 
     view.classList.toggle('zoomed', s > 1);
     zoomOut.disabled = fit.disabled = s === 1 || !c;
     zoomIn.disabled = s >= MAX_ZOOM || !c;
+    if (actual) actual.disabled = !c || fitted() >= 1 || Math.abs(s * fitted() - 1) < 1e-6;
     clearTimeout(timer);
     if (onSettle && c && s !== settled) timer = setTimeout(() => { settled = s; onSettle(s); }, 250);
   };
@@ -49,6 +52,8 @@ export function zoomable(view, { zoomIn, zoomOut, fit, level, onSettle, shown = 
     s = next;
     apply();
   };
+  /** One to one, where the fitted picture is shown smaller than that. */
+  const oneToOne = () => zoomAt(Math.max(1, 1 / fitted()) / s);
   const reset = () => {
     s = settled = 1;
     x = y = 0;
@@ -58,6 +63,7 @@ export function zoomable(view, { zoomIn, zoomOut, fit, level, onSettle, shown = 
   zoomIn.addEventListener('click', () => zoomAt(STEP));
   zoomOut.addEventListener('click', () => zoomAt(1 / STEP));
   fit.addEventListener('click', reset);
+  actual?.addEventListener('click', oneToOne);
 
   const local = (e) => {
     const r = view.getBoundingClientRect();
@@ -101,8 +107,7 @@ export function zoomable(view, { zoomIn, zoomOut, fit, level, onSettle, shown = 
     if (e.key === '+' || e.key === '=') zoomAt(STEP);
     else if (e.key === '-') zoomAt(1 / STEP);
     else if (e.key === '0') reset();
-    // (One to one, where the fitted picture is shown smaller than that.)
-    else if (e.key === '1' && scale) zoomAt(Math.max(1, 1 / fitted()) / s);
+    else if (e.key === '1' && scale) oneToOne();
     else if (pan && s > 1) {
       x += pan[0];
       y += pan[1];

@@ -268,7 +268,7 @@ export function mountBlend(root, client) {
 
   // The texture zooms (pixels shown as they are) and pans like the vector result.
   const zoom = zoomable($('blend-view'), {
-    zoomIn: $('blend-zoom-in'), zoomOut: $('blend-zoom-out'), fit: $('blend-zoom-fit'), level: $('blend-zoom-level'),
+    zoomIn: $('blend-zoom-in'), zoomOut: $('blend-zoom-out'), fit: $('blend-zoom-fit'), actual: $('blend-zoom-actual'), level: $('blend-zoom-level'),
     shown: () => $('blend-download').getAttribute('aria-disabled') !== 'true',
     // (The canvas's pixels are stretched over its box, borders excluded.)
     scale: () => $('blend-result').clientWidth / $('blend-result').width,

@@ -56,7 +56,7 @@ export function mountSeamless(root, client) {
 
   // The tile repeated zooms (pixels shown as they are) and pans, to look at its seams.
   const zoom = zoomable($('seam-view'), {
-    zoomIn: $('seam-zoom-in'), zoomOut: $('seam-zoom-out'), fit: $('seam-zoom-fit'), level: $('seam-zoom-level'),
+    zoomIn: $('seam-zoom-in'), zoomOut: $('seam-zoom-out'), fit: $('seam-zoom-fit'), actual: $('seam-zoom-actual'), level: $('seam-zoom-level'),
     shown: () => $('seam-repeat').classList.contains('shown'),
     // (The tile is drawn as a background at the scale it was shown at, whatever
     // width its repeat's box is given.)
