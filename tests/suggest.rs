@@ -200,9 +200,11 @@ fn rings_spirals_arcs_and_hatching_are_carried_on_by_their_step() {
             for (k, q) in patternsynth::vector::sequences::sequences(wobble, seed).into_iter().enumerate() {
                 let r = q.replay(&q.strokes);
                 if q.name.contains("turning") && q.name.contains("row") {
-                    // (The corner is the eleventh leaf: a copy past it is drawn by then.)
-                    let late: Vec<&usize> = r.wrong_at.iter().filter(|&&n| n > 11).collect();
-                    assert!(late.is_empty(), "{} at {wobble}, seed {seed}: wrong with {late:?} drawn", q.name);
+                    // (The corner is the eleventh leaf: a copy past it is drawn by then.
+                    // Before it, only ghosts that reach it may be wrong: three on from
+                    // eight leaves.)
+                    let off: Vec<&usize> = r.wrong_at.iter().filter(|&&n| !(8..=11).contains(&n)).collect();
+                    assert!(off.is_empty(), "{} at {wobble}, seed {seed}: wrong with {off:?} drawn", q.name);
                 } else {
                     wrong += r.wrong;
                     shown += r.shown;
@@ -393,4 +395,27 @@ fn a_repetition_without_ghosts_is_not_called_no_repetition() {
         }
     }
     assert!(none as f64 >= 0.9 * calls as f64, "{none} of {calls} calls on irregular input say no repetition");
+}
+
+/// Copies turned at random are still a lattice's (a review of issue 27's turned-copies
+/// check, which compares the latest two with the place's usual copy): ticks whose angle
+/// a hand varies by up to 5 degrees get ghosts from the fourth copy on, as a row of
+/// ticks drawn alike does.
+#[test]
+fn copies_turned_at_random_are_still_a_row() {
+    let mut rng = patternsynth::rng::Rng::new(3);
+    let tick = |x: f64, a: f64| {
+        let (dx, dy) = (12.0 * a.sin(), -12.0 * a.cos());
+        Stroke::new(vec![[x - dx, 100.0 - dy], [x, 100.0], [x + dx, 100.0 + dy]], 2.0, None)
+    };
+    let region = Some([0.0, 60.0, 300.0, 80.0]);
+    for spread in [0.0, 0.08] {
+        let row: Vec<Stroke> = (0..8)
+            .map(|k| tick(20.0 + 30.0 * k as f64, (rng.below(1000) as f64 / 1000.0 - 0.5) * 2.0 * spread))
+            .collect();
+        for n in 4..=8 {
+            let s = suggest_strokes(&row[..n], &SuggestOptions { region, ..Default::default() }).unwrap();
+            assert!(!s.strokes.is_empty(), "turned up to {spread} rad, {n} drawn: {:?}", s.reason);
+        }
+    }
 }

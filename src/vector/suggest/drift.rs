@@ -4,7 +4,10 @@
 //! up, step by step (copies accepted since pin nothing: they sit where the model put
 //! them).
 //!
-//! A sequence counts its bend's error so (`sequence`: the turn changes along a stem).
+//! A sequence counts its bend's error so (`sequence`: the turn changes along a stem),
+//! taking the turn rate's error for the turn's: two copies or more past the hand's it
+//! underrates the drift (a bend's error adds up once more), which its backtest and
+//! `BEND_CHANGE` carry, and a clear bend goes one copy past the hand's only.
 //! A row, which a lattice carries on straight, counts the turn its copies' shapes show
 //! (`row_turn`): leaves along a gentle curve fit a row within the hand's wobble, each
 //! turned a little more than the last, and a row's third ghost fell 16-22 off at a step
@@ -15,6 +18,9 @@ use crate::vector::frechet::closed_loop;
 use crate::vector::similarity::{samples, Similarity};
 use crate::vector::stroke::Stroke;
 use kurbo::Point;
+
+/// A stroke shorter than this many pen widths is a dot: its turn is the pen's.
+const DOT: f64 = 4.0;
 
 /// How far off a copy `past` steps beyond the last hand-drawn one is put, the hand-drawn
 /// copies spanning `span` steps, when each step's turn is off by `error` (radians) times
@@ -34,7 +40,10 @@ pub(super) fn drift(step: f64, error: f64, span: f64, past: f64) -> f64 {
 /// The turn read is what a row carried on straight misses by, however sure: the
 /// lattice's own certainty holds the rest (a row whose shapes show no turn is not held
 /// back for the turn they might hide: a hand's copies turn by a degree or two at random,
-/// and a prior of that much cost a straight row its third ghost).
+/// and a prior of that much cost a straight row its third ghost). Copies turned at
+/// random by more read as a curve: ticks turned by up to 9 degrees get no ghost at four
+/// copies (taking the turn only where it passed two standard errors mended that, and
+/// put more ghosts straight on past a turning row's corner: 7 to 15 wrong at 1%).
 pub(super) fn row_turn(rows: &[Vec<(i64, &Stroke)>]) -> Option<f64> {
     // (span, turn) of consecutive hand-drawn copies.
     let pairs: Vec<(f64, f64)> = rows
@@ -47,10 +56,14 @@ pub(super) fn row_turn(rows: &[Vec<(i64, &Stroke)>]) -> Option<f64> {
 }
 
 /// The turn (radians) carrying stroke `from` onto `to`, when they are one shape (up to
-/// a similarity) and it shows a turn (not a circle: see `looks_the_same_turned`).
+/// a similarity) and it shows a turn: not a circle (see `looks_the_same_turned`), nor
+/// a dot, a tap of the pen a few widths long whichever way it went.
 pub(super) fn turn_between(from: &Stroke, to: &Stroke) -> Option<f64> {
-    let (p, q) = (samples(from), samples(to));
     let size = from.bounds().size().to_vec2().hypot();
+    if size < DOT * from.width.max(to.width) {
+        return None;
+    }
+    let (p, q) = (samples(from), samples(to));
     if looks_the_same_turned(&p, size) {
         return None;
     }

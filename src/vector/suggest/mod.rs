@@ -131,8 +131,8 @@ const MIN_SCATTER: f64 = 0.04;
 /// A hand places its copies more loosely than it shapes them: the prior scatter of a
 /// copy's place is this multiple of the mean square wobble of its strokes' ends.
 const HAND_TO_PLACEMENT: f64 = 8.0;
-/// A copy turned by more than this (radians, about 11 degrees) from the first of its
-/// place is no translated copy (a hand turns its copies by a few degrees at random).
+/// A copy turned by more than this (radians, about 11 degrees) from the usual copy of
+/// its place is no translated copy (a hand turns its copies by a few degrees at random).
 const TURNED: f64 = 0.2;
 /// Weight of an accepted proposal in the periods' fit (a hand-drawn stroke's is 1).
 const SUGGESTED_WEIGHT: f64 = 0.05;
@@ -237,23 +237,14 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
         // The lattice of the earlier copies does not hold the latest, but they may carry
         // on one another (a row that turns a corner: the leaves past it).
         return Ok(sequence::propose(strokes, &accepted, &ask(true))
-            .filter(|s| !s.strokes.is_empty())
             .unwrap_or_else(|| nothing("The latest stroke does not repeat the pattern.")));
     }
-    // A lattice carries its copies on by translation: where the latest hand-drawn copy is
-    // turned from the first of its place (leaves past the corner of a row that turns,
-    // read as a lattice of the periods before and after it), they may carry on one
-    // another by turns instead.
-    let hand_copy = |x: usize| weight[x] >= 1.0 && motifs.instances[x].len() == 1;
-    if let Some(last) = (0..elems.len()).rev().find(|&x| hand_copy(x)) {
-        let first = fit.motif[fit.cell[last].0].members.iter().copied().filter(|&x| hand_copy(x)).min();
-        let stroke = |x: usize| &strokes[motifs.instances[x][0] as usize];
-        let turn = first.filter(|&f| f != last).and_then(|f| drift::turn_between(stroke(f), stroke(last)));
-        if turn.is_some_and(|t| t.abs() > TURNED) {
-            return Ok(sequence::propose(strokes, &accepted, &ask(true))
-                .filter(|s| !s.strokes.is_empty())
-                .unwrap_or_else(|| nothing(sequence::UNFOLLOWED)));
-        }
+    // A lattice carries its copies on by translation: where the latest two hand-drawn
+    // copies of a place are both turned one way from its usual copy (leaves past the
+    // corner of a row that turns, read as a lattice of the periods before and after it),
+    // they may carry on one another by turns instead.
+    if turned_away(&fit, strokes, &motifs.instances, &weight) {
+        return Ok(sequence::propose(strokes, &accepted, &ask(true)).unwrap_or_else(|| nothing(sequence::UNFOLLOWED)));
     }
     let points = strokes.iter().map(|s| s.points.len().max(1)).sum::<usize>();
     let per_copy = points.div_ceil(elems.len()) * fit.motif.len();
@@ -379,6 +370,43 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
         });
     }
     Ok(out)
+}
+
+/// Copies of the latest hand-drawn copy's place looked at for its usual turn.
+const USUAL: usize = 16;
+
+/// Whether the latest two hand-drawn copies (of one stroke) of the latest one's motif
+/// position are both turned by more than `TURNED` one way from the place's usual copy:
+/// the median turn of its latest `USUAL` hand-drawn copies against its first. One copy
+/// drawn askew, or a hand that turns its copies a little at random, is not; a dot,
+/// whose turn is its pen's, says nothing (see `drift::turn_between`).
+fn turned_away(fit: &Fit, strokes: &[Stroke], instances: &[Vec<u32>], weight: &[f64]) -> bool {
+    let hand = |x: usize| weight[x] >= 1.0 && instances[x].len() == 1;
+    let Some(last) = (0..fit.cell.len()).rev().find(|&x| hand(x)) else { return false };
+    let copies: Vec<usize> = fit.motif[fit.cell[last].0].members.iter().copied().filter(|&x| hand(x)).collect();
+    let (Some(&first), Some(&[before, latest])) = (copies.first(), copies.last_chunk::<2>()) else {
+        return false;
+    };
+    if before == first || latest != last {
+        return false;
+    }
+    let stroke = |x: usize| &strokes[instances[x][0] as usize];
+    let recent = &copies[copies.len().saturating_sub(USUAL)..];
+    let mut turns: Vec<f64> = recent
+        .iter()
+        .filter_map(|&x| if x == first { Some(0.0) } else { drift::turn_between(stroke(first), stroke(x)) })
+        .collect();
+    if turns.len() < 3 {
+        return false;
+    }
+    let usual = median(&mut turns);
+    let pi = std::f64::consts::PI;
+    let off =
+        |x: usize| drift::turn_between(stroke(first), stroke(x)).map(|t| (t - usual + pi).rem_euclid(2.0 * pi) - pi);
+    match (off(before), off(latest)) {
+        (Some(a), Some(b)) => a.abs() > TURNED && b.abs() > TURNED && a.signum() == b.signum(),
+        _ => false,
+    }
 }
 
 /// Where a proposed stroke would stack on a drawn one: a stroke of its class within

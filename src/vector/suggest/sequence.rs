@@ -477,7 +477,8 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
         // show (a ring that closes is known whole).
         let (first_hand, last_hand) = (hands[0] as i64, *hands.last()? as i64);
         // A clear bend, no further than the next copy: when it stops (the top of an S,
-        // where the turn that grew falls again) the copies before do not say.
+        // where the turn that grew falls again) the copies before do not say. (Once
+        // that copy is accepted, nothing more is proposed till one is drawn by hand.)
         if closes.is_none()
             && (t - last_hand > (last_hand - first_hand).max(1) || (orbit.bend.abs() > CLEAR_BEND && t - last_hand > 1))
         {
