@@ -392,18 +392,19 @@ fn turned_away(fit: &Fit, strokes: &[Stroke], instances: &[Vec<u32>], weight: &[
     }
     let stroke = |x: usize| &strokes[instances[x][0] as usize];
     let recent = &copies[copies.len().saturating_sub(USUAL)..];
-    let mut turns: Vec<f64> = recent
+    // Each recent copy's turn from the first (read once: the latest two are among them).
+    let read: Vec<Option<f64>> = recent
         .iter()
-        .filter_map(|&x| if x == first { Some(0.0) } else { drift::turn_between(stroke(first), stroke(x)) })
+        .map(|&x| if x == first { Some(0.0) } else { drift::turn_between(stroke(first), stroke(x)) })
         .collect();
+    let mut turns: Vec<f64> = read.iter().flatten().copied().collect();
     if turns.len() < 3 {
         return false;
     }
     let usual = median(&mut turns);
     let pi = std::f64::consts::PI;
-    let off =
-        |x: usize| drift::turn_between(stroke(first), stroke(x)).map(|t| (t - usual + pi).rem_euclid(2.0 * pi) - pi);
-    match (off(before), off(latest)) {
+    let off = |t: Option<f64>| t.map(|t| (t - usual + pi).rem_euclid(2.0 * pi) - pi);
+    match (off(read[read.len() - 2]), off(read[read.len() - 1])) {
         (Some(a), Some(b)) => a.abs() > TURNED && b.abs() > TURNED && a.signum() == b.signum(),
         _ => false,
     }
