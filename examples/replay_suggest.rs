@@ -70,7 +70,10 @@ fn main() {
     println!("\n| sequence | strokes | by hand | accepted | accepted after 3 copies | shown | wrong | median ms | slowest ms (native) |");
     println!("|---|---:|---:|---:|---:|---:|---:|---:|---:|");
     let only_sequence = std::env::var("SEQUENCE").ok();
-    for q in patternsynth::vector::sequences::sequences(jitter, seed)
+    // (HAND_TURN: degrees a hand turns each copy off at random, as a person does; 0,
+    // the steady hand, by default.)
+    let turn = std::env::var("HAND_TURN").ok().and_then(|t| t.parse::<f64>().ok()).unwrap_or(0.0).to_radians();
+    for q in patternsynth::vector::sequences::drawn_by(jitter, patternsynth::vector::sequences::HandTurn(turn), seed)
         .into_iter()
         .filter(|q| only_sequence.as_deref().is_none_or(|o| q.name.starts_with(o)))
     {

@@ -2,7 +2,7 @@
 //! `suggest_strokes`; the figures are in `cargo run --release --example replay_suggest`.
 use patternsynth::vector::exemplar::{family_list, freehand_sketch, irregular_dashes};
 use patternsynth::vector::replay::replay;
-use patternsynth::vector::sequences::{begun_at, circle_grid};
+use patternsynth::vector::sequences::{begun_at, circle_grid, drawn_by, HandTurn};
 use patternsynth::vector::{suggest_strokes, Stroke, SuggestOptions};
 
 fn replayed(name: &str, jitter: f64) -> (patternsynth::vector::replay::Replay, usize) {
@@ -245,6 +245,35 @@ fn rings_spirals_arcs_and_hatching_are_carried_on_by_their_step() {
             assert!(*wrong as f64 <= most * *shown as f64, "{name} at {wobble}: {wrong} wrong of {shown} shown");
         }
         assert!(wrong as f64 <= 0.025 * shown as f64, "at {wobble}: {wrong} wrong of {shown} shown");
+    }
+}
+
+/// A person's hand (issue 27's second trial: leaves along curves, each copy turned 2.5
+/// degrees off at random, got "too uncertain" at every call): every sequence family
+/// drawn so, at 1% and 3% of the step, seeds 1-3. Measured: 56% and 50% accepted after
+/// three copies on the mean family (47% and 41% when the bend was read from the shapes
+/// alone), 10 wrong of 237 and 13 of 217 shown but on the rows that turn a corner. Held
+/// to at least half and 45% accepted, at most 5% and 7.5% wrong.
+#[test]
+fn a_hand_that_turns_its_copies_still_gets_ghosts() {
+    for (wobble, least, most) in [(0.01, 0.5, 0.05), (0.03, 0.45, 0.075)] {
+        let (mut share, mut families, mut wrong, mut shown) = (0.0, 0.0, 0, 0);
+        for seed in 1..=3 {
+            for q in drawn_by(wobble, HandTurn::PERSON, seed) {
+                let r = q.replay(&q.strokes);
+                share += r.accepted_after(3);
+                families += 1.0;
+                // (Ghosts straight on past a corner nobody could foresee: see
+                // `rings_spirals_arcs_and_hatching_are_carried_on_by_their_step`.)
+                if !(q.name.contains("turning") && q.name.contains("row")) {
+                    wrong += r.wrong;
+                    shown += r.shown;
+                }
+            }
+        }
+        let share = share / families;
+        assert!(share >= least, "at {wobble}: {share:.2} accepted after three copies on the mean family");
+        assert!(wrong as f64 <= most * shown as f64, "at {wobble}: {wrong} wrong of {shown} shown");
     }
 }
 

@@ -42,6 +42,29 @@ impl Sequence {
 /// Copies generated past the end of an open sequence (see `Sequence::beyond`).
 const BEYOND: usize = 3;
 
+/// How far a hand turns each copy off the turn it means, whatever its placement wobble
+/// (a standard deviation, in radians). A steady hand turns its copies no more than its
+/// wobble does; a person's turns theirs by a few degrees (`HandTurn::PERSON`): a long
+/// hatching line drawn 2.5 degrees off moves its ends by a tenth of its hatching's step.
+#[derive(Clone, Copy, Debug)]
+pub struct HandTurn(pub f64);
+
+impl HandTurn {
+    pub const STEADY: HandTurn = HandTurn(0.0);
+    /// 2.5 degrees.
+    pub const PERSON: HandTurn = HandTurn(0.043_633_231_299_858_24);
+
+    /// A copy's turn off the one meant (nothing drawn from `rng` for a steady hand, so
+    /// its drawings stay what they were).
+    fn draw(self, rng: &mut Rng) -> f64 {
+        if self.0 > 0.0 {
+            rng.normal() * self.0
+        } else {
+            0.0
+        }
+    }
+}
+
 /// A loop `len` long and `len / 3` wide, from `at` along `theta` (a petal, a leaf).
 fn leaf(at: Point, theta: f64, len: f64, rng: &mut Rng, noise: f64) -> Stroke {
     let (c, s) = (theta.cos(), theta.sin());
@@ -119,23 +142,25 @@ pub fn circle_grid(wobble: f64, seed: u64, anywhere: bool) -> (Vec<Stroke>, kurb
 
 /// Leaves one every 40 along the sine `y = 300 + amplitude sin((x - 300) / scale)` from
 /// `x0`, each turned with it: `n` drawn and `BEYOND` more.
-fn stem(name: &str, amplitude: f64, scale: f64, x0: f64, n: usize, wobble: f64, seed: u64) -> Sequence {
+fn stem(name: &str, amplitude: f64, scale: f64, x0: f64, n: usize, hand: (f64, HandTurn), seed: u64) -> Sequence {
     let path = |x: f64| Point::new(x, 300.0 + amplitude * ((x - 300.0) / scale).sin());
-    leaves_along(name, path, (x0, 0.5), n, (wobble, 0.0), seed)
+    leaves_along(name, path, (x0, 0.5), n, (hand.0, 0.0, hand.1), seed)
 }
 
 /// Leaves one every 40 (of arc length) along `path(t)` from `t = from.0` on in steps of
 /// `from.1`, each turned with the path: `n` drawn and `BEYOND` more. Each leaf is off
 /// its place by `wobble.0` of the step (its points by a fifth of that) and turned off
-/// the path's direction by `wobble.1` radian (the angle a hand gets wrong too).
+/// the path's direction by `wobble.1` radian (the angle a hand gets wrong too) and as
+/// the hand `wobble.2` turns its copies.
 fn leaves_along(
     name: &str,
     path: impl Fn(f64) -> Point,
     from: (f64, f64),
     n: usize,
-    wobble: (f64, f64),
+    wobble: (f64, f64, HandTurn),
     seed: u64,
 ) -> Sequence {
+    let turn = wobble.2;
     let mut rng = Rng::new(seed);
     let step = 40.0;
     let (mut sites, mut along, mut t) = (Vec::new(), 0.0, from.0);
@@ -152,8 +177,8 @@ fn leaves_along(
         .iter()
         .map(|&(p, phi)| {
             let jitter = Vec2::new(rng.normal(), rng.normal()) * (wobble.0 * step);
-            let turn = if wobble.1 > 0.0 { rng.normal() * wobble.1 } else { 0.0 };
-            leaf(p + jitter, phi - 0.6 + turn, 36.0, &mut rng, 0.2 * wobble.0 * step)
+            let off = if wobble.1 > 0.0 { rng.normal() * wobble.1 } else { 0.0 } + turn.draw(&mut rng);
+            leaf(p + jitter, phi - 0.6 + off, 36.0, &mut rng, 0.2 * wobble.0 * step)
         })
         .collect();
     Sequence { name: name.into(), strokes, step, steps: Vec::new(), beyond: Vec::new(), canvas: kurbo::Rect::ZERO }
@@ -183,6 +208,12 @@ fn kinked(angle: f64) -> impl Fn(f64) -> Point {
 
 /// Every family at `wobble` (share of the step), seeded.
 pub fn sequences(wobble: f64, seed: u64) -> Vec<Sequence> {
+    drawn_by(wobble, HandTurn::STEADY, seed)
+}
+
+/// Every family at `wobble` (share of the step), each copy turned off as `turn` says,
+/// seeded.
+pub fn drawn_by(wobble: f64, turn: HandTurn, seed: u64) -> Vec<Sequence> {
     let mut out = Vec::new();
     let centre = Point::new(300.0, 300.0);
     let canvas = kurbo::Rect::new(0.0, 0.0, 600.0, 600.0);
@@ -194,7 +225,8 @@ pub fn sequences(wobble: f64, seed: u64) -> Vec<Sequence> {
         let step = 2.0 * (0.5 * len) * (std::f64::consts::PI / n as f64).sin();
         let strokes = (0..n)
             .map(|k| {
-                let theta = k as f64 * TAU / n as f64 + rng.normal() * wobble * step / (0.5 * len);
+                let theta =
+                    k as f64 * TAU / n as f64 + rng.normal() * wobble * step / (0.5 * len) + turn.draw(&mut rng);
                 let at = centre + Vec2::new(rng.normal(), rng.normal()) * (wobble * step);
                 leaf(at, theta, len, &mut rng, 0.2 * wobble * step)
             })
@@ -217,7 +249,13 @@ pub fn sequences(wobble: f64, seed: u64) -> Vec<Sequence> {
                 let theta = k as f64 * TAU / 12.0;
                 let at = centre + Vec2::new(theta.cos(), theta.sin()) * r;
                 let jitter = Vec2::new(rng.normal(), rng.normal()) * (wobble * 0.5 * r * (TAU / 12.0));
-                leaf(at + jitter, theta + 1.2, 0.35 * r, &mut rng, 0.2 * wobble * 0.5 * r * (TAU / 12.0))
+                leaf(
+                    at + jitter,
+                    theta + 1.2 + turn.draw(&mut rng),
+                    0.35 * r,
+                    &mut rng,
+                    0.2 * wobble * 0.5 * r * (TAU / 12.0),
+                )
             })
             .collect();
         // (The step grows: `step` is the one at the middle of the spiral.)
@@ -241,7 +279,7 @@ pub fn sequences(wobble: f64, seed: u64) -> Vec<Sequence> {
                 let phi = -1.2 + k as f64 * d;
                 let at = Point::new(300.0, 560.0) + Vec2::new(phi.sin(), -phi.cos()) * r;
                 let jitter = Vec2::new(rng.normal(), rng.normal()) * (wobble * step);
-                leaf(at + jitter, phi - 0.6, 45.0, &mut rng, 0.2 * wobble * step)
+                leaf(at + jitter, phi - 0.6 + turn.draw(&mut rng), 45.0, &mut rng, 0.2 * wobble * step)
             })
             .collect();
         out.push(Sequence {
@@ -265,7 +303,7 @@ pub fn sequences(wobble: f64, seed: u64) -> Vec<Sequence> {
                 let jitter = Vec2::new(rng.normal(), rng.normal()) * (wobble * step);
                 line(
                     at + jitter,
-                    phi + std::f64::consts::FRAC_PI_2 + rng.normal() * wobble * 0.1,
+                    phi + std::f64::consts::FRAC_PI_2 + rng.normal() * wobble * 0.1 + turn.draw(&mut rng),
                     70.0,
                     &mut rng,
                     0.2 * wobble * step,
@@ -285,18 +323,18 @@ pub fn sequences(wobble: f64, seed: u64) -> Vec<Sequence> {
     // carries every leaf onto the next), one leaf every 40 along it, each turned with it;
     // and along wavier stems, whose turn (up to 0.4 and 1 radian a step) changes sign
     // every few leaves.
-    out.push(stem("leaves on an S-curve", 70.0, 110.0, 70.0, 12, wobble, seed * 131 + 13));
-    out.push(stem("leaves on a wavy stem", 40.0, 400.0 / TAU, 50.0, 16, wobble, seed * 131 + 19));
-    out.push(stem("leaves on a curly stem", 60.0, 300.0 / TAU, 50.0, 16, wobble, seed * 131 + 23));
+    out.push(stem("leaves on an S-curve", 70.0, 110.0, 70.0, 12, (wobble, turn), seed * 131 + 13));
+    out.push(stem("leaves on a wavy stem", 40.0, 400.0 / TAU, 50.0, 16, (wobble, turn), seed * 131 + 19));
+    out.push(stem("leaves on a curly stem", 60.0, 300.0 / TAU, 50.0, 16, (wobble, turn), seed * 131 + 23));
     // (A new user's tighter sine, 50 high and 250 long: up to 1.3 radians a leaf.)
-    out.push(stem("leaves on a tight stem", 50.0, 250.0 / TAU, 40.0, 16, wobble, seed * 131 + 37));
+    out.push(stem("leaves on a tight stem", 50.0, 250.0 / TAU, 40.0, 16, (wobble, turn), seed * 131 + 37));
     // A new user's curves (a helper's trial): leaves along a Bézier arch and a Bézier S,
     // and along a row that turns by 60 and by 30 degrees half way, each leaf turned off
     // the path by the wobble too.
     let arch = bezier([(60.0, 500.0), (250.0, 50.0), (650.0, 50.0), (840.0, 500.0)]);
     let s = bezier([(60.0, 150.0), (700.0, -50.0), (200.0, 750.0), (840.0, 450.0)]);
     let along = |k: u64, name: &str, path: &dyn Fn(f64) -> Point| {
-        leaves_along(name, path, (0.0, 1.0 / 8000.0), 16, (wobble, wobble), seed * 131 + 29 + k)
+        leaves_along(name, path, (0.0, 1.0 / 8000.0), 16, (wobble, wobble, turn), seed * 131 + 29 + k)
     };
     out.push(along(0, "leaves on a Bézier arch", &arch));
     out.push(along(1, "leaves on a Bézier S", &s));
@@ -317,7 +355,13 @@ pub fn sequences(wobble: f64, seed: u64) -> Vec<Sequence> {
             .map(|k| {
                 let at = Point::new(200.0 + k as f64 * step, 300.0)
                     + Vec2::new(rng.normal(), rng.normal()) * (wobble * step);
-                line(at, 60f64.to_radians() + rng.normal() * wobble * 0.1, 70.0, &mut rng, 0.2 * wobble * step)
+                line(
+                    at,
+                    60f64.to_radians() + rng.normal() * wobble * 0.1 + turn.draw(&mut rng),
+                    70.0,
+                    &mut rng,
+                    0.2 * wobble * step,
+                )
             })
             .collect();
         out.push(Sequence {

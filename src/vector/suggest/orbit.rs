@@ -199,6 +199,50 @@ pub(super) fn cost(copies: &[Placed], shapes: &Shapes, a: Vec2, scatter: f64) ->
 /// Prior copies of the hand's scatter (see `certainty::reach`).
 const PRIOR_COPIES: f64 = 3.0;
 
+/// The step that explains the copies best (`cost`), given the hand's scatter: searched
+/// about the shapes' mean within four of their standard deviations, along the turn only
+/// at a given `scale`.
+fn best_a(copies: &[Placed], shapes: &Shapes, scatter: f64, scale: Option<f64>) -> Vec2 {
+    let objective = |a: Vec2| cost(copies, shapes, a, scatter);
+    let polar = |th: f64| Vec2::new(th.cos(), th.sin());
+    let spread = 4.0 * shapes.var.sqrt();
+    if let Some(scale) = scale {
+        let turn = shapes.mean.y.atan2(shapes.mean.x);
+        polar(argmin_1d(&|th| objective(polar(th) * scale), turn, spread.min(0.5))) * scale
+    } else {
+        argmin_2d(&objective, shapes.mean, spread.min(0.3))
+    }
+}
+
+/// What the copies' places say of the bend (how much each step turns on from the one
+/// before), near `bend`: the bend they fit best and their information on it (the
+/// inverse of its variance), from the curvature of the likelihood's profile, the step
+/// refitted (along its turn) at each bend; `shapes_at` gives what the shapes say of the
+/// step at a bend. `None` where the profile does not curve up there.
+///
+/// A hand turns each copy by a few degrees at random: the bend read from four leaves'
+/// shapes may be off by 0.1 radian a step per step, while their places, a few percent
+/// of the step off their curve, hold it to a tenth of that.
+pub(super) fn bend_from_places(
+    copies: &[Placed],
+    shapes_at: &dyn Fn(f64) -> Shapes,
+    prior: f64,
+    bend: f64,
+) -> Option<(f64, f64)> {
+    let fit = Orbit::fit(copies, shapes_at(bend), prior)?;
+    let profile = |b: f64| {
+        let shapes = shapes_at(b);
+        cost(copies, &shapes, best_a(copies, &shapes, fit.scatter, Some(fit.a.hypot())), fit.scatter)
+    };
+    let h = BEND_PROBE;
+    let (lo, mid, hi) = (profile(bend - h), profile(bend), profile(bend + h));
+    let curvature = (lo + hi - 2.0 * mid) / (h * h);
+    (curvature.is_finite() && curvature > 0.0).then(|| (bend - (hi - lo) / (2.0 * h) / curvature, curvature))
+}
+
+/// The bend's step in `bend_from_places` (radians a step, per step).
+const BEND_PROBE: f64 = 0.01;
+
 impl Orbit {
     /// The orbit through `copies` (their indices along the step), with the step read
     /// from the shapes and the places; `prior` is the hand's mean square scatter assumed
@@ -209,19 +253,13 @@ impl Orbit {
         let free = (hand - 3.0).max(0.0);
         let scatter_at = |ssr: f64| (ssr + PRIOR_COPIES * prior) / (free + PRIOR_COPIES);
         let unit = (shapes.mean.hypot() - 1.0).abs() < 0.04;
-        let turn = shapes.mean.y.atan2(shapes.mean.x);
         let bend = shapes.bend;
         let mut scatter = scatter_at(solve(copies, shapes.mean, bend)?.3);
         let objective = |a: Vec2, scatter: f64| cost(copies, &shapes, a, scatter);
         let polar = |th: f64| Vec2::new(th.cos(), th.sin());
-        let spread = 4.0 * shapes.var.sqrt();
         let mut a = shapes.mean;
         for _ in 0..2 {
-            a = if unit {
-                polar(argmin_1d(&|th| objective(polar(th), scatter), turn, spread.min(0.5)))
-            } else {
-                argmin_2d(&|x| objective(x, scatter), shapes.mean, spread.min(0.3))
-            };
+            a = best_a(copies, &shapes, scatter, unit.then_some(1.0));
             scatter = scatter_at(solve(copies, a, bend)?.3);
         }
         // The error of `a`: the objective's curvature (along the turn only, for a pure

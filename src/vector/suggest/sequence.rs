@@ -24,7 +24,7 @@
 //! stroke are carried on.
 
 use super::drift::drift;
-use super::orbit::{cost, Orbit, Placed, Shapes};
+use super::orbit::{bend_from_places, cost, Orbit, Placed, Shapes};
 use super::turning::{turning, Relation};
 use super::{Suggestions, HAND_TO_PLACEMENT, TOLERANCE};
 use crate::rng::Rng;
@@ -75,11 +75,19 @@ const SNAP_SURE: f64 = 20.0;
 /// the next copies' expected miss (leaves over a wavy stem's crest: the bend read on its
 /// rising side carried the ghosts past the crest, 22 off at a step of 40).
 const BEND_CHANGE: f64 = 0.25;
-/// A bend of more than this (radians a step, per step: about a degree) is carried one
+/// A bend of more than this (radians a step, per step: 0.7 degree) is carried one
 /// copy past the last hand-drawn one only (leaves over the top of a Bézier S: the turn
 /// read growing from 7 to 15 degrees a step fell to 14 and 10, and the ghost two copies
-/// on missed by 17-27 at a step of 44; an arc's noise reads up to 0.003).
-const CLEAR_BEND: f64 = 0.015;
+/// on missed by 17-27 at a step of 44; a bend of 0.013, read where the places say it,
+/// put one 15.6 off at a step of 41; an arc's noise reads up to 0.003).
+const CLEAR_BEND: f64 = 0.012;
+/// A bend is taken where it passes this many of its standard errors (else a run turns
+/// alike at every step)...
+const BEND_SURE: f64 = 3.0;
+/// ...and otherwise is held to none, a run of copies mostly turning alike at every step
+/// (a ring, an arc, a spiral: Xing's local similarity), with a prior standard
+/// deviation of this much (radians a step, per step) for what it may hide.
+const BEND_PRIOR: f64 = 0.02;
 /// Why nothing (more) is proposed while the sequence goes on.
 const UNCERTAIN: &str = "The copies drawn so far leave the next ones too uncertain: draw one more.";
 /// Why nothing is proposed where copies repeat but do not yet show the next step.
@@ -222,7 +230,6 @@ fn model(d: &Drawing, run: &[usize], step: f64, fallback: [Vec2; 2], lead: Optio
             .map(|(k, a)| Relation { from: k as i64, span: 1, turn: a.atan2(), scale: a.hypot(), residual: 0.0 })
             .collect();
     }
-    let turning = turning(&relations, lead_in);
     // The hand's scatter before the copies' places show it: as loose as its strokes'
     // shapes wobble (the residual between hand-drawn copies, each point's share half its
     // square; `HAND_TO_PLACEMENT` as for lattices), and no less than `MIN_ERROR` of the
@@ -234,20 +241,47 @@ fn model(d: &Drawing, run: &[usize], step: f64, fallback: [Vec2; 2], lead: Optio
     // prior error of a relation's turn, no less than `TURN_ERROR`.
     let size = run.iter().map(|&i| d.size(i)).sum::<f64>() / run.len() as f64;
     let turn_prior = TURN_ERROR.powi(2).max(prior / (0.5 * size).powi(2));
+    let turning = turning(&relations, lead_in);
     let steps = relations.iter().map(|r| r.span).sum::<usize>() as f64;
     let scale = (relations.iter().map(|r| r.scale.ln()).sum::<f64>() / steps).exp();
     let scale_spread = relations.iter().map(|r| (r.scale.ln() - r.span as f64 * scale.ln()).powi(2)).sum::<f64>();
-    let shapes = Shapes {
-        mean: Vec2::new(turning.first.cos(), turning.first.sin()) * scale,
-        var: (turning.spread + scale_spread + PRIOR_PAIRS * turn_prior) / (turning.dof + PRIOR_PAIRS),
-        // (The turns of consecutive relations share a copy, whose own turn adds to one
-        // and takes from the next: their sum is the last copy's against the first's, so
-        // the mean errs by one relation's error over the steps, not their root; less
-        // well known where a bend is read too.)
-        pairs: steps * steps / if turning.bend != 0.0 { 4.0 } else { 1.0 },
-        bend: turning.bend,
+    let var = (turning.spread + scale_spread + PRIOR_PAIRS * turn_prior) / (turning.dof + PRIOR_PAIRS);
+    let shapes_at = |bend: f64| {
+        let first = turning.first_given(bend);
+        Shapes {
+            mean: Vec2::new(first.cos(), first.sin()) * scale,
+            var,
+            // (The turns of consecutive relations share a copy, whose own turn adds to
+            // one and takes from the next: their sum is the last copy's against the
+            // first's, so the mean errs by one relation's error over the steps, not
+            // their root; less well known where a bend is read too.)
+            pairs: steps * steps / if bend != 0.0 { 4.0 } else { 1.0 },
+            bend,
+        }
     };
-    let bend_error = turning.bend_error;
+    // The bend, from the shapes' turns and the places together (see `bend_from_places`):
+    // taken where it is clear of its error (`BEND_SURE`), else none, its error then
+    // as large as the bend read.
+    let (bend, bend_error) = match turning.slope {
+        Some((slope, se)) => match bend_from_places(&copies, &shapes_at, prior, slope) {
+            Some((placed, information)) => {
+                let precision = 1.0 / (se * se).max(1e-12) + information;
+                let both = (slope / (se * se).max(1e-12) + placed * information) / precision;
+                let error = precision.sqrt().recip();
+                if both.abs() > BEND_SURE * error {
+                    (both, error)
+                } else {
+                    // (Held to no bend, as a run of copies mostly is: what bend it may
+                    // still hide, given that prior.)
+                    let shrink = BEND_PRIOR.powi(2) / (BEND_PRIOR.powi(2) + error * error);
+                    (0.0, both.abs() * shrink + (shrink * error * error).sqrt())
+                }
+            }
+            None => (turning.bend, turning.bend_error),
+        },
+        None => (turning.bend, turning.bend_error),
+    };
+    let shapes = shapes_at(bend);
     let mut orbit = Orbit::fit(&copies, shapes, prior)?;
     // A ring closes when its turn is about a whole fraction of a turn (see
     // `chain::ring_steps`): snapped to that whole number of copies or one either side,
