@@ -63,6 +63,43 @@ fn cross(x: f64, y: f64, wobble: f64) -> [Stroke; 2] {
     ]
 }
 
+/// A grid of crosses drawn row by row with no region (a helper's trial: the second
+/// row's ghosts went to the left of the first column as often as to the right, off the
+/// grid): once the first cross of the second row is drawn, its next three copies are
+/// proposed under the first row's, from left to right; drawn from the right, from
+/// right to left.
+#[test]
+fn a_grid_of_crosses_goes_on_row_by_row_within_its_columns() {
+    for leftwards in [false, true] {
+        let column = |i: usize| if leftwards { 150.0 - 40.0 * i as f64 } else { 30.0 + 40.0 * i as f64 };
+        let mut strokes: Vec<Stroke> = (0..4).flat_map(|i| cross(column(i), 40.0, 0.0)).collect();
+        strokes.extend(cross(column(0), 80.0, 0.0));
+        let s = suggest_strokes(&strokes, &SuggestOptions::default()).unwrap();
+        let mut centres: Vec<(f64, f64)> = s
+            .strokes
+            .chunks(2)
+            .map(|pair| {
+                let (a, b) = (pair[0].reference_point(), pair[1].reference_point());
+                ((a.x + b.x) / 2.0, (a.y + b.y) / 2.0)
+            })
+            .collect();
+        centres.sort_by(|p, q| p.0.total_cmp(&q.0));
+        let mut want: Vec<f64> = (1..4).map(column).collect();
+        want.sort_by(f64::total_cmp);
+        assert_eq!(
+            centres.len(),
+            3,
+            "leftwards {leftwards}: {centres:?} ({:?}) {:?} {:?}",
+            s.reason,
+            s.periods,
+            s.cells
+        );
+        for (c, x) in centres.iter().zip(&want) {
+            assert!((c.0 - x).abs() < 3.0 && (c.1 - 80.0).abs() < 3.0, "leftwards {leftwards}: {centres:?}");
+        }
+    }
+}
+
 #[test]
 fn motifs_whose_parts_sit_on_one_another_repeat_by_their_own_period() {
     // The nearest stroke of any class is the cross's other half, 0.5 units away: the

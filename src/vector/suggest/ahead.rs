@@ -53,7 +53,30 @@ impl Fit {
                 }
             }
         } else {
-            // The next cells along the rhythm, else the free neighbour nearest the latest.
+            // The next cells along the rhythm, else the free neighbour nearest the latest:
+            // within the columns drawn so far (a hand fills a grid row by row, each row as
+            // wide as the first), and where two are as near, the way the hand went along
+            // its rows (a second row begun under the first: its ghosts went left, off the
+            // grid, as often as right).
+            // (Only where the hand went along the lattice's rows of cells, one after the
+            // next: on a basis that crosses the rows it drew, a row of cells is a diagonal.
+            // Along them as the sites lie: a brick lattice's rows begin half a period
+            // apart.)
+            let moves: Vec<(i64, i64)> = (1..elems.len())
+                .map(|i| (self.at(i - 1), self.at(i)))
+                .filter(|(p, c)| p != c)
+                .map(|(p, c)| (c.0 - p.0, c.1 - p.1))
+                .collect();
+            let along: Vec<i64> = moves.iter().filter(|m| m.1 == 0).map(|m| m.0.signum()).collect();
+            let rowwise = self.b.is_some() && 2 * along.len() > moves.len();
+            let way = if rowwise { along.iter().sum::<i64>().signum() } else { 0 };
+            let a = self.a / self.a.hypot2();
+            let along_rows = |c: (i64, i64)| self.lattice().step(c.0, c.1).dot(a);
+            let (lo, hi) = taken.0.iter().fold((f64::MAX, f64::MIN), |(lo, hi), &c| {
+                let x = along_rows(c);
+                (lo.min(x), hi.max(x))
+            });
+            let outside = |c: (i64, i64)| rowwise && (along_rows(c) < lo - 0.5 || along_rows(c) > hi + 0.5);
             let mut last = latest;
             for _ in 0..opts.count {
                 let along = (last.0 + rhythm.0, last.1 + rhythm.1);
@@ -70,7 +93,13 @@ impl Fit {
                         .min_by(|p, q| {
                             let dp = (self.lattice().step(p.0, p.1) - here).hypot2();
                             let dq = (self.lattice().step(q.0, q.1) - here).hypot2();
-                            (p.1 != latest.1).cmp(&(q.1 != latest.1)).then(dp.total_cmp(&dq)).then(p.cmp(q))
+                            let against = |c: &(i64, i64)| (c.0 - latest.0).signum() * way < 0;
+                            outside(*p)
+                                .cmp(&outside(*q))
+                                .then((p.1 != latest.1).cmp(&(q.1 != latest.1)))
+                                .then(dp.total_cmp(&dq))
+                                .then(against(p).cmp(&against(q)))
+                                .then(p.cmp(q))
                         })
                 };
                 let Some(next) = next else { break };
