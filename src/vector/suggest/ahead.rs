@@ -76,7 +76,7 @@ impl Fit {
                 let x = along_rows(c);
                 (lo.min(x), hi.max(x))
             });
-            let outside = |c: (i64, i64)| rowwise && (along_rows(c) < lo - 0.5 || along_rows(c) > hi + 0.5);
+            let outside = |c: (i64, i64)| rowwise && (along_rows(c) < lo - 0.75 || along_rows(c) > hi + 0.75);
             let mut last = latest;
             for _ in 0..opts.count {
                 let along = (last.0 + rhythm.0, last.1 + rhythm.1);

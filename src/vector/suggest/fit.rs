@@ -2,7 +2,7 @@
 //! positions, and the cells each stroke falls in.
 
 use super::certainty::Certainty;
-use super::lattice::{candidates, refine, shear, square, Lattice, Residues};
+use super::lattice::{candidates, refine, rows_drawn, shear, square, Lattice, Residues};
 use super::TOLERANCE;
 use crate::vector::element::Element;
 use crate::vector::reference::Spread;
@@ -77,7 +77,24 @@ impl Fit {
                 }
             }
         }
-        best.or(row)
+        best.map(|f| f.along_rows_drawn(elems, tol)).or(row)
+    }
+
+    /// The same lattice on the basis whose rows of cells are the rows the hand drew (see
+    /// `rows_drawn`), each stroke's cell counted on it.
+    fn along_rows_drawn(self, elems: &[Element], tol: f64) -> Fit {
+        let Some(b) = self.b else { return self };
+        // (How often the hand went from one copy to the next by `v`, either way.)
+        let steps_along = |v: Vec2| {
+            let by = |d: Vec2| (d - v).hypot() < tol || (d + v).hypot() < tol;
+            elems.windows(2).filter(|w| by(w[1].pos - w[0].pos)).count()
+        };
+        let Some([[i, j], [k, l]]) = rows_drawn(self.a, b, steps_along) else { return self };
+        // `u a + w b = u' a' + w' b'`: `(u', w') = (u, w) M^-1`, `M^-1 = [[l, -j], [-k, i]] / det`.
+        let det = i * l - j * k;
+        let cell = self.cell.iter().map(|&(m, (u, w))| (m, ((u * l - w * k) * det, (w * i - u * j) * det))).collect();
+        let (a, b) = (self.a * i as f64 + b * j as f64, self.a * k as f64 + b * l as f64);
+        Fit { a, b: Some(b), cell, ..self }
     }
 
     /// The lattice of periods `a` (and `b`) over `elems`, if it explains them (without

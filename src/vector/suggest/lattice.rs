@@ -91,6 +91,59 @@ pub(super) fn shear(a: Vec2, b: Vec2) -> Vec2 {
     }
 }
 
+/// The basis of the lattice of periods `a` and `b` whose rows of cells are the rows the
+/// hand drew, as whole multiples of `a` and `b` (a matrix of determinant 1 or -1, whose
+/// rows give the new periods; `None`: `a` and `b` are it already): its first period
+/// the one the hand stepped along most often from one copy to the next (`steps_along`;
+/// of the lattice's short periods, the shorter on a tie, and `a` itself where it steps
+/// along no more), the same way as `a`; the second the shortest that completes it, on
+/// `b`'s side. The lattice is the same; only its cells are counted otherwise. (A grid
+/// read on a diagonal and a column went on along the diagonal: its next row's ghosts
+/// fell off the grid.)
+pub(super) fn rows_drawn(a: Vec2, b: Vec2, steps_along: impl Fn(Vec2) -> usize) -> Option<[[i64; 2]; 2]> {
+    let gcd = |mut x: i64, mut y: i64| {
+        (x, y) = (x.abs(), y.abs());
+        while y != 0 {
+            (x, y) = (y, x % y);
+        }
+        x
+    };
+    let at = |(i, j): (i64, i64)| a * i as f64 + b * j as f64;
+    let mut best = ((1i64, 0i64), steps_along(a), a.hypot());
+    for i in -2i64..=2 {
+        for j in -2i64..=2 {
+            // (Primitive periods only, one of each pair ±v.)
+            if (i, j) <= (0, 0) || gcd(i, j) != 1 {
+                continue;
+            }
+            let v = at((i, j));
+            let (steps, len) = (steps_along(v), v.hypot());
+            if steps > best.1 || (steps == best.1 && steps > 0 && len < best.2 - 1e-9) {
+                best = ((i, j), steps, len);
+            }
+        }
+    }
+    let (mut i, mut j) = best.0;
+    if (i, j) == (1, 0) {
+        return None;
+    }
+    if at((i, j)).dot(a) < 0.0 {
+        (i, j) = (-i, -j);
+    }
+    // A second period completing the basis: `k a + l b` with `i l - j k = 1`, less the
+    // whole multiple of the first that leaves it shortest, on `b`'s side.
+    let (mut k, mut l) = (-2i64..=2)
+        .flat_map(|k| (-2i64..=2).map(move |l| (k, l)))
+        .find(|&(k, l)| i * l - j * k == 1)
+        .expect("a primitive pair of small integers has one");
+    let r = (at((k, l)).dot(at((i, j))) / at((i, j)).hypot2()).round() as i64;
+    (k, l) = (k - r * i, l - r * j);
+    if at((i, j)).cross(at((k, l))).signum() != a.cross(b).signum() {
+        (k, l) = (-k, -l);
+    }
+    Some([[i, j], [k, l]])
+}
+
 /// Periods `a` and `b` (a row when there is no `b`).
 #[derive(Clone, Copy, Debug)]
 pub(super) struct Lattice {
@@ -245,4 +298,33 @@ pub(super) fn candidates(elems: &[Element], parts: &[usize], spread: &Spread, to
         }
     }
     kept.into_iter().filter(|&(_, votes)| votes >= 2).map(|(v, _)| v).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_grid_read_on_its_diagonal_is_counted_along_the_rows_drawn() {
+        // A square grid of period 30 read on the diagonal (30, -30) and the column
+        // (0, 30); the hand stepped along (30, 0) six times, down a column once.
+        let (a, b) = (Vec2::new(30.0, -30.0), Vec2::new(0.0, 30.0));
+        let steps = |v: Vec2| {
+            let is = |w: Vec2| (v - w).hypot() < 1.0 || (v + w).hypot() < 1.0;
+            if is(Vec2::new(30.0, 0.0)) {
+                6
+            } else if is(Vec2::new(0.0, 30.0)) {
+                1
+            } else {
+                0
+            }
+        };
+        let [[i, j], [k, l]] = rows_drawn(a, b, steps).expect("another basis");
+        assert_eq!((i * l - j * k).abs(), 1, "the same lattice");
+        let (first, second) = (a * i as f64 + b * j as f64, a * k as f64 + b * l as f64);
+        assert!((first - Vec2::new(30.0, 0.0)).hypot() < 1e-9, "{first:?}");
+        assert!((second.hypot() - 30.0).abs() < 1e-9 && second.cross(first).abs() > 1.0, "{second:?}");
+        // Already along the rows: unchanged.
+        assert!(rows_drawn(Vec2::new(30.0, 0.0), Vec2::new(0.0, 30.0), steps).is_none());
+    }
 }
