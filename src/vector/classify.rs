@@ -194,7 +194,7 @@ fn translates(strokes: &[Stroke]) -> (Vec<usize>, Vec<usize>) {
 }
 
 /// At most this many strokes are sampled to propose tolerances (pairs grow quadratically).
-const PROPOSAL_SAMPLE: usize = 120;
+const PROPOSAL_SAMPLE: usize = 64;
 /// The strokes' shapes are resampled every this share of the typical size to propose
 /// the path tolerance.
 const PROPOSAL_SPACING: f64 = 16.0;
@@ -203,8 +203,10 @@ const PROPOSAL_SPACING: f64 = 16.0;
 /// distances are split at their largest relative gap, if that gap is clear; otherwise
 /// the tolerance admits all of them (one class by that attribute).
 pub fn propose_tolerances(strokes: &[Stroke]) -> Tolerances {
-    let step = strokes.len().div_ceil(PROPOSAL_SAMPLE).max(1);
-    let sample: Vec<Stroke> = strokes.iter().step_by(step).cloned().collect();
+    // Evenly spread, at a stride that is not a whole number: a whole stride of two took
+    // only the first part of every motif of two strokes.
+    let count = strokes.len().min(PROPOSAL_SAMPLE);
+    let sample: Vec<Stroke> = (0..count).map(|k| strokes[k * strokes.len() / count.max(1)].clone()).collect();
     let size = typical_size(&sample);
     // Path distances between copies are those of their originals: each computed once.
     let (firsts, copy_of) = translates(&sample);
