@@ -100,6 +100,25 @@ fn a_grid_of_crosses_goes_on_row_by_row_within_its_columns() {
     }
 }
 
+/// One step down to begin the next row is no row (a review: four crosses in a row and
+/// one under the second, a little off each, read on the periods (84.5, -43.6) and
+/// (0, 43.6): the ghosts went down a diagonal nobody drew): the lattice's first period
+/// stays along the row drawn.
+#[test]
+fn one_step_down_a_row_is_no_row() {
+    let off = |k: u64| ((k.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * 0.6;
+    for seed in [7u64, 23, 33] {
+        let p = 40.0 + (seed % 13) as f64 * 0.31;
+        let mut strokes: Vec<Stroke> = (0..4)
+            .flat_map(|i| cross(30.0 + p * i as f64 + off(seed * 17 + i), 40.0 + off(seed * 31 + i), 0.0))
+            .collect();
+        strokes.extend(cross(30.0 + p + off(seed * 7), 83.7 + off(seed * 5), 0.0));
+        let s = suggest_strokes(&strokes, &SuggestOptions::default()).unwrap();
+        let a = s.periods.first().expect("a lattice");
+        assert!(a[1].abs() < 0.05 * a[0].abs(), "seed {seed}: periods {:?}", s.periods);
+    }
+}
+
 #[test]
 fn motifs_whose_parts_sit_on_one_another_repeat_by_their_own_period() {
     // The nearest stroke of any class is the cross's other half, 0.5 units away: the

@@ -76,14 +76,30 @@ impl Fit {
                 let x = along_rows(c);
                 (lo.min(x), hi.max(x))
             });
-            let outside = |c: (i64, i64)| rowwise && (along_rows(c) < lo - 0.75 || along_rows(c) > hi + 0.75);
+            // (Once a second row is begun: the first row's span is known only when it ends.
+            // Half a period either side: a brick lattice's next row may begin half out.)
+            let rows = {
+                let mut w: Vec<i64> = taken.0.iter().map(|c| c.1).collect();
+                w.sort_unstable();
+                w.dedup();
+                w.len()
+            };
+            let outside =
+                |c: (i64, i64)| rowwise && rows > 1 && (along_rows(c) < lo - 0.75 || along_rows(c) > hi + 0.75);
             let mut last = latest;
             for _ in 0..opts.count {
                 let along = (last.0 + rhythm.0, last.1 + rhythm.1);
-                let next = if !taken.contains(along) && any_inside(along) && taken.adjacent(along, &neighbours) {
+                let next = if !taken.contains(along)
+                    && any_inside(along)
+                    && taken.adjacent(along, &neighbours)
+                    && !outside(along)
+                {
                     Some(along)
                 } else {
-                    let here = self.lattice().step(latest.0, latest.1);
+                    // (Measured by the cells' difference, so that two cells either side are
+                    // exactly as near; from the copy proposed last, so the ghosts go on
+                    // along the row rather than either side of the latest in turn.)
+                    let from = |c: (i64, i64)| self.lattice().step(c.0 - latest.0, c.1 - latest.1).hypot2();
                     taken
                         .0
                         .iter()
@@ -91,13 +107,11 @@ impl Fit {
                         .filter(|&c| !taken.contains(c) && any_inside(c))
                         // The latest copy's line of cells first: a row is finished before the next.
                         .min_by(|p, q| {
-                            let dp = (self.lattice().step(p.0, p.1) - here).hypot2();
-                            let dq = (self.lattice().step(q.0, q.1) - here).hypot2();
                             let against = |c: &(i64, i64)| (c.0 - latest.0).signum() * way < 0;
                             outside(*p)
                                 .cmp(&outside(*q))
                                 .then((p.1 != latest.1).cmp(&(q.1 != latest.1)))
-                                .then(dp.total_cmp(&dq))
+                                .then(from(*p).total_cmp(&from(*q)))
                                 .then(against(p).cmp(&against(q)))
                                 .then(p.cmp(q))
                         })

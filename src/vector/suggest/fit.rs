@@ -84,10 +84,11 @@ impl Fit {
     /// `rows_drawn`), each stroke's cell counted on it.
     fn along_rows_drawn(self, elems: &[Element], tol: f64) -> Fit {
         let Some(b) = self.b else { return self };
-        // (How often the hand went from one copy to the next by `v`, either way.)
+        // (How often the hand went from one copy to the next of its kind by `v`, either
+        // way: a step from one part of a motif to another is no period.)
         let steps_along = |v: Vec2| {
             let by = |d: Vec2| (d - v).hypot() < tol || (d + v).hypot() < tol;
-            elems.windows(2).filter(|w| by(w[1].pos - w[0].pos)).count()
+            elems.windows(2).filter(|w| w[0].class == w[1].class && by(w[1].pos - w[0].pos)).count()
         };
         let Some([[i, j], [k, l]]) = rows_drawn(self.a, b, steps_along) else { return self };
         // `u a + w b = u' a' + w' b'`: `(u', w') = (u, w) M^-1`, `M^-1 = [[l, -j], [-k, i]] / det`.

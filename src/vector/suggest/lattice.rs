@@ -94,10 +94,10 @@ pub(super) fn shear(a: Vec2, b: Vec2) -> Vec2 {
 /// The basis of the lattice of periods `a` and `b` whose rows of cells are the rows the
 /// hand drew, as whole multiples of `a` and `b` (a matrix of determinant 1 or -1, whose
 /// rows give the new periods; `None`: `a` and `b` are it already): its first period
-/// the one the hand stepped along most often from one copy to the next (`steps_along`;
-/// of the lattice's short periods, the shorter on a tie, and `a` itself where it steps
-/// along no more), the same way as `a`; the second the shortest that completes it, on
-/// `b`'s side. The lattice is the same; only its cells are counted otherwise. (A grid
+/// the one the hand stepped along most often from one copy to the next (`steps_along`),
+/// when that is at least twice and more often than along `a` (one step down to begin
+/// the next row is no row), the same way as `a`; the second the shortest that completes
+/// it, on `b`'s side. The lattice is the same; only its cells are counted otherwise. (A grid
 /// read on a diagonal and a column went on along the diagonal: its next row's ghosts
 /// fell off the grid.)
 pub(super) fn rows_drawn(a: Vec2, b: Vec2, steps_along: impl Fn(Vec2) -> usize) -> Option<[[i64; 2]; 2]> {
@@ -118,7 +118,7 @@ pub(super) fn rows_drawn(a: Vec2, b: Vec2, steps_along: impl Fn(Vec2) -> usize) 
             }
             let v = at((i, j));
             let (steps, len) = (steps_along(v), v.hypot());
-            if steps > best.1 || (steps == best.1 && steps > 0 && len < best.2 - 1e-9) {
+            if steps > best.1.max(1) || (steps == best.1 && best.0 != (1, 0) && len < best.2 - 1e-9) {
                 best = ((i, j), steps, len);
             }
         }

@@ -260,8 +260,8 @@ fn model(d: &Drawing, run: &[usize], step: f64, fallback: [Vec2; 2], lead: Optio
         }
     };
     // The bend, from the shapes' turns and the places together (see `bend_from_places`):
-    // taken where it is clear of its error (`BEND_SURE`), else none, its error then
-    // as large as the bend read.
+    // taken where it is clear of its error (`BEND_SURE`), else none, its error then the
+    // bend read and its error, both shrunk by the prior (`BEND_PRIOR`).
     let (bend, bend_error) = match turning.slope {
         Some((slope, se)) => match bend_from_places(&copies, &shapes_at, prior, slope) {
             Some((placed, information)) => {
