@@ -103,7 +103,7 @@ fn a_grid_of_crosses_goes_on_row_by_row_within_its_columns() {
 /// One step down to begin the next row is no row (a review: four crosses in a row and
 /// one under the second, a little off each, read on the periods (84.5, -43.6) and
 /// (0, 43.6): the ghosts went down a diagonal nobody drew): the lattice's first period
-/// stays along the row drawn.
+/// stays along the row drawn, and the ghosts within its columns.
 #[test]
 fn one_step_down_a_row_is_no_row() {
     let off = |k: u64| ((k.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> 11) as f64 / (1u64 << 53) as f64 - 0.5) * 0.6;
@@ -116,6 +116,12 @@ fn one_step_down_a_row_is_no_row() {
         let s = suggest_strokes(&strokes, &SuggestOptions::default()).unwrap();
         let a = s.periods.first().expect("a lattice");
         assert!(a[1].abs() < 0.05 * a[0].abs(), "seed {seed}: periods {:?}", s.periods);
+        // (And the ghosts within the first row's columns: read as a lattice of two
+        // copies a period, its second row went on to x = -54 and -12.)
+        for g in &s.strokes {
+            let x = g.reference_point().x;
+            assert!((30.0 - 0.5 * p..=30.0 + 3.5 * p).contains(&x), "seed {seed}: a ghost at x {x:.0}");
+        }
     }
 }
 

@@ -68,7 +68,7 @@ impl Fit {
                 .map(|(p, c)| (c.0 - p.0, c.1 - p.1))
                 .collect();
             let along: Vec<i64> = moves.iter().filter(|m| m.1 == 0).map(|m| m.0.signum()).collect();
-            let rowwise = self.b.is_some() && 2 * along.len() > moves.len();
+            let rowwise = self.b.is_some() && !along.is_empty() && 2 * along.len() >= moves.len();
             let way = if rowwise { along.iter().sum::<i64>().signum() } else { 0 };
             let a = self.a / self.a.hypot2();
             let along_rows = |c: (i64, i64)| self.lattice().step(c.0, c.1).dot(a);
