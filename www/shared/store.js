@@ -79,11 +79,18 @@ export function saver(key, write, { delay = 0, onError, onSaved } = {}) {
       clearTimeout(timer);
       timer = setTimeout(flush, delay);
     },
-    /** Writes now (before the page is hidden). */
+    /**
+     * Writes now (before the page is hidden), even while a write is under way: the page
+     * may be gone before that one ends, and IndexedDB applies the two in order. (A
+     * reload just after an undo that followed an import found the import: the undo's
+     * write waited on the import's and never began.)
+     */
     flush() {
-      if (timer) {
+      if (timer || again) {
         clearTimeout(timer);
-        return flush();
+        timer = null;
+        again = false;
+        return set(key, write()).catch((e) => onError?.(e));
       }
       return Promise.resolve();
     },
