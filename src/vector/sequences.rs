@@ -26,6 +26,11 @@ pub struct Sequence {
     /// though not among the strokes to draw. Each with its step.
     pub beyond: Vec<(Stroke, f64)>,
     pub canvas: kurbo::Rect,
+    /// Each stroke's part of its motif (0 for a motif of one stroke): a ghost is right
+    /// only where it is the part it repeats.
+    pub classes: Vec<u32>,
+    /// Strokes in each copy.
+    pub parts: usize,
 }
 
 impl Sequence {
@@ -35,7 +40,12 @@ impl Sequence {
     pub fn replay(&self, strokes: &[Stroke]) -> Replay {
         let tol: Vec<f64> = self.steps.iter().map(|s| 0.3 * s).collect();
         let past: Vec<_> = self.beyond.iter().map(|(b, step)| (b.clone(), 0.3 * step)).collect();
-        replay_each(strokes, &vec![0; strokes.len()], self.canvas, &tol, &past)
+        replay_each(strokes, &self.classes, self.canvas, &tol, &past)
+    }
+
+    /// Share of the strokes accepted after the first three copies were drawn.
+    pub fn accepted_after_three(&self, r: &Replay) -> f64 {
+        r.accepted_after(3 * self.parts)
     }
 }
 
@@ -181,7 +191,16 @@ fn leaves_along(
             leaf(p + jitter, phi - 0.6 + off, 36.0, &mut rng, 0.2 * wobble.0 * step)
         })
         .collect();
-    Sequence { name: name.into(), strokes, step, steps: Vec::new(), beyond: Vec::new(), canvas: kurbo::Rect::ZERO }
+    Sequence {
+        name: name.into(),
+        strokes,
+        step,
+        steps: Vec::new(),
+        beyond: Vec::new(),
+        canvas: kurbo::Rect::ZERO,
+        classes: Vec::new(),
+        parts: 1,
+    }
 }
 
 /// The cubic Bézier curve through `p[0]` and `p[3]` with control points `p[1]`, `p[2]`.
@@ -238,6 +257,8 @@ pub fn drawn_by(wobble: f64, turn: HandTurn, seed: u64) -> Vec<Sequence> {
             steps: Vec::new(),
             beyond: Vec::new(),
             canvas,
+            classes: Vec::new(),
+            parts: 1,
         });
     }
     // A spiral: petals turning by 30° and growing by 6% a step, out from the centre.
@@ -267,6 +288,8 @@ pub fn drawn_by(wobble: f64, turn: HandTurn, seed: u64) -> Vec<Sequence> {
             steps,
             beyond: Vec::new(),
             canvas,
+            classes: Vec::new(),
+            parts: 1,
         });
     }
     // Leaves along an arc of radius 260, one every 14°, each turned with the arc.
@@ -289,6 +312,8 @@ pub fn drawn_by(wobble: f64, turn: HandTurn, seed: u64) -> Vec<Sequence> {
             steps: Vec::new(),
             beyond: Vec::new(),
             canvas,
+            classes: Vec::new(),
+            parts: 1,
         });
     }
     // Hatching across a contour that turns: lines 70 long, 7.2 apart along an arc of
@@ -317,6 +342,8 @@ pub fn drawn_by(wobble: f64, turn: HandTurn, seed: u64) -> Vec<Sequence> {
             steps: Vec::new(),
             beyond: Vec::new(),
             canvas,
+            classes: Vec::new(),
+            parts: 1,
         });
     }
     // Leaves along an S: a stem that bends one way and then the other (no one similarity
@@ -371,15 +398,27 @@ pub fn drawn_by(wobble: f64, turn: HandTurn, seed: u64) -> Vec<Sequence> {
             steps: Vec::new(),
             beyond: Vec::new(),
             canvas,
+            classes: Vec::new(),
+            parts: 1,
         });
     }
-    for q in &mut out {
+    finish(&mut out);
+    out
+}
+
+/// Each family's steps, classes, the copies past an open one's end, and its canvas.
+fn finish(out: &mut [Sequence]) {
+    for q in out {
         if q.steps.is_empty() {
             q.steps = vec![q.step; q.strokes.len()];
         }
+        if q.classes.is_empty() {
+            q.classes = (0..q.strokes.len()).map(|i| (i % q.parts) as u32).collect();
+        }
         if !q.name.starts_with("ring") {
-            let at = q.strokes.len() - BEYOND;
+            let at = q.strokes.len() - BEYOND * q.parts;
             q.beyond = q.strokes.split_off(at).into_iter().zip(q.steps.split_off(at)).collect();
+            q.classes.truncate(at);
         }
         let c: Vec<Point> = q.strokes.iter().map(Stroke::reference_point).collect();
         q.canvas = c
@@ -387,5 +426,136 @@ pub fn drawn_by(wobble: f64, turn: HandTurn, seed: u64) -> Vec<Sequence> {
             .fold(kurbo::Rect::from_points(c[0], c[0]), |r, &p| r.union_pt(p))
             .inflate(0.5 * q.step, 0.5 * q.step);
     }
+}
+
+/// An arc from `from` to `to` bulging `bulge` of its chord to the left of the way it
+/// goes (right where negative): 16 points, each off by `noise`.
+fn arc(from: Point, to: Point, bulge: f64, rng: &mut Rng, noise: f64) -> Stroke {
+    let chord = to - from;
+    let left = Vec2::new(chord.y, -chord.x);
+    let pts = (0..=16)
+        .map(|k| {
+            let t = k as f64 / 16.0;
+            let p = from + chord * t + left * (bulge * 4.0 * t * (1.0 - t));
+            [p.x + rng.normal() * noise, p.y + rng.normal() * noise]
+        })
+        .collect();
+    Stroke::new(pts, 2.0, None)
+}
+
+/// A leaf of three strokes from `at` along `theta`, `len` long: its left and right
+/// halves (arcs, mirror images of one another) and its midrib, in that order.
+fn three_stroke_leaf(at: Point, theta: f64, len: f64, rng: &mut Rng, noise: f64) -> Vec<Stroke> {
+    let tip = at + Vec2::new(theta.cos(), theta.sin()) * len;
+    vec![
+        arc(at, tip, 0.2, rng, noise),
+        arc(at, tip, -0.2, rng, noise),
+        line(at.midpoint(tip), theta, 0.8 * len, rng, noise),
+    ]
+}
+
+/// Motifs of several strokes, drawn a few times by hand and carried on by turns
+/// (issue 27: a ring of petals each drawn as two mirrored arcs got "no repetition";
+/// leaves of three strokes along curves 0-10% accepted): petals of two arcs round a
+/// centre, petals with a vein, leaves of three strokes along an arc and an S-curve, and
+/// a stalk and its leaf along a Bézier arch. Each copy's strokes in one order; each
+/// copy off its place by `wobble` of the step and turned as `turn` says, each stroke's
+/// points off by a fifth of that.
+pub fn composite(wobble: f64, turn: HandTurn, seed: u64) -> Vec<Sequence> {
+    let mut out = Vec::new();
+    let centre = Point::new(300.0, 300.0);
+    let canvas = kurbo::Rect::ZERO;
+    // A ring of `n` petals, each `len` long, drawn by `petal` (its strokes in order).
+    let mut ring =
+        |name: &str, n: usize, len: f64, k0: u64, petal: &dyn Fn(Point, f64, &mut Rng, f64) -> Vec<Stroke>| {
+            let mut rng = Rng::new(seed * 131 + k0);
+            let step = len * (std::f64::consts::PI / n as f64).sin();
+            let copies: Vec<Vec<Stroke>> = (0..n)
+                .map(|k| {
+                    let theta =
+                        k as f64 * TAU / n as f64 + rng.normal() * wobble * step / (0.5 * len) + turn.draw(&mut rng);
+                    let at = centre + Vec2::new(rng.normal(), rng.normal()) * (wobble * step);
+                    petal(at, theta, &mut rng, 0.2 * wobble * step)
+                })
+                .collect();
+            let parts = copies[0].len();
+            out.push(Sequence {
+                name: name.into(),
+                strokes: copies.into_iter().flatten().collect(),
+                step,
+                steps: Vec::new(),
+                beyond: Vec::new(),
+                canvas,
+                classes: Vec::new(),
+                parts,
+            });
+        };
+    ring("ring of 7 two-arc petals", 7, 90.0, 201, &|at, theta, rng, noise| {
+        let tip = at + Vec2::new(theta.cos(), theta.sin()) * 90.0;
+        vec![arc(at, tip, 0.18, rng, noise), arc(at, tip, -0.18, rng, noise)]
+    });
+    ring("ring of 6 veined petals", 6, 90.0, 203, &|at, theta, rng, noise| {
+        let vein = at + Vec2::new(theta.cos(), theta.sin()) * 45.0;
+        vec![leaf(at, theta, 90.0, rng, noise), line(vein, theta, 60.0, rng, noise)]
+    });
+    ring("ring of 9 three-stroke leaves", 9, 80.0, 205, &|at, theta, rng, noise| {
+        three_stroke_leaf(at, theta, 80.0, rng, noise)
+    });
+    // Along curves: each copy's strokes from `motif`, one copy every 40 of arc length.
+    let along = |name: &str,
+                 path: &dyn Fn(f64) -> Point,
+                 dt: f64,
+                 n: usize,
+                 k0: u64,
+                 motif: &dyn Fn(Point, f64, &mut Rng, f64) -> Vec<Stroke>| {
+        let mut rng = Rng::new(seed * 131 + k0);
+        let step = 40.0;
+        let (mut sites, mut run, mut t) = (Vec::new(), 0.0, 0.0);
+        while sites.len() < n + BEYOND {
+            let (p, q) = (path(t), path(t + dt));
+            run += p.distance(q);
+            t += dt;
+            if run >= step || sites.is_empty() {
+                run = 0.0;
+                sites.push((p, (q.y - p.y).atan2(q.x - p.x)));
+            }
+        }
+        let copies: Vec<Vec<Stroke>> = sites
+            .iter()
+            .map(|&(p, phi)| {
+                let jitter = Vec2::new(rng.normal(), rng.normal()) * (wobble * step);
+                let off = rng.normal() * wobble + turn.draw(&mut rng);
+                motif(p + jitter, phi - 0.6 + off, &mut rng, 0.2 * wobble * step)
+            })
+            .collect();
+        let parts = copies[0].len();
+        Sequence {
+            name: name.into(),
+            strokes: copies.into_iter().flatten().collect(),
+            step,
+            steps: Vec::new(),
+            beyond: Vec::new(),
+            canvas,
+            classes: Vec::new(),
+            parts,
+        }
+    };
+    let arc_path = |t: f64| {
+        let phi = -1.2 + 2.4 * t;
+        Point::new(300.0, 560.0) + Vec2::new(phi.sin(), -phi.cos()) * 260.0
+    };
+    let s_path = |t: f64| {
+        let x = 70.0 + 600.0 * t;
+        Point::new(x, 300.0 + 70.0 * ((x - 300.0) / 110.0).sin())
+    };
+    let leaf3 = |at, theta, rng: &mut Rng, noise| three_stroke_leaf(at, theta, 34.0, rng, noise);
+    out.push(along("three-stroke leaves on an arc", &arc_path, 1e-4, 10, 207, &leaf3));
+    out.push(along("three-stroke leaves on an S-curve", &s_path, 1e-4, 12, 209, &leaf3));
+    let arch = bezier([(60.0, 500.0), (250.0, 50.0), (650.0, 50.0), (840.0, 500.0)]);
+    out.push(along("stalked leaves on a Bézier arch", &arch, 1.0 / 8000.0, 14, 211, &|at, theta, rng, noise| {
+        let d = Vec2::new(theta.cos(), theta.sin());
+        vec![line(at + d * 6.0, theta, 12.0, rng, noise), leaf(at + d * 12.0, theta, 30.0, rng, noise)]
+    }));
+    finish(&mut out);
     out
 }

@@ -1,7 +1,8 @@
 // Petals drawn around a centre with the mouse (issue 27): after three, ghosts complete
 // the ring at the same turn; Tab accepts them; undo takes them back; synthesized, three
-// petals become rosettes of eight. Screenshots: out/ring-ghosts.png,
-// out/ring-accepted.png, out/ring-synthesized.png.
+// petals become rosettes of eight; petals drawn as two arcs each are completed whole.
+// Screenshots: out/ring-ghosts.png, out/ring-accepted.png, out/ring-synthesized.png,
+// out/ring-two-arcs.png, out/ring-two-arcs-accepted.png.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync } from 'node:fs';
@@ -28,6 +29,24 @@ async function drawPetal(page, theta, wobble, phase = 0, begin = 0, backwards = 
   await page.mouse.move(...at(...pts[0]));
   await page.mouse.down();
   for (const p of pts.slice(1)) await page.mouse.move(...at(...p), { steps: 2 });
+  await page.mouse.up();
+}
+
+/** Draws half a petal with the mouse: an arc from the centre (400, 250) 110 out along
+ *  `theta`, bulging `bulge` of that to its left (to its right where negative), its
+ *  points wobbling by `wobble`. */
+async function drawArc(page, theta, bulge, wobble, phase = 0) {
+  const box = await page.locator('#draw').boundingBox();
+  const at = (x, y) => [box.x + (x * box.width) / 800, box.y + (y * box.height) / 500];
+  const pts = [];
+  for (let k = 0; k <= 16; k++) {
+    const t = k / 16;
+    const along = 110 * t, across = -bulge * 110 * 4 * t * (1 - t) + ((k + phase) % 3 - 1) * wobble;
+    pts.push(at(400 + along * Math.cos(theta) - across * Math.sin(theta), 250 + along * Math.sin(theta) + across * Math.cos(theta)));
+  }
+  await page.mouse.move(...pts[0]);
+  await page.mouse.down();
+  for (const p of pts.slice(1)) await page.mouse.move(...p, { steps: 2 });
   await page.mouse.up();
 }
 
@@ -111,6 +130,49 @@ test('three petals drawn around a centre synthesize into rosettes of eight', asy
     const strokes = Number(info.split(' ')[0]);
     assert.ok(strokes >= 4 * 8, info);
     assert.equal(Number((await page.textContent('#stroke-count')).split(' ')[0]), 3, 'the drawing is kept as drawn');
+  } finally {
+    await close();
+  }
+});
+
+test('petals drawn as two arcs each: the ghosts complete the ring petal by petal, both arcs', async () => {
+  mkdirSync('out', { recursive: true });
+  const { page, close } = await openEmptyCanvas({ height: 1000 });
+  try {
+    // Three petals of eight, each its left arc then its right (a ring of two-stroke
+    // motifs got "no repetition" before).
+    const step = (2 * Math.PI) / 8;
+    for (let k = 0; k < 3; k++) {
+      await drawArc(page, k * step, 0.18, 0.6, k);
+      await drawArc(page, k * step, -0.18, 0.6, k + 1);
+    }
+    await settled(page);
+    const status = await page.textContent('#suggest-status');
+    assert.match(status, /^[1-9]\d* suggested stroke/, status);
+    await page.screenshot({ path: 'out/ring-two-arcs.png' });
+    let before = await strokeCount(page);
+    for (const key of ['Tab', 'Enter', 'Enter', 'Enter', 'Enter']) {
+      await page.keyboard.press(key);
+      await page.waitForFunction((n) => Number(document.querySelector('#stroke-count').textContent.split(' ')[0]) > n, before);
+      before = await strokeCount(page);
+      await settled(page);
+      if (!/suggested stroke/.test(await page.textContent('#suggest-status'))) break;
+    }
+    await page.screenshot({ path: 'out/ring-two-arcs-accepted.png' });
+    assert.equal(await strokeCount(page), 16, 'eight petals of two arcs');
+    assert.match(await page.textContent('#suggest-status'), /complete/);
+    // Each petal's two arcs: their middles about 55 out along one of the eight turns,
+    // one each side of it.
+    const middles = await page.evaluate(() => window.playground.drawing().strokes.map((s) => s.points[Math.floor(s.points.length / 2)]));
+    const sides = new Map();
+    for (const [x, y] of middles) {
+      const r = Math.hypot(x - 400, y - 250), angle = Math.atan2(y - 250, x - 400);
+      const k = ((Math.round(angle / step) % 8) + 8) % 8;
+      const off = angle - Math.round(angle / step) * step;
+      assert.ok(Math.abs(r - 58.5) < 9 && Math.abs(Math.abs(off) - 0.35) < 0.13, `an arc's middle at ${x.toFixed(0)}, ${y.toFixed(0)}`);
+      sides.set(`${k}${Math.sign(off)}`, true);
+    }
+    assert.equal(sides.size, 16, 'both sides of every petal');
   } finally {
     await close();
   }

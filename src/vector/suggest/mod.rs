@@ -284,17 +284,27 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
         hit
     };
     let stacked = Stacked::new(strokes, &classification.classes, &accepted);
-    // A row may bend: each motif position's hand-drawn copies along it (of one stroke),
-    // whose shapes show how much its steps turn (see `drift`).
+    // A row may bend: each motif position's hand-drawn copies along it, whose shapes
+    // show how much its steps turn (see `drift`); of a motif of several strokes, the
+    // largest part of its whole copies (a leaf's stalk a few pixels long shows little).
+    let largest = |x: usize| {
+        let size = |&&s: &&u32| strokes[s as usize].bounds().size().to_vec2().hypot();
+        let s = motifs.instances[x].iter().max_by(|a, b| size(a).total_cmp(&size(b)))?;
+        Some(motifs.part[*s as usize])
+    };
     let hand_rows: Vec<Vec<(i64, &Stroke)>> = if fit.b.is_none() {
         fit.motif
             .iter()
             .map(|mp| {
+                let part = mp.members.iter().copied().find(|&x| whole(x)).and_then(largest);
                 let mut row: Vec<(i64, &Stroke)> = mp
                     .members
                     .iter()
-                    .filter(|&&x| weight[x] >= 1.0 && motifs.instances[x].len() == 1)
-                    .map(|&x| (fit.cell[x].1 .0, &strokes[motifs.instances[x][0] as usize]))
+                    .filter(|&&x| weight[x] >= 1.0 && whole(x))
+                    .filter_map(|&x| {
+                        let s = motifs.instances[x].iter().find(|&&s| Some(motifs.part[s as usize]) == part)?;
+                        Some((fit.cell[x].1 .0, &strokes[*s as usize]))
+                    })
                     .collect();
                 row.sort_by_key(|r| r.0);
                 row

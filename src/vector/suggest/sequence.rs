@@ -35,8 +35,12 @@ use crate::vector::stroke::Stroke;
 use kurbo::{Point, Rect, Vec2};
 use std::f64::consts::TAU;
 
-/// Strokes looked back over for the two copies before the latest.
+/// Strokes looked back over for the two copies before the latest...
 const LOOK_BACK: usize = 16;
+/// ...and copies of its shape, as far back as this many strokes (a motif of three
+/// strokes drawn sixteen strokes back is five copies: too few to read an S-curve's
+/// bend from, and ghosts went on round its first bend, 16-40 off at a step of 41).
+const LOOK_BACK_COPIES: usize = 32;
 /// A copy is the same shape when the best similarity leaves an rms residual of at most
 /// this share of its size.
 pub(super) const SHAPE: f64 = 0.12;
@@ -321,6 +325,90 @@ fn model(d: &Drawing, run: &[usize], step: f64, fallback: [Vec2; 2], lead: Optio
     Some(Model { orbit, closes, bend_error })
 }
 
+/// How the latest copy follows the two before it, taken every `stride`-th of its shape
+/// back along `chain` (the strokes of its shape, the latest at `at`).
+struct Begun {
+    stride: usize,
+    /// The steps from the first copy to the second, and from the second to the latest.
+    one: Similarity,
+    two: Similarity,
+    /// The distance from the second copy to the latest.
+    step: f64,
+    /// The two steps alike, and the first carrying the second copy onto the latest (the
+    /// miss of its centre, where a copy is matched). Where they are not (a stem that
+    /// bends on, past copies accepted from its earlier turn), the whole run must bear
+    /// the sequence out instead (`RUN_PLACE`).
+    local: bool,
+    /// The two steps are unlike outright (`FOLLOW_TURN`): no run of copies one step
+    /// apart, but perhaps one of copies `stride` apart in a motif of several.
+    apart: bool,
+}
+
+/// A proposed stroke is on a drawn one of its shape when its centre lies within this
+/// share of the step of it (the matching tolerance).
+const DRAWN: f64 = 0.3;
+
+/// Copies of a motif holding up to this many strokes of one shape are followed.
+const MAX_STRIDE: usize = 4;
+
+fn begin(d: &Drawing, chain: &[usize], at: usize, stride: usize) -> Option<Begun> {
+    let last = chain[at];
+    let second = chain[at.checked_sub(stride)?];
+    let centre = |i: usize| d.strokes[i].reference_point();
+    let first = if stride == 1 {
+        (chain[0]..second).rev().find(|&i| d.same(i, second).is_some())?
+    } else {
+        // (The latest copy's strokes of this shape lie on one another, as a petal's two
+        // arcs do, not a step apart: four leaves along a stem are no motif of four.)
+        let apart = |i: usize| centre(i).distance(centre(last)) > 0.5 * d.size(i).max(d.size(last));
+        if chain[at + 1 - stride..at].iter().any(|&i| apart(i)) {
+            return None;
+        }
+        let first = chain[at.checked_sub(2 * stride)?];
+        d.same(first, second)?;
+        first
+    };
+    let step = centre(second).distance(centre(last));
+    // Of the steps that fit both pairs (a loop that looks the same turned half round
+    // fits either way), the pair that agree and carry the second copy nearest the
+    // latest: the places say which way the copies turn.
+    let (one, two) = {
+        let (ones, twos) = (d.steps(first, second), d.steps(second, last));
+        let miss = |o: &Similarity, t: &Similarity| {
+            (t.a - o.a).hypot() / o.a.hypot().max(1e-9)
+                + o.carry(&d.strokes[second]).reference_point().distance(centre(last)) / step.max(1e-9)
+        };
+        let pairs = ones.iter().flat_map(|o| twos.iter().map(move |t| (o.0, t.0)));
+        pairs.min_by(|x, y| miss(&x.0, &x.1).total_cmp(&miss(&y.0, &y.1)))?
+    };
+    let agree = (two.a - one.a).hypot();
+    let local = agree <= TURN * one.a.hypot()
+        && one.carry(&d.strokes[second]).reference_point().distance(centre(last)) <= PLACE * step;
+    Some(Begun { stride, one, two, step, local, apart: agree > FOLLOW_TURN * one.a.hypot() })
+}
+
+/// The strokes of the copy that ends with `run[h]` drawn since the copy before it
+/// (`run[h - 1]`) that repeat one of the copy before that, carried on by the step from
+/// that copy to this one (the one turning nearest `turn`) within `PLACE` of the step: a
+/// motif's other strokes (a petal's second arc, a leaf's midrib, its stalk), in drawing
+/// order.
+fn companions(d: &Drawing, run: &[usize], h: usize, step: f64, turn: f64) -> Vec<usize> {
+    let (Some(&before), Some(&prev)) = (h.checked_sub(2).map(|x| &run[x]), h.checked_sub(1).map(|x| &run[x])) else {
+        return Vec::new();
+    };
+    let last = run[h];
+    let Some((carry, _)) = d.near(prev, last, turn) else { return Vec::new() };
+    let centre = |i: usize| d.strokes[i].reference_point();
+    (prev + 1..last)
+        .filter(|&c| {
+            (before + 1..prev).any(|o| {
+                d.same(o, c).is_some()
+                    && carry.carry(&d.strokes[o]).reference_point().distance(centre(c)) <= PLACE * step
+            })
+        })
+        .collect()
+}
+
 /// How many times further off than it expected a model of the run has been: each of
 /// the last two hand-drawn copies predicted from the run before it (one and two steps
 /// ahead, read with the run's lead-in, which a stem's bend is read from and which counts
@@ -366,35 +454,55 @@ fn bend_change(bend: f64, (first_hand, last_hand): (i64, i64), lead: usize, t: i
 /// with and say nothing of its error); copies accepted after the latest hand-drawn one
 /// count as steps already taken.
 pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Option<Suggestions> {
-    let Ask { count, region, offset, seed, rows } = *ask;
     let n = strokes.len();
-    let lookback = n.saturating_sub(LOOK_BACK + 1);
+    let lookback = n.saturating_sub(LOOK_BACK_COPIES + 1);
     let d =
         Drawing { strokes, accepted, sampled: (0..n).map(|i| (i >= lookback).then(|| samples(&strokes[i]))).collect() };
     let last = (0..n).rev().find(|&i| d.hand(i))?;
     if n - 1 - last > LOOK_BACK {
         return None;
     }
+    let (found, parts) = follow(&d, ask, last)?;
+    // A motif's largest stroke shows its turn best (a stalk a few pixels long reads it
+    // loosely, and put ghosts over the top of a Bézier arch 15-25 off at a step of 41,
+    // where its leaves showed the turn changing): where the latest copy holds a
+    // hand-drawn stroke this much larger than the latest, the copies follow that one's,
+    // and where it says nothing goes on yet, nothing is proposed.
+    let largest = parts.into_iter().filter(|&i| d.hand(i)).max_by(|&x, &y| d.size(x).total_cmp(&d.size(y)));
+    match largest.filter(|&b| d.size(b) > LARGER * d.size(last)).and_then(|b| follow(&d, ask, b)) {
+        Some((better, _)) => Some(better),
+        None => Some(found),
+    }
+}
+
+/// A motif's stroke is followed in place of the latest when it is this many times the
+/// latest's size.
+const LARGER: f64 = 1.5;
+
+/// `propose` carrying on the copies of stroke `last` (hand-drawn, among the latest
+/// `LOOK_BACK`), with the other strokes of its latest copy carried along.
+fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize>)> {
+    let Ask { count, region, offset, seed, rows } = *ask;
+    let strokes = d.strokes;
+    let n = strokes.len();
+    let lookback = n.saturating_sub(LOOK_BACK_COPIES + 1);
     // The copies of the latest hand-drawn stroke's shape (hand-drawn or accepted), and
-    // the two before it: the most recent of its shape, then of theirs.
-    let chain: Vec<usize> = (lookback..n).filter(|&i| i == last || d.same(i, last).is_some()).collect();
+    // the two before it: the most recent of its shape, then of theirs; or, where those
+    // steps disagree outright, every `stride`-th copy of its shape (a motif holding that
+    // many strokes of one shape: a petal drawn as two mirrored arcs).
+    let mut chain: Vec<usize> =
+        (lookback..n).rev().filter(|&i| i == last || d.same(i, last).is_some()).take(LOOK_BACK + 1).collect();
+    chain.reverse();
     let at = chain.iter().position(|&i| i == last)?;
-    let second = *chain[..at].last()?;
-    let first = (chain[0]..second).rev().find(|&i| d.same(i, second).is_some())?;
+    let start = {
+        let one = begin(d, &chain, at, 1);
+        match one {
+            Some(b) if b.local || !b.apart => Some(b),
+            _ => (2..=MAX_STRIDE).filter_map(|k| begin(d, &chain, at, k)).find(|b| b.local).or(one),
+        }
+    }?;
+    let Begun { stride, one, two, step, local, .. } = start;
     let centre = |i: usize| strokes[i].reference_point();
-    let step = centre(second).distance(centre(last));
-    // Of the steps that fit both pairs (a loop that looks the same turned half round
-    // fits either way), the pair that agree and carry the second copy nearest the
-    // latest: the places say which way the copies turn.
-    let (one, two) = {
-        let (ones, twos) = (d.steps(first, second), d.steps(second, last));
-        let miss = |o: &Similarity, t: &Similarity| {
-            (t.a - o.a).hypot() / o.a.hypot().max(1e-9)
-                + o.carry(&strokes[second]).reference_point().distance(centre(last)) / step.max(1e-9)
-        };
-        let pairs = ones.iter().flat_map(|o| twos.iter().map(move |t| (o.0, t.0)));
-        pairs.min_by(|x, y| miss(&x.0, &x.1).total_cmp(&miss(&y.0, &y.1)))?
-    };
     // Copies a step apart, not one drawn over another (hatching lies a tenth of its
     // length apart, or closer).
     if step <= (0.02 * d.size(last)).max(3.0 * strokes[last].width) {
@@ -405,18 +513,14 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
     if !rows && (one.a + two.a - Vec2::new(2.0, 0.0)).hypot() < 2.0 * MIN_TURN {
         return None;
     }
-    // The two steps alike, and the first carrying the second copy onto the latest (the
-    // miss of its centre, where a copy is matched). Where they are not (a stem that
-    // bends on, past copies accepted from its earlier turn), the whole run must bear
-    // the sequence out instead (`RUN_PLACE`).
-    let local = (two.a - one.a).hypot() <= TURN * one.a.hypot()
-        && one.carry(&strokes[second]).reference_point().distance(centre(last)) <= PLACE * step;
     // The run: copies of this shape back from the latest, each a step before the next
     // (a second ring, begun after the first closed, is a run of its own).
     let mean = (one.a + two.a) * 0.5;
-    let mut run = vec![*chain.last()?];
+    // (Of a motif of several strokes of one shape, the copies of the latest's own.)
+    let latest = at + (chain.len() - 1 - at) / stride * stride;
+    let mut run = vec![chain[latest]];
     let mut cut = None;
-    for (k, &p) in chain.iter().enumerate().rev().skip(1) {
+    for (k, &p) in chain[..latest].iter().enumerate().rev().filter(|(k, _)| (latest - k) % stride == 0) {
         let cur = *run.last()?;
         let gap = centre(p).distance(centre(cur));
         let near = (0.5 * step..=2.0 * step).contains(&gap);
@@ -440,11 +544,11 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
                 lead = Some((chain[at], back));
                 break;
             }
-            let gap = at.checked_sub(1).map(|b| centre(chain[b]).distance(centre(chain[at])));
+            let gap = at.checked_sub(stride).map(|b| centre(chain[b]).distance(centre(chain[at])));
             if back >= 4 || !gap.is_some_and(|g| (0.5 * step..=2.0 * step).contains(&g)) {
                 break;
             }
-            at -= 1;
+            at -= stride;
             back += 1;
         }
     }
@@ -460,15 +564,15 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
     // step (dashes scattered anywhere seldom are), and the page says so, not "no
     // repetition yet" with seventeen leaves drawn.
     let unfollowed = || {
-        let latest = &chain[at.saturating_sub(3)..=at];
+        let latest: Vec<usize> = (0..4).rev().filter_map(|k| at.checked_sub(k * stride).map(|x| chain[x])).collect();
         let moves: Vec<Vec2> = latest.windows(2).map(|w| centre(w[1]) - centre(w[0])).collect();
         let spaced = moves.len() == 3
             && moves.iter().all(|m| (UNFOLLOWED_SPACING * step..=step / UNFOLLOWED_SPACING).contains(&m.hypot()))
             && moves.windows(2).all(|w| w[0].cross(w[1]).atan2(w[0].dot(w[1])).abs() < UNFOLLOWED_TURN);
         spaced.then(|| Suggestions { reason: Some(UNFOLLOWED.into()), ..Default::default() })
     };
-    let Some(Model { orbit, closes, bend_error }) = model(&d, &run, step, [one.a, two.a], lead) else {
-        return unfollowed();
+    let Some(Model { orbit, closes, bend_error }) = model(d, &run, step, [one.a, two.a], lead) else {
+        return unfollowed().map(|s| (s, Vec::new()));
     };
     // A step turning by more than a ring of two and a half copies would (about half a
     // turn) carries each copy back near the one before the last: nothing goes on by it.
@@ -482,27 +586,68 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
         if hand.len() + usize::from(lead.is_some()) < 4
             || hand.iter().any(|&t| orbit.at(t as i64).distance(d.z(run[t])) > RUN_PLACE * step)
         {
-            return unfollowed();
+            return unfollowed().map(|s| (s, Vec::new()));
         }
     }
-    let inflate = backtest(&d, &run, step, [one.a, two.a], lead);
+    let inflate = backtest(d, &run, step, [one.a, two.a], lead);
     let reach = super::certainty::reach(orbit.copies);
     let mut out = Suggestions::default();
     let end = run.len() as i64 - 1;
     let hands: Vec<usize> = (0..run.len()).filter(|&t| d.hand(run[t])).collect();
+    // The latest copy's other strokes, carried on with it; a ghost is on a drawn stroke
+    // within half the step or half the nearest two of the copy's strokes lie apart.
+    let h = run.iter().position(|&i| i == last)?;
+    let parts = companions(d, &run, h, step, orbit.a.atan2());
+    // (A copy's strokes may share a centre, a leaf's two halves and its midrib: a ghost
+    // is on a drawn stroke that it carries onto about unturned, unscaled and unmoved.)
+    let drawn = |g: &Stroke, here: f64| {
+        let p = g.reference_point();
+        let mut near = strokes.iter().filter(|s| s.reference_point().distance(p) < 0.5 * here).peekable();
+        near.peek().is_some() && {
+            let (mine, size) = (samples(g), g.bounds().size().to_vec2().hypot());
+            let c = centroid(&mine);
+            near.any(|s| {
+                relations(&mine, &samples(s), size).iter().any(|(t, _)| {
+                    (t.a - Vec2::new(1.0, 0.0)).hypot() < FOLLOW_TURN && t.apply(c).distance(c) < DRAWN * here
+                })
+            })
+        }
+    };
+    // The latest copy's other strokes carried to copy `t`, where none is drawn yet (the
+    // copy that closes a ring may lack one).
+    let parts_at = |t: i64, here: f64| -> Vec<(Stroke, usize)> {
+        let turn = orbit.turn(h as i64, t);
+        let to = Similarity { a: turn, b: orbit.at(t).to_vec2() - mul(turn, d.z(last).to_vec2()) };
+        parts
+            .iter()
+            .map(|&c| (to.carry(&strokes[c]), c))
+            .filter(|(g, _)| {
+                let p = g.reference_point();
+                region.is_none_or(|r| r.contains(p)) && !drawn(g, here)
+            })
+            .collect()
+    };
+    let push = |out: &mut Suggestions, ghost: Stroke, src: usize, k: i64| {
+        out.strokes.push(ghost);
+        out.confidence.push(super::FALLOFF.powi(k as i32));
+        out.sources.push((src + offset) as u32);
+        out.cells.push([k, 0]);
+    };
     let mut rng = seed.map(Rng::new);
     let mut why = "The sequence is complete here: its next copy would fall on a drawn one or off the canvas.";
     for k in 1..=count as i64 {
         let t = end + k;
-        if closes.is_some_and(|c| t >= c) {
-            why = "The ring is complete: draw the next one.";
-            break;
-        }
         let site = orbit.at(t);
         let here = site.distance(orbit.at(t - 1));
-        // Round onto the run's own first copies: a ring, whole, even where its count
-        // was never sure enough to snap (three petals of six, three accepted).
-        if orbit.centre().is_some() && run.iter().any(|&i| d.z(i).distance(site) < 0.5 * here) {
+        // Where a ring closes (at its count, or round onto the run's own first copies: a
+        // ring, whole, even where its count was never sure enough to snap, three petals
+        // of six, three accepted), what is left of the copy before its first.
+        if closes.is_some_and(|c| t >= c)
+            || (orbit.centre().is_some() && run.iter().any(|&i| d.z(i).distance(site) < 0.5 * here))
+        {
+            for (g, c) in parts_at(t, here) {
+                push(&mut out, g, c, k);
+            }
             why = "The ring is complete: draw the next one.";
             break;
         }
@@ -538,25 +683,30 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
         let src = run[from];
         let ghost = Similarity { a: turn, b: site.to_vec2() - mul(turn, d.z(src).to_vec2()) }.carry(&strokes[src]);
         let c = ghost.reference_point();
-        // Off the canvas, or onto a stroke already drawn (a ring closing): the end.
-        if region.is_some_and(|r| !r.contains(c))
-            || strokes.iter().any(|s| s.reference_point().distance(c) < 0.5 * here)
-        {
+        // Off the canvas: the end. Onto a stroke already drawn (a ring closing): what
+        // is left of that copy, and the end.
+        if region.is_some_and(|r| !r.contains(c)) {
+            break;
+        }
+        if drawn(&ghost, here) {
             if closes.is_some() {
                 why = "The ring is complete: draw the next one.";
+                for (g, c) in parts_at(t, here) {
+                    push(&mut out, g, c, k);
+                }
             }
             break;
         }
-        out.strokes.push(ghost);
-        out.confidence.push(super::FALLOFF.powi(k as i32));
-        out.sources.push((src + offset) as u32);
-        out.cells.push([k, 0]);
+        for (g, c) in parts_at(t, here) {
+            push(&mut out, g, c, k);
+        }
+        push(&mut out, ghost, src, k);
     }
     // (Found, with nothing to add: said, so the page does not read "no repetition".)
     if out.strokes.is_empty() {
         out.reason = Some(why.into());
     }
-    Some(out)
+    Some((out, parts))
 }
 
 #[cfg(test)]
