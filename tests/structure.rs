@@ -363,3 +363,63 @@ fn rings_of_loops_begun_anywhere_synthesize_as_rings() {
         }
     }
 }
+
+/// Rings of motifs of several strokes (issue 27: petals drawn as two mirrored arcs
+/// became a scatter of arcs), three copies drawn at 1% of the step and four at 3% (a
+/// petal with a vein, three drawn at 3%, seed 3: its first copy's turn onto the second
+/// is 6 degrees off the others', and no ring is read), seeds 1-3
+/// (`sequences::composite`): synthesized as rings, each rosette wholly inside the output
+/// holding every stroke of every copy (its strokes counted by where they begin: each
+/// petal's begins at its ring's centre), and none stacked.
+#[test]
+fn rings_of_motifs_of_several_strokes_become_rosettes() {
+    for wobble in [0.01, 0.03] {
+        for seed in 1..=3 {
+            for q in patternsynth::vector::sequences::composite(
+                wobble,
+                patternsynth::vector::sequences::HandTurn::STEADY,
+                seed,
+            )
+            .into_iter()
+            .filter(|q| q.name.starts_with("ring"))
+            {
+                let n: usize = q.name.split(' ').nth(2).unwrap().parse().unwrap();
+                let drawn = if wobble < 0.02 { 3 } else { 4 };
+                let r = synth(&q.strokes[..drawn * q.parts]);
+                let what = format!("{} at {wobble}, seed {seed}", q.name);
+                assert_eq!(r.structure, Structure::Ring, "{what}");
+                if std::env::var("DUMP").is_ok() {
+                    let lines: String = r
+                        .strokes
+                        .iter()
+                        .map(|s| {
+                            let p: Vec<String> = s.points.iter().map(|p| format!("{:.1},{:.1}", p[0], p[1])).collect();
+                            format!("<polyline points='{}' fill='none' stroke='black'/>", p.join(" "))
+                        })
+                        .collect();
+                    let svg = format!("<svg xmlns='http://www.w3.org/2000/svg' width='800' height='600'>{lines}</svg>");
+                    std::fs::write(format!("/tmp/{}-{seed}-{wobble}.svg", q.name.replace(' ', "-")), svg).unwrap();
+                }
+                // Strokes grouped by where they begin, near a ring's centre (a vein
+                // begins part way out: counted by its petal's ring, the nearest).
+                let len = q.step / (std::f64::consts::PI / n as f64).sin();
+                let starts: Vec<Point> = r.strokes.iter().map(|s| Point::new(s.points[0][0], s.points[0][1])).collect();
+                let mut centres: Vec<(Point, usize)> = Vec::new();
+                for (s, p) in r.strokes.iter().zip(&starts) {
+                    if s.points.len() > 13 || q.parts == 3 {
+                        match centres.iter_mut().find(|(c, _)| c.distance(*p) < 0.25 * len) {
+                            Some((_, k)) => *k += 1,
+                            None => centres.push((*p, 1)),
+                        }
+                    }
+                }
+                let inside = Rect::new(0.0, 0.0, W, H).inset(-1.2 * len);
+                let whole: Vec<usize> = centres.iter().filter(|(c, _)| inside.contains(*c)).map(|(_, k)| *k).collect();
+                assert!(!whole.is_empty(), "{what}: no rosette inside the output");
+                // (Of a petal and its vein, the petal begins at the centre: one a copy.)
+                let per_ring = if q.name.contains("veined") { n } else { n * q.parts };
+                assert!(whole.iter().all(|&k| k == per_ring), "{what}: rosettes of {whole:?} strokes, want {per_ring}");
+            }
+        }
+    }
+}

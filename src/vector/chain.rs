@@ -5,8 +5,9 @@
 //!
 //! Finding it: strokes of one shape up to rotation and scale are related pairwise; each
 //! relation between two of them is a candidate step, and the step kept is the one that
-//! carries the most of them onto another (the shortest such, so that a double step is
-//! not taken for the step). Following it from a copy no other copy steps onto gives the
+//! carries the most strokes onto another of their shape (the shortest such, so that a
+//! double step is not taken for the step). Strokes carried beside the chain's copies,
+//! drawn with them, are their motif's other strokes (`Chain::companions`). Following it from a copy no other copy steps onto gives the
 //! chain; it must hold at least three copies and two thirds of its shape's strokes (the
 //! petals of one flower among several are a flower's, not the drawing's, repetition).
 //! The step is then fitted by least squares over every consecutive pair, and where its
@@ -83,6 +84,11 @@ const MAX_RING: usize = 72;
 pub struct Chain {
     /// Strokes of the drawn copies, in order: `step` carries each onto the next.
     pub members: Vec<usize>,
+    /// Each drawn copy's other strokes, of a motif of several (a petal drawn as two
+    /// arcs, a leaf and its vein): each carried by the step onto the next copy's, drawn
+    /// as near its member in the drawing's order in every copy; empty for a motif of one
+    /// stroke, and for a copy short of some.
+    pub companions: Vec<Vec<usize>>,
     pub step: Similarity,
     /// Copies round the whole ring, when it closes (a rosette: petals round a centre
     /// within `ROSETTE` copy sizes).
@@ -153,8 +159,9 @@ pub fn find(strokes: &[Stroke]) -> Option<Chain> {
             // Copies on one centre (an asterisk's bars) step by a turn alone: reach is
             // then read from their size.
             let d = d.max(0.1 * size[i]);
-            let carried =
-                (0..n).filter(|&k| groups[k] == groups[i]).filter(|&k| onto(&t, k, PLACE * d).is_some()).count();
+            // (Copies of every shape: the step of a motif of several strokes carries
+            // each of them, a petal and its vein.)
+            let carried = (0..n).filter(|&k| onto(&t, k, PLACE * d).is_some()).count();
             let better = match &best {
                 None => carried >= 2,
                 Some(b) => carried > b.0 || (carried == b.0 && d < b.1),
@@ -166,32 +173,17 @@ pub fn find(strokes: &[Stroke]) -> Option<Chain> {
     }
     let (_, d, t) = best?;
     let next: Vec<Option<usize>> = (0..n).map(|k| onto(&t, k, FOLLOW * d)).collect();
-    // The longest run along the step, from a copy no other steps onto (a closed ring:
-    // from its first-drawn copy).
-    let mut chain: Vec<usize> = Vec::new();
-    for s in 0..n {
-        if next[s].is_none() && !next.contains(&Some(s)) {
-            continue;
-        }
-        let starts = !next.contains(&Some(s));
-        if !starts && !chain.is_empty() {
-            continue;
-        }
-        let mut run = vec![s];
-        let mut at = s;
-        while let Some(m) = next[at] {
-            if run.contains(&m) {
-                break;
-            }
-            run.push(m);
-            at = m;
-        }
-        if run.len() > chain.len() {
-            chain = run;
-        }
-    }
-    let shape_count = (0..n).filter(|&k| groups[k] == groups[chain[0]]).count();
-    if chain.len() < 3 || 3 * chain.len() < 2 * shape_count {
+    // Every run along the step, from a copy no other steps onto (a closed ring: from its
+    // first-drawn copy); the longest is the chain.
+    let runs = runs(&next);
+    let chain = runs.iter().max_by_key(|r| r.len())?.clone();
+    // Runs beside it, a motif's other strokes (see `Chain::companions`).
+    let companions = companions(&chain, &runs);
+    let covered = chain.len() + companions.iter().map(Vec::len).sum::<usize>();
+    let grouped =
+        |k: usize| groups[k] == groups[chain[0]] || companions.iter().flatten().any(|&c| groups[c] == groups[k]);
+    let shape_count = (0..n).filter(|&k| grouped(k)).count();
+    if chain.len() < 3 || 3 * covered < 2 * shape_count {
         return None;
     }
     // The step: its turn and scale from the copies' shapes (the mean over consecutive
@@ -244,7 +236,56 @@ pub fn find(strokes: &[Stroke]) -> Option<Chain> {
         let turn = TAU / k as f64 * step.turn().signum();
         step = shift_for(Vec2::new(turn.cos(), turn.sin()));
     }
-    Some(Chain { members: chain, step, closes })
+    Some(Chain { members: chain, companions, step, closes })
+}
+
+/// The maximal runs of `next` (each stroke's successor along the step): from each copy
+/// no other steps onto, and where none starts (a ring closed whole), from the first.
+fn runs(next: &[Option<usize>]) -> Vec<Vec<usize>> {
+    let follow = |s: usize| {
+        let mut run = vec![s];
+        while let Some(m) = next[*run.last().expect("a run holds its start")] {
+            if run.contains(&m) {
+                break;
+            }
+            run.push(m);
+        }
+        run
+    };
+    let mut pointed = vec![false; next.len()];
+    for &m in next.iter().flatten() {
+        pointed[m] = true;
+    }
+    let mut out: Vec<Vec<usize>> = (0..next.len()).filter(|&s| next[s].is_some() && !pointed[s]).map(follow).collect();
+    for s in 0..next.len() {
+        if next[s].is_some() && !out.iter().flatten().any(|&k| k == s) {
+            out.push(follow(s));
+        }
+    }
+    out
+}
+
+/// For each copy of `chain`, the strokes of the other `runs` drawn beside it: a run of
+/// two or more whose strokes each lie the same number of strokes from a copy of the
+/// chain in the drawing's order (fewer than separate two copies), copy after copy.
+fn companions(chain: &[usize], runs: &[Vec<usize>]) -> Vec<Vec<usize>> {
+    let mut out = vec![Vec::new(); chain.len()];
+    let gap = chain.windows(2).map(|w| w[0].abs_diff(w[1])).min().unwrap_or(0);
+    for r in runs.iter().filter(|r| r.len() >= 2 && r.len() <= chain.len() && r.iter().all(|k| !chain.contains(k))) {
+        let beside = (0..=chain.len() - r.len()).find(|&off| {
+            let d = r[0] as i64 - chain[off] as i64;
+            d.unsigned_abs() < gap as u64 && r.iter().enumerate().all(|(i, &k)| k as i64 - chain[i + off] as i64 == d)
+        });
+        if let Some(off) = beside {
+            for (i, &k) in r.iter().enumerate() {
+                out[i + off].push(k);
+            }
+        }
+    }
+    for c in &mut out {
+        c.sort_unstable();
+    }
+    out
 }
 
 /// The copies round a whole ring, when copies `size` large on the orbit of `step`,
@@ -292,48 +333,64 @@ impl Chain {
     }
 
     /// The copy `t` steps from the first drawn one (the drawn copies are 0 to
-    /// `members - 1`), carried from drawn copy `from`.
-    fn copy(&self, strokes: &[Stroke], t: i64, from: usize) -> Option<Stroke> {
-        Some(self.step.power(t - from as i64)?.carry(&strokes[self.members[from]]))
+    /// `members - 1`), carried from drawn copy `from`: its member, then its other
+    /// strokes, each with the stroke it was carried from.
+    fn copy(&self, strokes: &[Stroke], t: i64, from: usize) -> Option<Vec<(Stroke, usize)>> {
+        let step = self.step.power(t - from as i64)?;
+        let parts = std::iter::once(self.members[from]).chain(self.companions.get(from).into_iter().flatten().copied());
+        Some(parts.map(|k| (step.carry(&strokes[k]), k)).collect())
     }
 
     /// The drawn copy to carry to position `t`: a random one with variation (`rng`),
-    /// else the nearest end.
+    /// else the nearest end; of a motif of several strokes, one that holds them all.
     fn source(&self, t: i64, rng: &mut Option<Rng>) -> usize {
-        let l = self.members.len();
+        let most = self.companions.iter().map(Vec::len).max().unwrap_or(0);
+        let whole: Vec<usize> =
+            (0..self.members.len()).filter(|&i| self.companions.get(i).map_or(0, Vec::len) == most).collect();
         match rng {
-            Some(r) => r.below(l),
-            None => t.clamp(0, l as i64 - 1) as usize,
+            Some(r) => whole[r.below(whole.len())],
+            None => *whole.iter().min_by_key(|&&i| (i as i64 - t).abs()).expect("a whole copy"),
         }
     }
 
-    /// The copies missing round a closed ring (none for an open chain), each with the
-    /// drawn copy it was carried from.
+    /// How many of the drawing's strokes the chain holds.
+    pub fn strokes(&self) -> usize {
+        self.members.len() + self.companions.iter().map(Vec::len).sum::<usize>()
+    }
+
+    /// The copies missing round a closed ring (none for an open chain), each stroke with
+    /// the drawn one it was carried from.
     ///
-    /// A copy that lies on a stroke of the drawing (or on one completed before it) is
-    /// left out: bars through one centre (an asterisk's) read as a ring of twice as many
-    /// steps, each bar its own copy half a turn on.
+    /// A stroke that lies on one of the drawing (or on one completed before it) is left
+    /// out: bars through one centre (an asterisk's) read as a ring of twice as many
+    /// steps, each bar its own copy half a turn on; a petal whose second arc is not yet
+    /// drawn gets that arc.
     pub fn complete(&self, strokes: &[Stroke], seed: Option<u64>) -> Vec<(Stroke, usize)> {
         let Some(k) = self.closes else { return Vec::new() };
         let mut rng = seed.map(Rng::new);
         let mut placed: Vec<Vec<Point>> = strokes.iter().map(samples).collect();
         let mut out = Vec::new();
-        for t in self.members.len()..k {
+        // (From the first copy short of a stroke: a motif's copy being drawn.)
+        let most = self.companions.iter().map(Vec::len).max().unwrap_or(0);
+        let first = (0..self.members.len()).find(|&i| self.companions.get(i).map_or(0, Vec::len) < most);
+        for t in first.unwrap_or(self.members.len())..k {
             let from = self.source(t as i64, &mut rng);
             let Some(copy) = self.copy(strokes, t as i64, from) else { continue };
-            let s = samples(&copy);
-            let size = copy.bounds().size().to_vec2().hypot();
-            let on = |p: &Vec<Point>| {
-                let gap = |q: &mut dyn Iterator<Item = &Point>| {
-                    (s.iter().zip(q).map(|(a, b)| a.distance_squared(*b)).sum::<f64>() / s.len() as f64).sqrt()
+            for (stroke, source) in copy {
+                let s = samples(&stroke);
+                let size = stroke.bounds().size().to_vec2().hypot();
+                let on = |p: &Vec<Point>| {
+                    let gap = |q: &mut dyn Iterator<Item = &Point>| {
+                        (s.iter().zip(q).map(|(a, b)| a.distance_squared(*b)).sum::<f64>() / s.len() as f64).sqrt()
+                    };
+                    gap(&mut p.iter()).min(gap(&mut p.iter().rev())) < 0.1 * size
                 };
-                gap(&mut p.iter()).min(gap(&mut p.iter().rev())) < 0.1 * size
-            };
-            if placed.iter().any(on) {
-                continue;
+                if placed.iter().any(on) {
+                    continue;
+                }
+                placed.push(s);
+                out.push((stroke, source));
             }
-            placed.push(s);
-            out.push((copy, self.members[from]));
         }
         out
     }
@@ -370,16 +427,16 @@ impl Chain {
                 }
                 let from = self.source(t, &mut rng);
                 let Some(copy) = self.copy(strokes, t, from) else { continue };
-                let c = copy.reference_point();
-                let s = size(&copy);
+                let c = copy[0].0.reference_point();
+                let s = size(&copy[0].0);
                 // The step's length here: the distance to the copy before it.
-                let before = self.copy(strokes, t - dir, from).map_or(0.0, |b| b.reference_point().distance(c));
+                let before = self.copy(strokes, t - dir, from).map_or(0.0, |b| b[0].0.reference_point().distance(c));
                 if s < small || s > large || centres.iter().any(|p| p.distance(c) < 0.5 * before) {
                     continue;
                 }
                 if area.contains(c) {
                     centres.push(c);
-                    out.push((copy, self.members[from]));
+                    out.extend(copy.into_iter().filter(|(p, _)| area.contains(p.reference_point())));
                 }
                 next[d] = Some(t + dir);
             }

@@ -256,7 +256,7 @@ pub fn synthesize_strokes(
     let along = (joined.is_none() && periods.is_none() && motifs.copies.is_none())
         .then(|| chain::find(strokes))
         .flatten()
-        .filter(|c| (c.closes.is_some() && 3 * c.members.len() >= 2 * strokes.len()) || !translates(&elements));
+        .filter(|c| (c.closes.is_some() && 3 * c.strokes() >= 2 * strokes.len()) || !translates(&elements));
     if let Some(chain) = along {
         return along_chain(strokes, classification, chain, opts, max_elements, progress);
     }
