@@ -257,8 +257,8 @@ fn runs(next: &[Option<usize>]) -> Vec<Vec<usize>> {
         pointed[m] = true;
     }
     let mut out: Vec<Vec<usize>> = (0..next.len()).filter(|&s| next[s].is_some() && !pointed[s]).map(follow).collect();
-    for s in 0..next.len() {
-        if next[s].is_some() && !out.iter().flatten().any(|&k| k == s) {
+    for (s, n) in next.iter().enumerate() {
+        if n.is_some() && !out.iter().flatten().any(|&k| k == s) {
             out.push(follow(s));
         }
     }
