@@ -19,17 +19,21 @@
 //! were missed by more when predicted from those before them: a stem that bends the
 //! other way, an S), and never onto a drawn stroke (a ring stops where it closes).
 //!
+//! A motif of several strokes (a petal drawn as two arcs, a leaf and its stalk) is
+//! followed by one of its strokes, its largest, and its latest copy's other strokes are
+//! carried on with it (`copies`).
+//!
 //! Departs from the lattice model and from the seed paper: shapes are compared up to
-//! rotation and scale here (a petal turned is the same petal), and only motifs of one
-//! stroke are carried on.
+//! rotation and scale here (a petal turned is the same petal).
 
+mod copies;
+mod model;
+
+use self::copies::{begin, companions, Begun, MAX_STRIDE};
+use self::model::{backtest, bend_change, model, Model};
 use super::drift::drift;
-use super::orbit::{bend_from_places, cost, Orbit, Placed, Shapes};
-use super::turning::{turning, Relation};
-use super::{Suggestions, HAND_TO_PLACEMENT, TOLERANCE};
+use super::{Suggestions, TOLERANCE};
 use crate::rng::Rng;
-use crate::vector::chain::ring_steps;
-use crate::vector::classify::median;
 use crate::vector::similarity::{self, centroid, mul, samples, Similarity};
 use crate::vector::stroke::Stroke;
 use kurbo::{Point, Rect, Vec2};
@@ -44,54 +48,22 @@ const LOOK_BACK_COPIES: usize = 32;
 /// A copy is the same shape when the best similarity leaves an rms residual of at most
 /// this share of its size.
 pub(super) const SHAPE: f64 = 0.12;
-/// The two steps agree when their `a` differ by at most this share of `|a|` (about 5°
-/// of turn or 5% of scale)...
-const TURN: f64 = 0.09;
-/// ...and the first step puts the third copy within this share of the step.
-const PLACE: f64 = 0.2;
 /// A step turns or scales by at least this much (`|a - 1|`, about 1°)...
 const MIN_TURN: f64 = 0.02;
 /// ...and scales by at most this factor either way (a spiral, not a zoom).
 const MAX_SCALE: f64 = 1.3;
-/// The hand's prior scatter of a copy's place, as a share of the step.
-const MIN_ERROR: f64 = 0.02;
 /// Copies further back join the run when their step's `a` is within this share of the
 /// latest steps'...
 const FOLLOW_TURN: f64 = 0.2;
 /// ...and the run holds at most this many hand-drawn copies (a curve that bends the
 /// other way, an S, is followed by its latest copies).
 const MAX_RUN: usize = 8;
-/// Weight of an accepted copy in the orbit's fit (a hand-drawn one's is 1).
-const ACCEPTED_WEIGHT: f64 = 0.05;
-/// The prior error of one pair's turn (`|a|` units, about 1.1 degrees), counted as this
-/// many pairs.
-const TURN_ERROR: f64 = 0.02;
-const PRIOR_PAIRS: f64 = 2.0;
-/// A ring's turn is snapped unless the copies' mean square miss then grows past this
-/// many times the free fit's.
-const SNAP_WORSE: f64 = 2.5;
-/// A ring's count is taken when it is this many times likelier than the next best.
-const SNAP_SURE: f64 = 20.0;
-/// A bend that has held its sign over `L` steps (the run and its lead-in) is a stretch
-/// of a stem whose turn may reverse: a sine turn that has kept its sign half a period
-/// changes its bend by up to `bend π / L` a step. A line through the turns misses that
-/// change quadratically ahead of the hand-drawn copies; this share of it is counted in
-/// the next copies' expected miss (leaves over a wavy stem's crest: the bend read on its
-/// rising side carried the ghosts past the crest, 22 off at a step of 40).
-const BEND_CHANGE: f64 = 0.25;
 /// A bend of more than this (radians a step, per step: 0.7 degree) is carried one
 /// copy past the last hand-drawn one only (leaves over the top of a Bézier S: the turn
 /// read growing from 7 to 15 degrees a step fell to 14 and 10, and the ghost two copies
 /// on missed by 17-27 at a step of 44; a bend of 0.013, read where the places say it,
 /// put one 15.6 off at a step of 41; an arc's noise reads up to 0.003).
 const CLEAR_BEND: f64 = 0.012;
-/// A bend is taken where it passes this many of its standard errors (else a run turns
-/// alike at every step)...
-const BEND_SURE: f64 = 3.0;
-/// ...and otherwise is held to none, a run of copies mostly turning alike at every step
-/// (a ring, an arc, a spiral: Xing's local similarity), with a prior standard
-/// deviation of this much (radians a step, per step) for what it may hide.
-const BEND_PRIOR: f64 = 0.02;
 /// Why nothing (more) is proposed while the sequence goes on.
 const UNCERTAIN: &str = "The copies drawn so far leave the next ones too uncertain: draw one more.";
 /// Why nothing is proposed where copies repeat but do not yet show the next step.
@@ -108,11 +80,6 @@ const UNFOLLOWED_TURN: f64 = 1.6;
 /// lead-in counted (a stem that bends on, past ghosts accepted from its earlier turn),
 /// each within this share of the step of its site on the run's orbit.
 const RUN_PLACE: f64 = 0.15;
-/// A run's own copies, predicted from those before them, may miss by up to this many
-/// expected misses before the model is taken to be off (a Rayleigh miss passes it
-/// 98% of the time).
-const BACKTEST: f64 = 2.0;
-
 /// The similarities carrying `from` onto `to`, with their residual as a share of
 /// `size`, when they are the same shape (`similarity::relations` with this module's
 /// bounds), the smallest turn first.
@@ -183,269 +150,9 @@ impl Drawing<'_> {
     }
 }
 
-/// What a run of copies says: the orbit they lie on and, for a ring, its count; and how
-/// far off the orbit's bend may be (radians a step, per step).
-struct Model {
-    orbit: Orbit,
-    closes: Option<i64>,
-    bend_error: f64,
-}
-
-/// The orbit through `run` (copies in order along the step, `step` apart), with its
-/// step read from the hand-drawn copies' shapes and places; `fallback` is the step to
-/// read the shapes' turn from when no two consecutive copies are hand-drawn.
-fn model(d: &Drawing, run: &[usize], step: f64, fallback: [Vec2; 2], lead: Option<(usize, usize)>) -> Option<Model> {
-    let copies: Vec<Placed> = run
-        .iter()
-        .enumerate()
-        .map(|(t, &i)| Placed {
-            t: t as i64,
-            z: d.z(i),
-            weight: if d.hand(i) { 1.0 } else { ACCEPTED_WEIGHT },
-            hand: d.hand(i),
-        })
-        .collect();
-    // What the shapes say of the step: each hand-drawn copy against the next hand-drawn
-    // one along the run, however many steps on (an accepted copy is turned by the step
-    // it was proposed with, and says nothing of it).
-    let hands: Vec<usize> = (0..run.len()).filter(|&k| d.hand(run[k])).collect();
-    let expected = ((fallback[0] + fallback[1]) * 0.5).atan2();
-    let mut relations: Vec<Relation> = hands
-        .windows(2)
-        .filter_map(|w| {
-            let span = w[1] - w[0];
-            let (t, r) = d.near(run[w[0]], run[w[1]], span as f64 * expected)?;
-            // (Unwrapped to the whole turns `span` steps of about the expected turn make.)
-            let turn = t.turn() + TAU * ((span as f64 * expected - t.turn()) / TAU).round();
-            Some(Relation { from: w[0] as i64, span, turn, scale: t.scale(), residual: r * d.size(run[w[0]]) })
-        })
-        .collect();
-    // (The lead-in's turn onto the run's first hand-drawn copy, for the bend only.)
-    let lead_in = lead.zip(hands.first()).and_then(|((p, back), &h)| {
-        let span = h + back;
-        let (t, _) = d.near(p, run[h], span as f64 * expected)?;
-        let turn = t.turn() + TAU * ((span as f64 * expected - t.turn()) / TAU).round();
-        Some(Relation { from: -(back as i64), span, turn, scale: t.scale(), residual: 0.0 })
-    });
-    if relations.is_empty() {
-        relations = fallback
-            .iter()
-            .enumerate()
-            .map(|(k, a)| Relation { from: k as i64, span: 1, turn: a.atan2(), scale: a.hypot(), residual: 0.0 })
-            .collect();
-    }
-    // The hand's scatter before the copies' places show it: as loose as its strokes'
-    // shapes wobble (the residual between hand-drawn copies, each point's share half its
-    // square; `HAND_TO_PLACEMENT` as for lattices), and no less than `MIN_ERROR` of the
-    // step.
-    let mut wobble: Vec<f64> = relations.iter().map(|r| r.residual * r.residual / 2.0).collect();
-    let wobble = median(&mut wobble);
-    let prior = (MIN_ERROR * step).powi(2).max(HAND_TO_PLACEMENT * wobble);
-    // A hand that misplaces a copy by `e` turns it by about `e` over its radius: the
-    // prior error of a relation's turn, no less than `TURN_ERROR`.
-    let size = run.iter().map(|&i| d.size(i)).sum::<f64>() / run.len() as f64;
-    let turn_prior = TURN_ERROR.powi(2).max(prior / (0.5 * size).powi(2));
-    let turning = turning(&relations, lead_in);
-    let steps = relations.iter().map(|r| r.span).sum::<usize>() as f64;
-    let scale = (relations.iter().map(|r| r.scale.ln()).sum::<f64>() / steps).exp();
-    let scale_spread = relations.iter().map(|r| (r.scale.ln() - r.span as f64 * scale.ln()).powi(2)).sum::<f64>();
-    let var = (turning.spread + scale_spread + PRIOR_PAIRS * turn_prior) / (turning.dof + PRIOR_PAIRS);
-    let shapes_at = |bend: f64| {
-        let first = turning.first_given(bend);
-        Shapes {
-            mean: Vec2::new(first.cos(), first.sin()) * scale,
-            var,
-            // (The turns of consecutive relations share a copy, whose own turn adds to
-            // one and takes from the next: their sum is the last copy's against the
-            // first's, so the mean errs by one relation's error over the steps, not
-            // their root; less well known where a bend is read too.)
-            pairs: steps * steps / if bend != 0.0 { 4.0 } else { 1.0 },
-            bend,
-        }
-    };
-    // The bend, from the shapes' turns and the places together (see `bend_from_places`):
-    // taken where it is clear of its error (`BEND_SURE`), else none, its error then the
-    // bend read and its error, both shrunk by the prior (`BEND_PRIOR`).
-    let (bend, bend_error) = match turning.slope {
-        Some((slope, se)) => match bend_from_places(&copies, &shapes_at, prior, slope) {
-            Some((placed, information)) => {
-                let precision = 1.0 / (se * se).max(1e-12) + information;
-                let both = (slope / (se * se).max(1e-12) + placed * information) / precision;
-                let error = precision.sqrt().recip();
-                if both.abs() > BEND_SURE * error {
-                    (both, error)
-                } else {
-                    // (Held to no bend, as a run of copies mostly is: what bend it may
-                    // still hide, given that prior.)
-                    let shrink = BEND_PRIOR.powi(2) / (BEND_PRIOR.powi(2) + error * error);
-                    (0.0, both.abs() * shrink + (shrink * error * error).sqrt())
-                }
-            }
-            None => (turning.bend, turning.bend_error),
-        },
-        None => (turning.bend, turning.bend_error),
-    };
-    let shapes = shapes_at(bend);
-    let mut orbit = Orbit::fit(&copies, shapes, prior)?;
-    // A ring closes when its turn is about a whole fraction of a turn (see
-    // `chain::ring_steps`): snapped to that whole number of copies or one either side,
-    // whichever the copies' places and shapes bear out best (`orbit::cost`: the free
-    // turn from three petals of eight at 5% may read nine), unless the places then fit
-    // much worse than with the free turn.
-    let mut closes = None;
-    if let Some(c) = orbit.centre() {
-        let radius = copies.iter().map(|k| k.z.distance(c)).sum::<f64>() / copies.len() as f64;
-        let turned = Similarity { a: orbit.a, b: Vec2::ZERO };
-        if let Some(k) = ring_steps(&turned, radius, size, run.len()) {
-            let sign = turned.turn().signum();
-            let mut fits: Vec<(usize, Orbit, f64)> = (k.saturating_sub(1).max(3)..=k + 1)
-                .filter_map(|k| {
-                    let th = TAU / k as f64 * sign;
-                    let a = Vec2::new(th.cos(), th.sin());
-                    Some((k, orbit.snapped(&copies, a, prior)?, cost(&copies, &shapes, a, orbit.scatter)))
-                })
-                .collect();
-            fits.sort_by(|x, y| x.2.total_cmp(&y.2));
-            // (The costs are minus log-likelihoods: the best count is taken once it is
-            // `SNAP_SURE` times likelier than the next; till then the turn stays free,
-            // with its error.)
-            let sure = fits.get(1).is_none_or(|second| second.2 - fits[0].2 >= SNAP_SURE.ln());
-            if let Some((k, snapped, _)) =
-                fits.into_iter().next().filter(|b| sure && b.1.scatter <= SNAP_WORSE * orbit.scatter)
-            {
-                orbit = snapped;
-                closes = Some(k as i64);
-            }
-        }
-    }
-    // (A ring closes whole: its turn holds by construction; unless a lead-in shows the
-    // turn changing into it, as where four leaves over a wavy stem's crest turn as
-    // petals of nine would: the stem turns back after them.)
-    let bend_error = if closes.is_some() && lead.is_none() { 0.0 } else { bend_error };
-    Some(Model { orbit, closes, bend_error })
-}
-
-/// How the latest copy follows the two before it, taken every `stride`-th of its shape
-/// back along `chain` (the strokes of its shape, the latest at `at`).
-struct Begun {
-    stride: usize,
-    /// The steps from the first copy to the second, and from the second to the latest.
-    one: Similarity,
-    two: Similarity,
-    /// The distance from the second copy to the latest.
-    step: f64,
-    /// The two steps alike, and the first carrying the second copy onto the latest (the
-    /// miss of its centre, where a copy is matched). Where they are not (a stem that
-    /// bends on, past copies accepted from its earlier turn), the whole run must bear
-    /// the sequence out instead (`RUN_PLACE`).
-    local: bool,
-    /// The two steps are unlike outright (`FOLLOW_TURN`): no run of copies one step
-    /// apart, but perhaps one of copies `stride` apart in a motif of several.
-    apart: bool,
-}
-
 /// A proposed stroke is on a drawn one of its shape when its centre lies within this
 /// share of the step of it (the matching tolerance).
 const DRAWN: f64 = 0.3;
-
-/// Copies of a motif holding up to this many strokes of one shape are followed.
-const MAX_STRIDE: usize = 4;
-
-fn begin(d: &Drawing, chain: &[usize], at: usize, stride: usize) -> Option<Begun> {
-    let last = chain[at];
-    let second = chain[at.checked_sub(stride)?];
-    let centre = |i: usize| d.strokes[i].reference_point();
-    let first = if stride == 1 {
-        (chain[0]..second).rev().find(|&i| d.same(i, second).is_some())?
-    } else {
-        // (The latest copy's strokes of this shape lie on one another, as a petal's two
-        // arcs do, not a step apart: four leaves along a stem are no motif of four.)
-        let apart = |i: usize| centre(i).distance(centre(last)) > 0.5 * d.size(i).max(d.size(last));
-        if chain[at + 1 - stride..at].iter().any(|&i| apart(i)) {
-            return None;
-        }
-        let first = chain[at.checked_sub(2 * stride)?];
-        d.same(first, second)?;
-        first
-    };
-    let step = centre(second).distance(centre(last));
-    // Of the steps that fit both pairs (a loop that looks the same turned half round
-    // fits either way), the pair that agree and carry the second copy nearest the
-    // latest: the places say which way the copies turn.
-    let (one, two) = {
-        let (ones, twos) = (d.steps(first, second), d.steps(second, last));
-        let miss = |o: &Similarity, t: &Similarity| {
-            (t.a - o.a).hypot() / o.a.hypot().max(1e-9)
-                + o.carry(&d.strokes[second]).reference_point().distance(centre(last)) / step.max(1e-9)
-        };
-        let pairs = ones.iter().flat_map(|o| twos.iter().map(move |t| (o.0, t.0)));
-        pairs.min_by(|x, y| miss(&x.0, &x.1).total_cmp(&miss(&y.0, &y.1)))?
-    };
-    let agree = (two.a - one.a).hypot();
-    let local = agree <= TURN * one.a.hypot()
-        && one.carry(&d.strokes[second]).reference_point().distance(centre(last)) <= PLACE * step;
-    Some(Begun { stride, one, two, step, local, apart: agree > FOLLOW_TURN * one.a.hypot() })
-}
-
-/// The strokes of the copy that ends with `run[h]` drawn since the copy before it
-/// (`run[h - 1]`) that repeat one of the copy before that, carried on by the step from
-/// that copy to this one (the one turning nearest `turn`) within `PLACE` of the step: a
-/// motif's other strokes (a petal's second arc, a leaf's midrib, its stalk), in drawing
-/// order.
-fn companions(d: &Drawing, run: &[usize], h: usize, step: f64, turn: f64) -> Vec<usize> {
-    let (Some(&before), Some(&prev)) = (h.checked_sub(2).map(|x| &run[x]), h.checked_sub(1).map(|x| &run[x])) else {
-        return Vec::new();
-    };
-    let last = run[h];
-    let Some((carry, _)) = d.near(prev, last, turn) else { return Vec::new() };
-    let centre = |i: usize| d.strokes[i].reference_point();
-    (prev + 1..last)
-        .filter(|&c| {
-            (before + 1..prev).any(|o| {
-                d.same(o, c).is_some()
-                    && carry.carry(&d.strokes[o]).reference_point().distance(centre(c)) <= PLACE * step
-            })
-        })
-        .collect()
-}
-
-/// How many times further off than it expected a model of the run has been: each of
-/// the last two hand-drawn copies predicted from the run before it (one and two steps
-/// ahead, read with the run's lead-in, which a stem's bend is read from and which counts
-/// as one of the three hand-drawn copies a model needs: a bend read from the lead-in
-/// and two copies has no degree of freedom left to show it wrong), its miss over
-/// the miss the model expected. 1 unless some miss passes
-/// `BACKTEST` (a stem that bends the other way is missed by several times that).
-fn backtest(d: &Drawing, run: &[usize], step: f64, fallback: [Vec2; 2], lead: Option<(usize, usize)>) -> f64 {
-    let hands: Vec<usize> = (0..run.len()).filter(|&k| d.hand(run[k])).collect();
-    let mut worst: f64 = 1.0;
-    for (target, ahead) in [(1, 1), (1, 2), (2, 1)] {
-        let Some(&k) = hands.len().checked_sub(target).and_then(|x| hands.get(x)) else { continue };
-        let Some(before) = k.checked_sub(ahead - 1) else { continue };
-        let sub = &run[..before];
-        if sub.iter().filter(|&&i| d.hand(i)).count() + usize::from(lead.is_some()) < 3 {
-            continue;
-        }
-        let Some(m) = model(d, sub, step, fallback, lead) else { continue };
-        let ratio = m.orbit.at(k as i64).distance(d.z(run[k])) / m.orbit.miss(k as i64).max(1e-9);
-        if ratio > BACKTEST {
-            worst = worst.max(ratio / BACKTEST);
-        }
-    }
-    worst
-}
-
-/// How far off the turns' line puts copy `t` (in steps), where the bend `bend` may
-/// change (`BEND_CHANGE`): a turn off by `c (h + i)^2 / 2` at step `i` past the last
-/// hand-drawn copy (`h` half the hand-drawn copies' span, less the mean square the line
-/// absorbs over them), summed over the steps. Counted from the hand-drawn copies: an
-/// accepted one repeats the line and says nothing of its change.
-fn bend_change(bend: f64, (first_hand, last_hand): (i64, i64), lead: usize, t: i64) -> f64 {
-    let span = (last_hand - first_hand) as f64;
-    let c = BEND_CHANGE * bend.abs() * std::f64::consts::PI / (span + lead as f64).max(1.0);
-    let h = 0.5 * span;
-    0.5 * c * (1..=t - last_hand).map(|i| (h + i as f64).powi(2) - h * h / 3.0).sum::<f64>()
-}
 
 /// Proposals continuing the sequence that ends with the latest of `strokes` (none, with
 /// the reason, when it is complete or too uncertain to go on), or `None` when the

@@ -1,0 +1,94 @@
+//! Which copies of the latest stroke's shape a sequence follows (`begin`): the two
+//! before it, or where motifs hold several strokes of that shape (a petal drawn as two
+//! mirrored arcs), every `stride`-th; and the latest copy's other strokes, carried on
+//! with it (`companions`).
+
+use super::{Drawing, FOLLOW_TURN};
+use crate::vector::similarity::Similarity;
+
+/// The two steps agree when their `a` differ by at most this share of `|a|` (about 5°
+/// of turn or 5% of scale)...
+const TURN: f64 = 0.09;
+/// ...and the first step puts the third copy within this share of the step.
+const PLACE: f64 = 0.2;
+/// How the latest copy follows the two before it, taken every `stride`-th of its shape
+/// back along `chain` (the strokes of its shape, the latest at `at`).
+pub(super) struct Begun {
+    pub(super) stride: usize,
+    /// The steps from the first copy to the second, and from the second to the latest.
+    pub(super) one: Similarity,
+    pub(super) two: Similarity,
+    /// The distance from the second copy to the latest.
+    pub(super) step: f64,
+    /// The two steps alike, and the first carrying the second copy onto the latest (the
+    /// miss of its centre, where a copy is matched). Where they are not (a stem that
+    /// bends on, past copies accepted from its earlier turn), the whole run must bear
+    /// the sequence out instead (`RUN_PLACE`).
+    pub(super) local: bool,
+    /// The two steps are unlike outright (`FOLLOW_TURN`): no run of copies one step
+    /// apart, but perhaps one of copies `stride` apart in a motif of several.
+    pub(super) apart: bool,
+}
+
+/// Copies of a motif holding up to this many strokes of one shape are followed.
+pub(super) const MAX_STRIDE: usize = 4;
+
+/// The latest copy and the two before it, every `stride`-th copy of its shape back
+/// along `chain`, when they are one shape.
+pub(super) fn begin(d: &Drawing, chain: &[usize], at: usize, stride: usize) -> Option<Begun> {
+    let last = chain[at];
+    let second = chain[at.checked_sub(stride)?];
+    let centre = |i: usize| d.strokes[i].reference_point();
+    let first = if stride == 1 {
+        (chain[0]..second).rev().find(|&i| d.same(i, second).is_some())?
+    } else {
+        // (The latest copy's strokes of this shape lie on one another, as a petal's two
+        // arcs do, not a step apart: four leaves along a stem are no motif of four.)
+        let apart = |i: usize| centre(i).distance(centre(last)) > 0.5 * d.size(i).max(d.size(last));
+        if chain[at + 1 - stride..at].iter().any(|&i| apart(i)) {
+            return None;
+        }
+        let first = chain[at.checked_sub(2 * stride)?];
+        d.same(first, second)?;
+        first
+    };
+    let step = centre(second).distance(centre(last));
+    // Of the steps that fit both pairs (a loop that looks the same turned half round
+    // fits either way), the pair that agree and carry the second copy nearest the
+    // latest: the places say which way the copies turn.
+    let (one, two) = {
+        let (ones, twos) = (d.steps(first, second), d.steps(second, last));
+        let miss = |o: &Similarity, t: &Similarity| {
+            (t.a - o.a).hypot() / o.a.hypot().max(1e-9)
+                + o.carry(&d.strokes[second]).reference_point().distance(centre(last)) / step.max(1e-9)
+        };
+        let pairs = ones.iter().flat_map(|o| twos.iter().map(move |t| (o.0, t.0)));
+        pairs.min_by(|x, y| miss(&x.0, &x.1).total_cmp(&miss(&y.0, &y.1)))?
+    };
+    let agree = (two.a - one.a).hypot();
+    let local = agree <= TURN * one.a.hypot()
+        && one.carry(&d.strokes[second]).reference_point().distance(centre(last)) <= PLACE * step;
+    Some(Begun { stride, one, two, step, local, apart: agree > FOLLOW_TURN * one.a.hypot() })
+}
+
+/// The strokes of the copy that ends with `run[h]` drawn since the copy before it
+/// (`run[h - 1]`) that repeat one of the copy before that, carried on by the step from
+/// that copy to this one (the one turning nearest `turn`) within `PLACE` of the step: a
+/// motif's other strokes (a petal's second arc, a leaf's midrib, its stalk), in drawing
+/// order.
+pub(super) fn companions(d: &Drawing, run: &[usize], h: usize, step: f64, turn: f64) -> Vec<usize> {
+    let (Some(&before), Some(&prev)) = (h.checked_sub(2).map(|x| &run[x]), h.checked_sub(1).map(|x| &run[x])) else {
+        return Vec::new();
+    };
+    let last = run[h];
+    let Some((carry, _)) = d.near(prev, last, turn) else { return Vec::new() };
+    let centre = |i: usize| d.strokes[i].reference_point();
+    (prev + 1..last)
+        .filter(|&c| {
+            (before + 1..prev).any(|o| {
+                d.same(o, c).is_some()
+                    && carry.carry(&d.strokes[o]).reference_point().distance(centre(c)) <= PLACE * step
+            })
+        })
+        .collect()
+}
