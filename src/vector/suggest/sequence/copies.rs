@@ -3,7 +3,7 @@
 //! mirrored arcs), every `stride`-th; and the latest copy's other strokes, carried on
 //! with it (`companions`).
 
-use super::{Drawing, FOLLOW_TURN};
+use super::Drawing;
 use crate::vector::similarity::Similarity;
 
 /// The two steps agree when their `a` differ by at most this share of `|a|` (about 5°
@@ -13,6 +13,7 @@ const TURN: f64 = 0.09;
 const PLACE: f64 = 0.2;
 /// How the latest copy follows the two before it, taken every `stride`-th of its shape
 /// back along `chain` (the strokes of its shape, the latest at `at`).
+#[derive(Clone, Copy)]
 pub(super) struct Begun {
     pub(super) stride: usize,
     /// The steps from the first copy to the second, and from the second to the latest.
@@ -25,9 +26,8 @@ pub(super) struct Begun {
     /// bends on, past copies accepted from its earlier turn), the whole run must bear
     /// the sequence out instead (`RUN_PLACE`).
     pub(super) local: bool,
-    /// The two steps are unlike outright (`FOLLOW_TURN`): no run of copies one step
-    /// apart, but perhaps one of copies `stride` apart in a motif of several.
-    pub(super) apart: bool,
+    /// How far the two steps disagree, as a share of the first's `|a|`.
+    pub(super) disagree: f64,
 }
 
 /// Copies of a motif holding up to this many strokes of one shape are followed.
@@ -42,10 +42,12 @@ pub(super) fn begin(d: &Drawing, chain: &[usize], at: usize, stride: usize) -> O
     let first = if stride == 1 {
         (chain[0]..second).rev().find(|&i| d.same(i, second).is_some())?
     } else {
-        // (The latest copy's strokes of this shape lie on one another, as a petal's two
-        // arcs do, not a step apart: four leaves along a stem are no motif of four.)
-        let apart = |i: usize| centre(i).distance(centre(last)) > 0.5 * d.size(i).max(d.size(last));
-        if chain[at + 1 - stride..at].iter().any(|&i| apart(i)) {
+        // (A copy's strokes of this shape lie on one another, as a petal's two arcs do:
+        // those between the second and the latest each lie on one of the two, whose
+        // copy it is part of; four leaves along a stem, each a step from the next, are
+        // no motif of four.)
+        let on = |i: usize, j: usize| centre(i).distance(centre(j)) <= 0.5 * d.size(i).max(d.size(j));
+        if !chain[at + 1 - stride..at].iter().all(|&i| on(i, last) || on(i, second)) {
             return None;
         }
         let first = chain[at.checked_sub(2 * stride)?];
@@ -68,7 +70,7 @@ pub(super) fn begin(d: &Drawing, chain: &[usize], at: usize, stride: usize) -> O
     let agree = (two.a - one.a).hypot();
     let local = agree <= TURN * one.a.hypot()
         && one.carry(&d.strokes[second]).reference_point().distance(centre(last)) <= PLACE * step;
-    Some(Begun { stride, one, two, step, local, apart: agree > FOLLOW_TURN * one.a.hypot() })
+    Some(Begun { stride, one, two, step, local, disagree: agree / one.a.hypot().max(1e-9) })
 }
 
 /// The strokes of the copy that ends with `run[h]` drawn since the copy before it

@@ -201,14 +201,13 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
         (lookback..n).rev().filter(|&i| i == last || d.same(i, last).is_some()).take(LOOK_BACK + 1).collect();
     chain.reverse();
     let at = chain.iter().position(|&i| i == last)?;
-    let start = {
-        let one = begin(d, &chain, at, 1);
-        match one {
-            Some(b) if b.local || !b.apart => Some(b),
-            _ => (2..=MAX_STRIDE).filter_map(|k| begin(d, &chain, at, k)).find(|b| b.local).or(one),
-        }
-    }?;
-    let Begun { stride, one, two, step, local, .. } = start;
+    // (The first stride whose steps agree; where none does, the one whose steps come
+    // nearest, a stride of more than one only where the strokes between lie on the
+    // copies followed: see `begin`.)
+    let begun: Vec<Begun> = (1..=MAX_STRIDE).filter_map(|k| begin(d, &chain, at, k)).collect();
+    let start =
+        begun.iter().find(|b| b.local).or_else(|| begun.iter().min_by(|x, y| x.disagree.total_cmp(&y.disagree)))?;
+    let Begun { stride, one, two, step, local, .. } = *start;
     let centre = |i: usize| strokes[i].reference_point();
     // Copies a step apart, not one drawn over another (hatching lies a tenth of its
     // length apart, or closer).
