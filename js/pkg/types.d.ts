@@ -5,6 +5,7 @@ export type Rgb = string;
 export interface Stroke {
   points: [number, number][];
   width: number;
+  /** The pen's colour (`#rrggbb`); black when left out, `null` for a shape only filled. */
   stroke?: Rgb | null;
   fill?: Rgb | null;
   opacity?: number;

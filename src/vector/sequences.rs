@@ -457,7 +457,7 @@ fn three_stroke_leaf(at: Point, theta: f64, len: f64, rng: &mut Rng, noise: f64)
 /// Motifs of several strokes, drawn a few times by hand and carried on by turns
 /// (issue 27: a ring of petals each drawn as two mirrored arcs got "no repetition";
 /// leaves of three strokes along curves 0-10% accepted): petals of two arcs round a
-/// centre, petals with a vein, leaves of three strokes along an arc and an S-curve, and
+/// centre, petals with a vein, petals with a dot at the tip, leaves of three strokes along an arc and an S-curve, and
 /// a stalk and its leaf along a Bézier arch. Each copy's strokes in one order; each
 /// copy off its place by `wobble` of the step and turned as `turn` says, each stroke's
 /// points off by a fifth of that.
@@ -497,6 +497,12 @@ pub fn composite(wobble: f64, turn: HandTurn, seed: u64) -> Vec<Sequence> {
     ring("ring of 6 veined petals", 6, 90.0, 203, &|at, theta, rng, noise| {
         let vein = at + Vec2::new(theta.cos(), theta.sin()) * 45.0;
         vec![leaf(at, theta, 90.0, rng, noise), line(vein, theta, 60.0, rng, noise)]
+    });
+    ring("ring of 8 petals with a dot", 8, 90.0, 213, &|at, theta, rng, noise| {
+        let tip = at + Vec2::new(theta.cos(), theta.sin()) * 98.0;
+        let mut dot = circle(tip, 1.5, rng.below(360) as f64 / 360.0 * TAU, 1.0, rng, 0.1 * noise);
+        dot.width = 3.0;
+        vec![leaf(at, theta, 90.0, rng, noise), dot]
     });
     ring("ring of 9 three-stroke leaves", 9, 80.0, 205, &|at, theta, rng, noise| {
         three_stroke_leaf(at, theta, 80.0, rng, noise)

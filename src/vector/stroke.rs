@@ -9,6 +9,10 @@ fn one() -> f64 {
     1.0
 }
 
+fn pen() -> Option<Rgb> {
+    Some(Rgb([0, 0, 0]))
+}
+
 /// How a compound stroke's subpaths fill: SVG's `fill-rule`.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
@@ -32,7 +36,10 @@ pub struct Stroke {
     pub points: Vec<[f64; 2]>,
     #[serde(default)]
     pub width: f64,
-    #[serde(default)]
+    /// The pen's colour; none for a shape only filled. Given no paint at all (a caller's
+    /// `{ points, width }`), a black pen: with none, such a drawing came back as an SVG
+    /// of invisible paths. `null` says none.
+    #[serde(default = "pen")]
     pub stroke: Option<Rgb>,
     #[serde(default)]
     pub fill: Option<Rgb>,

@@ -73,6 +73,15 @@ test('classifyStrokes proposes tolerances and takes given ones', () => {
   assert.equal(merged.tolerances.color, 500);
 });
 
+test('strokes given without paint are drawn with a black pen', () => {
+  // (A new user's trial: { points, width } came back as an SVG of invisible paths.)
+  const strokes = [0, 1, 2, 3].map((i) => ({ points: [[10 + 30 * i, 10], [20 + 30 * i, 30]], width: 2 }));
+  const r = ps.synthesizeStrokes(strokes, { width: 200, height: 60, variation: false });
+  assert.ok(r.strokes.length > 4 && r.strokes.every((s) => s.stroke === '#000000'));
+  assert.match(r.svg, /stroke="#000000"/);
+  assert.doesNotMatch(r.svg, /stroke="none"/);
+});
+
 test('fill-only shapes survive the whole trip', () => {
   const svg = '<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 100 100">' +
     [0, 1, 2, 3].map((i) => `<rect x="${10 + i * 20}" y="10" width="8" height="8" fill="#00aa55" fill-opacity="0.5"/>`).join('') + '</svg>';

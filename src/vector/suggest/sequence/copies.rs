@@ -5,6 +5,7 @@
 
 use super::Drawing;
 use crate::vector::similarity::Similarity;
+use kurbo::Vec2;
 
 /// The two steps agree when their `a` differ by at most this share of `|a|` (about 5°
 /// of turn or 5% of scale)...
@@ -29,6 +30,11 @@ pub(super) struct Begun {
     /// How far the two steps disagree, as a share of the first's `|a|`.
     pub(super) disagree: f64,
 }
+
+/// The steps between copies of a motif of several strokes of one shape turn or scale
+/// by at least this much (`|a - 1|`, about 6 degrees: petals round a centre, leaves
+/// along a curve).
+const STRIDE_TURN: f64 = 0.1;
 
 /// Copies of a motif holding up to this many strokes of one shape are followed.
 pub(super) const MAX_STRIDE: usize = 4;
@@ -67,6 +73,13 @@ pub(super) fn begin(d: &Drawing, chain: &[usize], at: usize, stride: usize) -> O
         let pairs = ones.iter().flat_map(|o| twos.iter().map(move |t| (o.0, t.0)));
         pairs.min_by(|x, y| miss(&x.0, &x.1).total_cmp(&miss(&y.0, &y.1)))?
     };
+    // (A motif of several strokes carried by about a translation is the lattice's: it
+    // reads those, whole, with its own certainty. Asterisks in a row, each bar turned a
+    // few degrees by the hand, read as an orbit that bent with them, and the finished
+    // drawing synthesized less regularly: 95th percentile residual 0.126 of the step.)
+    if stride > 1 && (one.a + two.a - Vec2::new(2.0, 0.0)).hypot() < 2.0 * STRIDE_TURN {
+        return None;
+    }
     let agree = (two.a - one.a).hypot();
     let local = agree <= TURN * one.a.hypot()
         && one.carry(&d.strokes[second]).reference_point().distance(centre(last)) <= PLACE * step;

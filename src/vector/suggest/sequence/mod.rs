@@ -169,7 +169,14 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
     if n - 1 - last > LOOK_BACK {
         return None;
     }
-    let (found, parts) = follow(&d, ask, last)?;
+    // (A dot says nothing of how its copies turn: where it is the latest stroke and
+    // carries nothing on, the larger stroke drawn before it in its copy may.)
+    let (found, parts) = follow(&d, ask, last).or_else(|| {
+        let dot = d.size(last) < DOT * strokes[last].width;
+        let before =
+            (last.saturating_sub(MAX_STRIDE)..last).rev().find(|&i| d.hand(i) && d.size(i) > LARGER * d.size(last));
+        before.filter(|_| dot).and_then(|b| follow(&d, ask, b))
+    })?;
     // A motif's largest stroke shows its turn best (a stalk a few pixels long reads it
     // loosely, and put ghosts over the top of a Bézier arch 15-25 off at a step of 41,
     // where its leaves showed the turn changing): where the latest copy holds a
@@ -181,6 +188,9 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
         None => Some(found),
     }
 }
+
+/// A stroke smaller than this many pen widths is a dot (a tap of the pen).
+const DOT: f64 = 4.0;
 
 /// A motif's stroke is followed in place of the latest when it is this many times the
 /// latest's size.
@@ -312,7 +322,12 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
         near.peek().is_some() && {
             let (mine, size) = (samples(g), g.bounds().size().to_vec2().hypot());
             let c = centroid(&mine);
+            // (A dot turns as the pen went: its place alone says it is drawn.)
+            let dot = size < DOT * g.width;
             near.any(|s| {
+                if dot {
+                    return s.reference_point().distance(p) < DRAWN * here;
+                }
                 relations(&mine, &samples(s), size).iter().any(|(t, _)| {
                     (t.a - Vec2::new(1.0, 0.0)).hypot() < FOLLOW_TURN && t.apply(c).distance(c) < DRAWN * here
                 })
