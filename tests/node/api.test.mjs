@@ -82,6 +82,30 @@ test('strokes given without paint are drawn with a black pen', () => {
   assert.doesNotMatch(r.svg, /stroke="none"/);
 });
 
+test('three petals each drawn as two arcs synthesize into rosettes of whole petals', () => {
+  // (Issue 27: they became a scatter of 507 loose arcs.) Arcs from the centre (400, 250)
+  // 110 out, bulging either side, a little wobble.
+  const arc = (theta, bulge) => ({
+    width: 3,
+    points: Array.from({ length: 17 }, (_, k) => {
+      const t = k / 16, along = 110 * t, across = -bulge * 110 * 4 * t * (1 - t) + ((k % 3) - 1) * 0.6;
+      return [400 + along * Math.cos(theta) - across * Math.sin(theta), 250 + along * Math.sin(theta) + across * Math.cos(theta)];
+    }),
+  });
+  const strokes = [0, 1, 2].flatMap((k) => [arc((k * Math.PI) / 4, 0.18), arc((k * Math.PI) / 4, -0.18)]);
+  const r = ps.synthesizeStrokes(strokes, { width: 800, height: 600 });
+  assert.equal(r.structure, 'ring');
+  // Each rosette's arcs begin at its centre: sixteen a rosette (those cut by the edge
+  // fewer), both arcs of every petal.
+  const centres = new Map();
+  for (const s of r.strokes) {
+    const key = `${Math.round(s.points[0][0] / 20)},${Math.round(s.points[0][1] / 20)}`;
+    centres.set(key, (centres.get(key) ?? 0) + 1);
+  }
+  const full = [...centres.values()].filter((n) => n === 16).length;
+  assert.ok(full >= 2, `rosettes of ${[...centres.values()]} arcs`);
+});
+
 test('fill-only shapes survive the whole trip', () => {
   const svg = '<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 100 100">' +
     [0, 1, 2, 3].map((i) => `<rect x="${10 + i * 20}" y="10" width="8" height="8" fill="#00aa55" fill-opacity="0.5"/>`).join('') + '</svg>';
