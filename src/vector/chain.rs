@@ -183,8 +183,10 @@ pub fn find(strokes: &[Stroke]) -> Option<Chain> {
     let runs = runs(&next);
     // (Of runs as long, the one of the largest strokes: the turn is read from its
     // shapes, and a dot's says nothing.)
+    // A run of dots, which link by place alone, never leads one of larger strokes.
     let extent = |r: &Vec<usize>| r.iter().map(|&k| size[k]).sum::<f64>();
-    let chain = runs.iter().max_by(|x, y| x.len().cmp(&y.len()).then(extent(x).total_cmp(&extent(y))))?.clone();
+    let key = |r: &Vec<usize>| (r.iter().any(|&k| !dot(k)), r.len());
+    let chain = runs.iter().max_by(|x, y| key(x).cmp(&key(y)).then(extent(x).total_cmp(&extent(y))))?.clone();
     // Runs beside it, a motif's other strokes (see `Chain::companions`).
     let companions = companions(&chain, &runs);
     let covered = chain.len() + companions.iter().map(Vec::len).sum::<usize>();
@@ -384,7 +386,9 @@ impl Chain {
         for t in first.unwrap_or(self.members.len())..k {
             let from = self.source(t as i64, &mut rng);
             let Some(copy) = self.copy(strokes, t as i64, from) else { continue };
-            for (stroke, source) in copy {
+            // (A drawn copy short of a stroke gets that stroke only: its member is drawn.)
+            let drawn = usize::from(t < self.members.len());
+            for (stroke, source) in copy.into_iter().skip(drawn) {
                 let s = samples(&stroke);
                 let size = stroke.bounds().size().to_vec2().hypot();
                 let on = |p: &Vec<Point>| {

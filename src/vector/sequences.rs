@@ -557,6 +557,13 @@ pub fn composite(wobble: f64, turn: HandTurn, seed: u64) -> Vec<Sequence> {
     let leaf3 = |at, theta, rng: &mut Rng, noise| three_stroke_leaf(at, theta, 34.0, rng, noise);
     out.push(along("three-stroke leaves on an arc", &arc_path, 1e-4, 10, 207, &leaf3));
     out.push(along("three-stroke leaves on an S-curve", &s_path, 1e-4, 12, 209, &leaf3));
+    // (The leaf first, then its dot: the stroke followed is not the last of its copy.)
+    out.push(along("leaves with a dot on an arc", &arc_path, 1e-4, 10, 215, &|at, theta, rng, noise| {
+        let tip = at + Vec2::new(theta.cos(), theta.sin()) * 38.0;
+        let mut dot = circle(tip, 1.5, rng.below(360) as f64 / 360.0 * TAU, 1.0, rng, 0.1 * noise);
+        dot.width = 3.0;
+        vec![leaf(at, theta, 32.0, rng, noise), dot]
+    }));
     let arch = bezier([(60.0, 500.0), (250.0, 50.0), (650.0, 50.0), (840.0, 500.0)]);
     out.push(along("stalked leaves on a Bézier arch", &arch, 1.0 / 8000.0, 14, 211, &|at, theta, rng, noise| {
         let d = Vec2::new(theta.cos(), theta.sin());
