@@ -133,10 +133,7 @@ fn motifs_whose_parts_sit_on_one_another_repeat_by_their_own_period() {
         [0.8, -0.6, 0.4].iter().enumerate().flat_map(|(i, &w)| cross(100.0 + 70.0 * i as f64, 120.0, w)).collect();
     let s = suggest_strokes(&strokes, &SuggestOptions { region: Some([0.0, 0.0, 800.0, 500.0]), ..Default::default() })
         .unwrap();
-    // (The next two copies, or three: the crosses' lines turn by a degree or two at
-    // random, which a row of three copies reads as a turn that the third copy ahead
-    // may drift by, as it does for a row of one stroke: see `drift::row_turn`.)
-    assert!((4..=6).contains(&s.strokes.len()) && s.strokes.len() % 2 == 0, "{:?}", s.reason);
+    assert_eq!(s.strokes.len(), 6, "{:?}", s.reason);
     for (k, p) in s.strokes.iter().enumerate() {
         let c = p.reference_point();
         let want = 100.0 + 70.0 * (3 + k / 2) as f64;

@@ -287,10 +287,15 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
     // A row may bend: each motif position's hand-drawn copies along it, whose shapes
     // show how much its steps turn (see `drift`); of a motif of several strokes, the
     // largest part of its whole copies (a leaf's stalk a few pixels long shows little).
+    // (Only a part half again the size of any other shows the motif's turn: a cross's
+    // two bars, each turned a degree or two by the hand, read as a row that bends, and
+    // three crosses got two ghosts where they had three.)
     let largest = |x: usize| {
-        let size = |&&s: &&u32| strokes[s as usize].bounds().size().to_vec2().hypot();
-        let s = motifs.instances[x].iter().max_by(|a, b| size(a).total_cmp(&size(b)))?;
-        Some(motifs.part[*s as usize])
+        let size = |s: u32| strokes[s as usize].bounds().size().to_vec2().hypot();
+        let mut parts: Vec<(f64, u32)> = motifs.instances[x].iter().map(|&s| (size(s), s)).collect();
+        parts.sort_by(|a, b| b.0.total_cmp(&a.0));
+        let dominant = parts.get(1).is_none_or(|second| parts[0].0 > 1.5 * second.0);
+        dominant.then(|| motifs.part[parts[0].1 as usize])
     };
     let hand_rows: Vec<Vec<(i64, &Stroke)>> = if fit.b.is_none() {
         fit.motif
