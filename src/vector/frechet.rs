@@ -97,7 +97,7 @@ impl Shape {
         if direct(eps) {
             return true;
         }
-        if !(self.closed && other.closed) || !near_everywhere(p, q, eps) {
+        if !(self.closed && other.closed && near_everywhere(p, q, eps)) {
             return false;
         }
         // Two loops: `other` begun elsewhere, decided rather than measured (a full
