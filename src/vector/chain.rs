@@ -447,8 +447,14 @@ impl Chain {
                     continue;
                 }
                 if area.contains(c) {
+                    let kept: Vec<(Stroke, usize)> =
+                        copy.into_iter().filter(|(p, _)| area.contains(p.reference_point())).collect();
+                    // (A copy goes whole or not at all: `max` bounds the output's memory.)
+                    if out.len() + kept.len() > max {
+                        continue;
+                    }
                     centres.push(c);
-                    out.extend(copy.into_iter().filter(|(p, _)| area.contains(p.reference_point())));
+                    out.extend(kept);
                 }
                 next[d] = Some(t + dir);
             }
@@ -508,6 +514,27 @@ mod tests {
         for (s, _) in &more {
             let on = (s.reference_point().distance(o) - leaf(0).reference_point().distance(o)).abs();
             assert!(on < 1.0, "off the arc by {on}");
+        }
+    }
+
+    #[test]
+    fn a_motif_of_two_strokes_goes_on_whole_within_the_limit() {
+        // A leaf and its vein every 12° on a circle: no more strokes than asked
+        // for, and only whole copies (an odd limit once let a leaf go without its vein).
+        let o = Point::new(0.0, 400.0);
+        let drawn: Vec<Stroke> = (0..4)
+            .flat_map(|k| {
+                let phi = -0.3 + k as f64 * 12f64.to_radians();
+                let (at, along) = (o + Vec2::new(phi.sin(), -phi.cos()) * 300.0, Vec2::new(phi.cos(), phi.sin()));
+                let (p, q) = (at + along * 8.0, at + along * 22.0);
+                [petal(at, phi, 30.0), Stroke::new(vec![[p.x, p.y], [q.x, q.y]], 2.0, None)]
+            })
+            .collect();
+        let chain = find(&drawn).expect("an arc");
+        assert_eq!(chain.strokes(), 8);
+        for max in [5, 6, 7] {
+            let more = chain.extend(&drawn, Rect::new(-400.0, 0.0, 400.0, 400.0), None, max);
+            assert!(more.len() <= max && more.len() % 2 == 0 && more.len() >= max - 1, "{max}: {}", more.len());
         }
     }
 
