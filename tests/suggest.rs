@@ -551,3 +551,41 @@ fn motifs_of_several_strokes_are_carried_on_whole() {
     assert!(share >= 0.85, "{share:.2} accepted after three copies on the mean family");
     assert!(wrong as f64 <= 0.05 * shown as f64, "{wrong} wrong of {shown} shown");
 }
+
+/// A leaf and then its dot, or the dot and then its leaf: every leaf proposed comes
+/// with its dot, at its tip, and no dot without a leaf (drawn leaf first, the last
+/// leaf proposed came without one: the dots went with the copy after theirs).
+#[test]
+fn every_proposed_leaf_gets_its_dot_whichever_is_drawn_first() {
+    let mut checked = 0;
+    for seed in 1..=3 {
+        let all = patternsynth::vector::sequences::composite(0.01, HandTurn::STEADY, seed);
+        let q = all.iter().find(|q| q.name == "leaves with a dot on an arc").expect("the family");
+        for dot_first in [false, true] {
+            let strokes: Vec<Stroke> = q
+                .strokes
+                .chunks(2)
+                .flat_map(|c| if dot_first { vec![c[1].clone(), c[0].clone()] } else { c.to_vec() })
+                .collect();
+            let opts = SuggestOptions { region: Some([0.0, 0.0, 600.0, 600.0]), ..SuggestOptions::default() };
+            for copies in 3..=5 {
+                let s = suggest_strokes(&strokes[..2 * copies], &opts).unwrap();
+                let is_dot = |g: &Stroke| g.bounds().size().to_vec2().hypot() < 4.0 * g.width;
+                let (dots, leaves): (Vec<&Stroke>, Vec<&Stroke>) = s.strokes.iter().partition(|g| is_dot(g));
+                assert_eq!(dots.len(), leaves.len(), "seed {seed}, dot first {dot_first}, {copies} copies");
+                // (Each dot within a fifth of a leaf's length of a proposed leaf's tip: the
+                // leaf's end farthest from where its stalk would be, either end.)
+                for dot in &dots {
+                    let p = dot.reference_point();
+                    let near = leaves.iter().any(|l| {
+                        let (a, b) = (l.points[0], l.points[l.points.len() / 2]);
+                        [a, b].iter().any(|&[x, y]| kurbo::Point::new(x, y).distance(p) < 8.0)
+                    });
+                    assert!(near, "seed {seed}, dot first {dot_first}: a dot at {p:?} by no proposed leaf's tip");
+                }
+                checked += leaves.len();
+            }
+        }
+    }
+    assert!(checked >= 20, "{checked} leaves proposed");
+}

@@ -1,7 +1,7 @@
 //! Which copies of the latest stroke's shape a sequence follows (`begin`): the two
 //! before it, or where motifs hold several strokes of that shape (a petal drawn as two
 //! mirrored arcs), every `stride`-th; and the latest copy's other strokes, carried on
-//! with it (`companions`).
+//! with it (`companions`), drawn before or after the stroke followed (`trailing`).
 
 use super::Drawing;
 use crate::vector::similarity::Similarity;
@@ -106,4 +106,23 @@ pub(super) fn companions(d: &Drawing, run: &[usize], h: usize, step: f64, turn: 
             })
         })
         .collect()
+}
+
+/// Whether the latest copy's `parts` (see `companions`) were drawn after the stroke
+/// followed in their copy, and so belong to the copy before (a leaf, then its dot).
+/// `turn(t)` is the turn from the latest copy to copy `t` of the `run`. Each part,
+/// carried to the run's first copy as the latest copy's (by the step of the stroke
+/// followed onto that copy's), lands on no drawn stroke of its shape, and carried as the
+/// copy before's, lands on one. (Drawn before the stroke followed, a stalk and then its
+/// leaf, it lands on one both ways; so too where the run's first copy is not the first
+/// drawn: taken as drawn before, which proposes no part more.)
+pub(super) fn trailing(d: &Drawing, run: &[usize], parts: &[usize], turn: &dyn Fn(i64) -> f64, step: f64) -> bool {
+    let (Some(&last), true) = (run.last(), run.len() >= 2) else { return false };
+    let lands = |c: usize, t: usize| {
+        let Some((carry, _)) = d.near(last, run[t], turn(t as i64)) else { return false };
+        let p = carry.carry(&d.strokes[c]).reference_point();
+        (0..d.strokes.len())
+            .any(|s| s != c && d.strokes[s].reference_point().distance(p) <= PLACE * step && d.same(s, c).is_some())
+    };
+    !parts.is_empty() && parts.iter().all(|&c| !lands(c, 0) && lands(c, 1))
 }

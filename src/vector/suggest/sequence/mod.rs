@@ -29,7 +29,7 @@
 mod copies;
 mod model;
 
-use self::copies::{begin, companions, Begun, MAX_STRIDE};
+use self::copies::{begin, companions, trailing, Begun, MAX_STRIDE};
 use self::model::{backtest, bend_change, model, Model};
 use super::drift::drift;
 use super::{Suggestions, TOLERANCE};
@@ -66,6 +66,7 @@ const MAX_RUN: usize = 8;
 const CLEAR_BEND: f64 = 0.012;
 /// Why nothing (more) is proposed while the sequence goes on.
 const UNCERTAIN: &str = "The copies drawn so far leave the next ones too uncertain: draw one more.";
+const RING_COMPLETE: &str = "The ring is complete: draw the next one.";
 /// Why nothing is proposed where copies repeat but do not yet show the next step.
 pub(super) const UNFOLLOWED: &str = "The copies drawn so far do not yet show where the next one goes: draw one more.";
 /// ...the latest four each a step apart within this factor either way (a leaf's
@@ -336,9 +337,13 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
     };
     // The latest copy's other strokes carried to copy `t`, where none is drawn yet (the
     // copy that closes a ring may lack one).
-    let parts_at = |t: i64, here: f64| -> Vec<(Stroke, usize)> {
+    // The latest copy carried to copy `t`.
+    let to = |t: i64| {
         let turn = orbit.turn(h as i64, t);
-        let to = Similarity { a: turn, b: orbit.at(t).to_vec2() - mul(turn, d.z(last).to_vec2()) };
+        Similarity { a: turn, b: orbit.at(t).to_vec2() - mul(turn, d.z(last).to_vec2()) }
+    };
+    let parts_at = |t: i64, here: f64| -> Vec<(Stroke, usize)> {
+        let to = to(t);
         parts
             .iter()
             .map(|&c| (to.carry(&strokes[c]), c))
@@ -354,6 +359,11 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
         out.sources.push((src + offset) as u32);
         out.cells.push([k, 0]);
     };
+    // Companions drawn after the stroke followed (a leaf, then its dot) belong to the
+    // copy before the latest: each ghost copy carries the one before's, and the last
+    // copy proposed gets its own at the end.
+    let trailing = trailing(d, &run[..=h], &parts, &|t| orbit.turn(h as i64, t).atan2(), step);
+    let mut proposed = None;
     let mut rng = seed.map(Rng::new);
     let mut why = "The sequence is complete here: its next copy would fall on a drawn one or off the canvas.";
     for k in 1..=count as i64 {
@@ -369,7 +379,7 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
             for (g, c) in parts_at(t, here) {
                 push(&mut out, g, c, k);
             }
-            why = "The ring is complete: draw the next one.";
+            why = RING_COMPLETE;
             break;
         }
         // An open curve is not continued further past its last hand-drawn copy than
@@ -411,7 +421,7 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
         }
         if drawn(&ghost, here) {
             if closes.is_some() {
-                why = "The ring is complete: draw the next one.";
+                why = RING_COMPLETE;
                 for (g, c) in parts_at(t, here) {
                     push(&mut out, g, c, k);
                 }
@@ -422,6 +432,13 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
             push(&mut out, g, c, k);
         }
         push(&mut out, ghost, src, k);
+        proposed = Some((t, k));
+    }
+    // (Not past a ring's closing copy, which got what was left of it.)
+    if let Some((t, k)) = proposed.filter(|_| trailing && why != RING_COMPLETE) {
+        for (g, c) in parts_at(t + 1, orbit.at(t + 1).distance(orbit.at(t))) {
+            push(&mut out, g, c, k);
+        }
     }
     // (Found, with nothing to add: said, so the page does not read "no repetition".)
     if out.strokes.is_empty() {
