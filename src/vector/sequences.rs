@@ -43,6 +43,22 @@ impl Sequence {
         replay_each(strokes, &self.classes, self.canvas, &tol, &past)
     }
 
+    /// A family of motifs of several strokes, `copies` in drawing order (its steps,
+    /// classes and canvas set by `finish`).
+    fn of_copies(name: &str, copies: Vec<Vec<Stroke>>, step: f64) -> Sequence {
+        let parts = copies[0].len();
+        Sequence {
+            name: name.into(),
+            strokes: copies.into_iter().flatten().collect(),
+            step,
+            steps: Vec::new(),
+            beyond: Vec::new(),
+            canvas: kurbo::Rect::ZERO,
+            classes: Vec::new(),
+            parts,
+        }
+    }
+
     /// Share of the strokes accepted after the first three copies were drawn.
     pub fn accepted_after_three(&self, r: &Replay) -> f64 {
         r.accepted_after(3 * self.parts)
@@ -464,7 +480,6 @@ fn three_stroke_leaf(at: Point, theta: f64, len: f64, rng: &mut Rng, noise: f64)
 pub fn composite(wobble: f64, turn: HandTurn, seed: u64) -> Vec<Sequence> {
     let mut out = Vec::new();
     let centre = Point::new(300.0, 300.0);
-    let canvas = kurbo::Rect::ZERO;
     // A ring of `n` petals, each `len` long, drawn by `petal` (its strokes in order).
     let mut ring =
         |name: &str, n: usize, len: f64, k0: u64, petal: &dyn Fn(Point, f64, &mut Rng, f64) -> Vec<Stroke>| {
@@ -478,17 +493,7 @@ pub fn composite(wobble: f64, turn: HandTurn, seed: u64) -> Vec<Sequence> {
                     petal(at, theta, &mut rng, 0.2 * wobble * step)
                 })
                 .collect();
-            let parts = copies[0].len();
-            out.push(Sequence {
-                name: name.into(),
-                strokes: copies.into_iter().flatten().collect(),
-                step,
-                steps: Vec::new(),
-                beyond: Vec::new(),
-                canvas,
-                classes: Vec::new(),
-                parts,
-            });
+            out.push(Sequence::of_copies(name, copies, step));
         };
     ring("ring of 7 two-arc petals", 7, 90.0, 201, &|at, theta, rng, noise| {
         let tip = at + Vec2::new(theta.cos(), theta.sin()) * 90.0;
@@ -534,17 +539,7 @@ pub fn composite(wobble: f64, turn: HandTurn, seed: u64) -> Vec<Sequence> {
                 motif(p + jitter, phi - 0.6 + off, &mut rng, 0.2 * wobble * step)
             })
             .collect();
-        let parts = copies[0].len();
-        Sequence {
-            name: name.into(),
-            strokes: copies.into_iter().flatten().collect(),
-            step,
-            steps: Vec::new(),
-            beyond: Vec::new(),
-            canvas,
-            classes: Vec::new(),
-            parts,
-        }
+        Sequence::of_copies(name, copies, step)
     };
     let arc_path = |t: f64| {
         let phi = -1.2 + 2.4 * t;

@@ -215,7 +215,15 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
     // (The first stride whose steps agree; where none does, the one whose steps come
     // nearest, a stride of more than one only where the strokes between lie on the
     // copies followed: see `begin`.)
-    let begun: Vec<Begun> = (1..=MAX_STRIDE).filter_map(|k| begin(d, &chain, at, k)).collect();
+    // (Read stride by stride, stopping at the first that agrees: usually the first.)
+    let mut begun: Vec<Begun> = Vec::new();
+    for b in (1..=MAX_STRIDE).filter_map(|k| begin(d, &chain, at, k)) {
+        let local = b.local;
+        begun.push(b);
+        if local {
+            break;
+        }
+    }
     let start =
         begun.iter().find(|b| b.local).or_else(|| begun.iter().min_by(|x, y| x.disagree.total_cmp(&y.disagree)))?;
     let Begun { stride, one, two, step, local, .. } = *start;
