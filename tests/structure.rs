@@ -438,3 +438,36 @@ fn rings_of_motifs_of_several_strokes_become_rosettes() {
         }
     }
 }
+
+/// A whole ring of veined petals, one drawn without its vein: every petal of every
+/// rosette has its vein (the veins' run wrapped round the missing one, and every vein
+/// was lost: petals alone).
+#[test]
+fn a_ring_drawn_with_one_vein_missing_gets_every_vein() {
+    for seed in 1..=3 {
+        let q =
+            patternsynth::vector::sequences::composite(0.01, patternsynth::vector::sequences::HandTurn::STEADY, seed)
+                .into_iter()
+                .find(|q| q.name == "ring of 6 veined petals")
+                .unwrap();
+        // (Each copy a petal, then its vein; the third's vein left out.)
+        let drawn: Vec<Stroke> =
+            q.strokes.iter().enumerate().filter(|&(i, _)| i != 5).map(|(_, s)| s.clone()).collect();
+        let r = synth(&drawn);
+        assert_eq!(r.structure, Structure::Ring, "seed {seed}");
+        let closed = |s: &Stroke| {
+            let (a, b) = (s.points[0], s.points[s.points.len() - 1]);
+            (a[0] - b[0]).hypot(a[1] - b[1]) < 5.0
+        };
+        // (Each petal wholly inside the output, with a vein through its middle.)
+        let inside = Rect::new(0.0, 0.0, W, H);
+        let petals: Vec<&Stroke> = r.strokes.iter().filter(|s| closed(s) && inside.contains_rect(s.bounds())).collect();
+        let bare = petals
+            .iter()
+            .filter(|p| {
+                !r.strokes.iter().any(|v| !closed(v) && v.reference_point().distance(p.reference_point()) < 8.0)
+            })
+            .count();
+        assert!(petals.len() >= 12 && bare == 0, "seed {seed}: {bare} of {} petals without a vein", petals.len());
+    }
+}

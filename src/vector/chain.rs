@@ -277,18 +277,25 @@ fn runs(next: &[Option<usize>]) -> Vec<Vec<usize>> {
 
 /// For each copy of `chain`, the strokes of the other `runs` drawn beside it: a run of
 /// two or more whose strokes each lie the same number of strokes from a copy of the
-/// chain in the drawing's order (fewer than separate two copies), copy after copy.
+/// chain in the drawing's order (fewer than usually separate two copies). A run may
+/// wrap round a ring where one of its strokes is missing (a petal drawn without its
+/// vein: the veins after it, round to those before), so its strokes need not come in
+/// the chain's order.
 fn companions(chain: &[usize], runs: &[Vec<usize>]) -> Vec<Vec<usize>> {
     let mut out = vec![Vec::new(); chain.len()];
-    let gap = chain.windows(2).map(|w| w[0].abs_diff(w[1])).min().unwrap_or(0);
+    // (The median, not the least: a copy missing a stroke is drawn closer to the next.)
+    let mut gaps: Vec<usize> = chain.windows(2).map(|w| w[0].abs_diff(w[1])).collect();
+    gaps.sort_unstable();
+    let gap = gaps.get(gaps.len() / 2).copied().unwrap_or(0) as u64;
+    let place = |k: usize, d: i64| chain.iter().position(|&c| c as i64 + d == k as i64);
     for r in runs.iter().filter(|r| r.len() >= 2 && r.len() <= chain.len() && r.iter().all(|k| !chain.contains(k))) {
-        let beside = (0..=chain.len() - r.len()).find(|&off| {
-            let d = r[0] as i64 - chain[off] as i64;
-            d.unsigned_abs() < gap as u64 && r.iter().enumerate().all(|(i, &k)| k as i64 - chain[i + off] as i64 == d)
-        });
-        if let Some(off) = beside {
-            for (i, &k) in r.iter().enumerate() {
-                out[i + off].push(k);
+        let beside = chain
+            .iter()
+            .map(|&c| r[0] as i64 - c as i64)
+            .find(|&d| d.unsigned_abs() < gap && r.iter().all(|&k| place(k, d).is_some()));
+        if let Some(d) = beside {
+            for &k in r {
+                out[place(k, d).expect("checked above")].push(k);
             }
         }
     }
@@ -494,6 +501,27 @@ mod tests {
             let want = petal(c, (3 + k) as f64 * TAU / 8.0, 60.0).reference_point();
             assert!(s.reference_point().distance(want) < 1.0, "petal {}", k + 3);
         }
+    }
+
+    #[test]
+    fn a_ring_with_one_vein_missing_keeps_the_others() {
+        // Six petals, each drawn with its vein but the third: the veins' run wraps round
+        // from the fourth to the second (it lost every vein).
+        let c = Point::new(200.0, 200.0);
+        let mut drawn = Vec::new();
+        for k in 0..6 {
+            let th = k as f64 * TAU / 6.0;
+            drawn.push(petal(c, th, 60.0));
+            if k != 2 {
+                let (p, q) = (c + Vec2::new(th.cos(), th.sin()) * 18.0, c + Vec2::new(th.cos(), th.sin()) * 42.0);
+                drawn.push(Stroke::new(vec![[p.x, p.y], [q.x, q.y]], 2.0, None));
+            }
+        }
+        let chain = find(&drawn).expect("a ring");
+        assert_eq!(chain.closes, Some(6));
+        assert_eq!(chain.strokes(), 11, "{:?} {:?}", chain.members, chain.companions);
+        let with_vein = chain.companions.iter().filter(|v| v.len() == 1).count();
+        assert_eq!(with_vein, 5);
     }
 
     #[test]
