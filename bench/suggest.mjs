@@ -72,17 +72,41 @@ function hatching(n) {
   }
   return out;
 }
+// Rosettes of nine leaves, each drawn as two mirrored arcs and a midrib (motifs of
+// several strokes), turned a little by hand.
+const arc = (x0, y0, x1, y1, bow) => {
+  const pts = [];
+  for (let k = 0; k <= 12; k++) {
+    const t = k / 12, b = bow * 4 * t * (1 - t);
+    pts.push([x0 + (x1 - x0) * t - (y1 - y0) * b + jit() * 0.3, y0 + (y1 - y0) * t + (x1 - x0) * b + jit() * 0.3]);
+  }
+  return { points: pts, width: 2, stroke: '#335522' };
+};
+function leaves(n) {
+  const out = [];
+  for (let r = 0; out.length < n; r++) {
+    const cx = 80 + 170 * (r % 8), cy = 80 + 170 * Math.floor(r / 8);
+    for (let k = 0; k < 9 && out.length < n; k++) {
+      const th = (k * 2 * Math.PI) / 9 + jit() * 0.04, tx = cx + 70 * Math.cos(th), ty = cy + 70 * Math.sin(th);
+      const [mx, my, dx, dy] = [(cx + tx) / 2, (cy + ty) / 2, 28 * Math.cos(th), 28 * Math.sin(th)];
+      for (const s of [arc(cx, cy, tx, ty, 0.2), arc(cx, cy, tx, ty, -0.2), arc(mx - dx, my - dy, mx + dx, my + dy, 0)]) {
+        if (out.length < n) out.push(s);
+      }
+    }
+  }
+  return out;
+}
 // Cold: the first call on a drawing (new strokes every time); stroke by stroke: each
 // call after the one for the drawing one stroke shorter, as the page makes them (the
 // worker remembers the shape distances it has measured).
 console.log('\n| drawing | strokes | proposals | cold: median ms | stroke by stroke: median ms | slowest ms |');
 console.log('|---|---:|---:|---:|---:|---:|');
-const region = { region: [0, 0, 1400, 1400] };
-for (const [name, make] of [['rings of petals', rings], ['turning hatching', hatching]]) {
+const region = { region: [0, 0, 1500, 1500] };
+for (const [name, make] of [['rings of petals', rings], ['turning hatching', hatching], ['rosettes of three-stroke leaves', leaves]]) {
   for (const n of [60, 200]) {
     const cold = [];
     let count = 0;
-    for (let k = 0; k < 3; k++) {
+    for (let k = 0; k < 9; k++) {
       const d = make(n);
       const s = performance.now();
       count = ps.suggestStrokes(d, region).strokes.length;
