@@ -74,8 +74,6 @@ const NEAREST: usize = 4;
 const CLOSE: f64 = 0.3;
 /// Copies whose centre of turn is within this many of their sizes are a rosette.
 const ROSETTE: f64 = 1.5;
-/// A stroke smaller than this many pen widths is a dot.
-const DOT: f64 = 4.0;
 /// The most steps a chain is followed either way.
 const MAX_STEPS: i64 = 400;
 /// The most copies round a ring.
@@ -137,7 +135,7 @@ pub fn find(strokes: &[Stroke]) -> Option<Chain> {
     // about the same step.
     // (A dot, a tap of the pen a few widths across, turns as the pen went: its copies
     // are carried by place alone. A petal's dot at its tip was left off 23 of 58.)
-    let dot = |k: usize| size[k] < DOT * strokes[k].width;
+    let dot = |k: usize| strokes[k].is_dot();
     let onto = |t: &Similarity, k: usize, reach: f64| -> Option<usize> {
         let p = t.apply(centre[k]);
         (0..n)

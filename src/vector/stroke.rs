@@ -13,6 +13,9 @@ fn pen() -> Option<Rgb> {
     Some(Rgb([0, 0, 0]))
 }
 
+/// A stroke whose bounding box is less than this many pen widths across is a dot.
+pub const DOT: f64 = 4.0;
+
 /// How a compound stroke's subpaths fill: SVG's `fill-rule`.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
@@ -90,6 +93,11 @@ impl Stroke {
     /// The reference point (SPEC 1.2, Choice): the centre of the bounding box.
     pub fn reference_point(&self) -> Point {
         self.bounds().center()
+    }
+
+    /// Whether the stroke is a dot: a tap of the pen, whose turn is the pen's.
+    pub fn is_dot(&self) -> bool {
+        self.bounds().size().to_vec2().hypot() < DOT * self.width
     }
 
     /// The same stroke moved by `(dx, dy)`.

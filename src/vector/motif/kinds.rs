@@ -136,8 +136,8 @@ impl Context<'_> {
                 }
                 let shape = sx.distance(sy);
                 let off = (a.offsets[i as usize] - b.offsets[j as usize]).hypot();
-                let at = pairs.partition_point(|p| order(p, &(off.max(shape) / scale, true, i, j, 0.0)).is_lt());
-                pairs.insert(at, (off.max(shape) / scale, true, i, j, shape));
+                let measured = (off.max(shape) / scale, true, i, j, shape);
+                pairs.insert(pairs.partition_point(|p| order(p, &measured).is_lt()), measured);
                 continue;
             }
             of_b[j as usize] = i;

@@ -16,11 +16,8 @@
 use super::sequence::{relations, SHAPE};
 use crate::vector::frechet::closed_loop;
 use crate::vector::similarity::{samples, Similarity};
-use crate::vector::stroke::Stroke;
+use crate::vector::stroke::{Stroke, DOT};
 use kurbo::Point;
-
-/// A stroke shorter than this many pen widths is a dot: its turn is the pen's.
-const DOT: f64 = 4.0;
 
 /// How far off a copy `past` steps beyond the last hand-drawn one is put, the hand-drawn
 /// copies spanning `span` steps, when each step's turn is off by `error` (radians) times

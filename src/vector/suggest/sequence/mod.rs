@@ -173,7 +173,7 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
     // (A dot says nothing of how its copies turn: where it is the latest stroke and
     // carries nothing on, the larger stroke drawn before it in its copy may.)
     let (found, parts) = follow(&d, ask, last).or_else(|| {
-        let dot = d.size(last) < DOT * strokes[last].width;
+        let dot = strokes[last].is_dot();
         let before =
             (last.saturating_sub(MAX_STRIDE)..last).rev().find(|&i| d.hand(i) && d.size(i) > LARGER * d.size(last));
         before.filter(|_| dot).and_then(|b| follow(&d, ask, b))
@@ -189,9 +189,6 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
         None => Some(found),
     }
 }
-
-/// A stroke smaller than this many pen widths is a dot (a tap of the pen).
-const DOT: f64 = 4.0;
 
 /// A motif's stroke is followed in place of the latest when it is this many times the
 /// latest's size.
@@ -332,7 +329,7 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
             let (mine, size) = (samples(g), g.bounds().size().to_vec2().hypot());
             let c = centroid(&mine);
             // (A dot turns as the pen went: its place alone says it is drawn.)
-            let dot = size < DOT * g.width;
+            let dot = g.is_dot();
             near.any(|s| {
                 if dot {
                     return s.reference_point().distance(p) < DRAWN * here;
@@ -345,13 +342,9 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
     };
     // The latest copy's other strokes carried to copy `t`, where none is drawn yet (the
     // copy that closes a ring may lack one).
-    // The latest copy carried to copy `t`.
-    let to = |t: i64| {
-        let turn = orbit.turn(h as i64, t);
-        Similarity { a: turn, b: orbit.at(t).to_vec2() - mul(turn, d.z(last).to_vec2()) }
-    };
     let parts_at = |t: i64, here: f64| -> Vec<(Stroke, usize)> {
-        let to = to(t);
+        let turn = orbit.turn(h as i64, t);
+        let to = Similarity { a: turn, b: orbit.at(t).to_vec2() - mul(turn, d.z(last).to_vec2()) };
         parts
             .iter()
             .map(|&c| (to.carry(&strokes[c]), c))
@@ -367,10 +360,6 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
         out.sources.push((src + offset) as u32);
         out.cells.push([k, 0]);
     };
-    // Companions drawn after the stroke followed (a leaf, then its dot) belong to the
-    // copy before the latest: each ghost copy carries the one before's, and the last
-    // copy proposed gets its own at the end.
-    let trailing = trailing(d, &run[..=h], &parts, &|t| orbit.turn(h as i64, t).atan2(), step);
     let mut proposed = None;
     let mut rng = seed.map(Rng::new);
     let mut why = "The sequence is complete here: its next copy would fall on a drawn one or off the canvas.";
@@ -442,8 +431,12 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
         push(&mut out, ghost, src, k);
         proposed = Some((t, k));
     }
-    // (Not past a ring's closing copy, which got what was left of it.)
-    if let Some((t, k)) = proposed.filter(|_| trailing && why != RING_COMPLETE) {
+    // Companions drawn after the stroke followed (a leaf, then its dot) belong to the
+    // copy before the latest: each ghost copy carried the one before's, and the last
+    // copy proposed gets its own here (not past a ring's closing copy, which got what
+    // was left of it).
+    let trails = || trailing(d, &run[..=h], &parts, &|t| orbit.turn(h as i64, t).atan2(), step);
+    if let Some((t, k)) = proposed.filter(|_| why != RING_COMPLETE && trails()) {
         for (g, c) in parts_at(t + 1, orbit.at(t + 1).distance(orbit.at(t))) {
             push(&mut out, g, c, k);
         }
