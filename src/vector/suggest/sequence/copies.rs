@@ -101,8 +101,7 @@ pub(super) fn companions(d: &Drawing, run: &[usize], h: usize, step: f64, turn: 
     (prev + 1..last)
         .filter(|&c| {
             (before + 1..prev).any(|o| {
-                d.same(o, c).is_some()
-                    && carry.carry(&d.strokes[o]).reference_point().distance(centre(c)) <= PLACE * step
+                d.alike(o, c) && carry.carry(&d.strokes[o]).reference_point().distance(centre(c)) <= PLACE * step
             })
         })
         .collect()
@@ -122,7 +121,7 @@ pub(super) fn trailing(d: &Drawing, run: &[usize], parts: &[usize], turn: &dyn F
         let Some((carry, _)) = d.near(last, run[t], turn(t as i64)) else { return false };
         let p = carry.carry(&d.strokes[c]).reference_point();
         (0..d.strokes.len())
-            .any(|s| s != c && d.strokes[s].reference_point().distance(p) <= PLACE * step && d.same(s, c).is_some())
+            .any(|s| s != c && d.strokes[s].reference_point().distance(p) <= PLACE * step && d.alike(s, c))
     };
     !parts.is_empty() && parts.iter().all(|&c| !lands(c, 0) && lands(c, 1))
 }

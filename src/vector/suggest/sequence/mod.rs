@@ -123,10 +123,24 @@ impl Drawing<'_> {
 
     /// The steps from copy `i` to copy `j` with their shape residual, when they are one
     /// shape (more than one where the shape looks the same turned: an ellipse half round).
+    /// A dot has no shape to carry (a pen tap's few points are noise): none.
     fn steps(&self, i: usize, j: usize) -> Vec<(Similarity, f64)> {
+        if self.strokes[i].is_dot() || self.strokes[j].is_dot() {
+            return Vec::new();
+        }
         match (&self.sampled[i], &self.sampled[j]) {
             (Some(a), Some(b)) => relations(a, b, self.size(i)),
             _ => Vec::new(),
+        }
+    }
+
+    /// Whether strokes `i` and `j` are copies of one part of a motif: one shape, or both
+    /// dots (which go by their place alone).
+    fn alike(&self, i: usize, j: usize) -> bool {
+        match (self.strokes[i].is_dot(), self.strokes[j].is_dot()) {
+            (true, true) => true,
+            (false, false) => self.same(i, j).is_some(),
+            _ => false,
         }
     }
 
