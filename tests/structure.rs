@@ -471,3 +471,22 @@ fn a_ring_drawn_with_one_vein_missing_gets_every_vein() {
         assert!(petals.len() >= 12 && bare == 0, "seed {seed}: {bare} of {} petals without a vein", petals.len());
     }
 }
+
+/// `maxElements` below what a curve needs is an error, as for a lattice, not the
+/// drawing returned as though nothing followed (a new user's trial: a limit under the
+/// strokes drawn gave back the drawn strokes, and no word).
+#[test]
+fn a_curve_past_max_elements_is_an_error() {
+    let q = family(0.01, 1, "leaves on an arc");
+    let opts = |max| StrokeOptions { width: W, height: H, max_elements: max, ..Default::default() };
+    let whole = synthesize_strokes(&q.strokes[..4], &opts(500_000), &mut Silent).unwrap();
+    let n = whole.strokes.len();
+    assert!(n > 8 && whole.structure == Structure::Curve, "{n} strokes, {:?}", whole.structure);
+    for max in [2, 5, n - 1] {
+        let e = synthesize_strokes(&q.strokes[..4], &opts(max), &mut Silent).map(|r| r.strokes.len());
+        let said = format!("{e:?}");
+        assert!(said.contains(&format!("the limit is {max}")), "maxElements {max}: {said}");
+    }
+    let exact = synthesize_strokes(&q.strokes[..4], &opts(n), &mut Silent).unwrap();
+    assert_eq!(exact.strokes.len(), n);
+}

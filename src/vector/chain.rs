@@ -418,8 +418,15 @@ impl Chain {
     /// is followed on: for a turn, once round; for a spiral, while its copies are
     /// between half the smallest drawn copy and twice the largest (further on, the
     /// step's error read from a few copies outgrows the copies); never onto a
-    /// copy placed already (within half a step: a circle closing).
-    pub fn extend(&self, strokes: &[Stroke], area: Rect, seed: Option<u64>, max: usize) -> Vec<(Stroke, usize)> {
+    /// copy placed already (within half a step: a circle closing). With whether a copy
+    /// in the area was left out for `max`.
+    pub fn extend(
+        &self,
+        strokes: &[Stroke],
+        area: Rect,
+        seed: Option<u64>,
+        max: usize,
+    ) -> (Vec<(Stroke, usize)>, bool) {
         let mut rng = seed.map(Rng::new);
         let l = self.members.len() as i64;
         let size = |s: &Stroke| s.bounds().size().to_vec2().hypot();
@@ -432,14 +439,15 @@ impl Chain {
         let steps = if turning { (TAU / self.step.turn().abs().max(1e-3)).ceil() as i64 } else { MAX_STEPS };
         let mut centres: Vec<Point> = self.members.iter().map(|&m| strokes[m].reference_point()).collect();
         let mut out = Vec::new();
+        let mut capped = false;
         // Both ways in turn, so that where the two runs meet (round a circle) each copy
         // comes from the nearer end.
         let mut next = [Some(l), Some(-1)];
-        while out.len() < max && next.iter().any(Option::is_some) {
+        while next.iter().any(Option::is_some) {
             for (d, dir) in [1i64, -1].into_iter().enumerate() {
                 let Some(t) = next[d] else { continue };
                 next[d] = None;
-                if (t - if dir > 0 { l - 1 } else { 0 }).abs() > steps.min(MAX_STEPS) || out.len() >= max {
+                if (t - if dir > 0 { l - 1 } else { 0 }).abs() > steps.min(MAX_STEPS) {
                     continue;
                 }
                 let from = self.source(t, &mut rng);
@@ -456,6 +464,7 @@ impl Chain {
                         copy.into_iter().filter(|(p, _)| area.contains(p.reference_point())).collect();
                     // (A copy goes whole or not at all: `max` bounds the output's memory.)
                     if out.len() + kept.len() > max {
+                        capped |= !kept.is_empty();
                         continue;
                     }
                     centres.push(c);
@@ -464,7 +473,7 @@ impl Chain {
                 next[d] = Some(t + dir);
             }
         }
-        out
+        (out, capped)
     }
 }
 
@@ -535,7 +544,7 @@ mod tests {
         let chain = find(&drawn).expect("an arc");
         // 12° would close after 30, but round a far centre that is a curve's business.
         assert_eq!(chain.structure(), Structure::Curve);
-        let more = chain.extend(&drawn, Rect::new(-400.0, 0.0, 400.0, 400.0), None, 100);
+        let (more, _) = chain.extend(&drawn, Rect::new(-400.0, 0.0, 400.0, 400.0), None, 100);
         assert!(more.len() >= 4, "{}", more.len());
         for (s, _) in &more {
             let on = (s.reference_point().distance(o) - leaf(0).reference_point().distance(o)).abs();
@@ -559,8 +568,9 @@ mod tests {
         let chain = find(&drawn).expect("an arc");
         assert_eq!(chain.strokes(), 8);
         for max in [5, 6, 7] {
-            let more = chain.extend(&drawn, Rect::new(-400.0, 0.0, 400.0, 400.0), None, max);
+            let (more, capped) = chain.extend(&drawn, Rect::new(-400.0, 0.0, 400.0, 400.0), None, max);
             assert!(more.len() <= max && more.len() % 2 == 0 && more.len() >= max - 1, "{max}: {}", more.len());
+            assert!(capped, "{max}: the copies left out are said");
         }
     }
 

@@ -258,7 +258,7 @@ pub fn synthesize_strokes(
         .flatten()
         .filter(|c| (c.closes.is_some() && 3 * c.strokes() >= 2 * strokes.len()) || !translates(&elements));
     if let Some(chain) = along {
-        return along_chain(strokes, classification, chain, opts, max_elements, progress);
+        return along_chain(strokes, classification, chain, opts, max_elements, progress).map_err(explain);
     }
     let meshed = joined.is_some();
     let (out, classes, sources, stats, periods) = if let Some(j) = joined {
@@ -398,8 +398,14 @@ fn along_chain(
         out.truncate(strokes.len());
         sources.truncate(strokes.len());
     }
-    let room = max_elements.saturating_sub(out.len());
-    for (s, from) in chain.extend(&drawn, area, seed, room) {
+    // (Past the limit, an error as for a lattice, not the output cut short.)
+    let (more, capped) = chain.extend(&drawn, area, seed, max_elements.saturating_sub(out.len()));
+    if capped || out.len() > max_elements {
+        return Err(Error::TooLarge(format!(
+            "This output would hold more than {max_elements} elements; the limit is {max_elements}. Use a smaller output or larger strokes."
+        )));
+    }
+    for (s, from) in more {
         out.push(s);
         sources.push(from as u32);
     }
