@@ -490,3 +490,47 @@ fn a_curve_past_max_elements_is_an_error() {
     let exact = synthesize_strokes(&q.strokes[..4], &opts(n), &mut Silent).unwrap();
     assert_eq!(exact.strokes.len(), n);
 }
+
+/// A dot tapped with the pen (three to six points within two pixels: a shape of noise)
+/// goes with its petal or leaf as a drawn circle does: the ring completed holds a dot
+/// per petal, and the leaves continued along an arc hold a dot per leaf.
+#[test]
+fn pen_tapped_dots_go_with_their_copies() {
+    let taps = |strokes: &[Stroke], seed: u64| -> Vec<Stroke> {
+        let mut rng = patternsynth::rng::Rng::new(seed);
+        strokes
+            .iter()
+            .map(|s| {
+                if !s.is_dot() {
+                    return s.clone();
+                }
+                let c = s.reference_point();
+                let mut tap = s.clone();
+                tap.points = (0..3 + rng.below(4))
+                    .map(|_| [c.x + 2.0 * rng.next_f64() - 1.0, c.y + 2.0 * rng.next_f64() - 1.0])
+                    .collect();
+                tap
+            })
+            .collect()
+    };
+    let hand = patternsynth::vector::sequences::HandTurn::STEADY;
+    for seed in 1..=3 {
+        let all = patternsynth::vector::sequences::composite(0.01, hand, seed);
+        let ring = all.iter().find(|q| q.name == "ring of 8 petals with a dot").unwrap();
+        let drawn = taps(&ring.strokes[..3 * ring.parts], seed);
+        let chain = patternsynth::vector::chain::find(&drawn).expect("a ring");
+        let done: Vec<Stroke> =
+            drawn.iter().cloned().chain(chain.complete(&drawn, None).into_iter().map(|c| c.0)).collect();
+        let dots = done.iter().filter(|s| s.is_dot()).count();
+        assert_eq!((done.len() - dots, dots), (8, 8), "seed {seed}: the ring completed, its petals and dots");
+        let arc = all.iter().find(|q| q.name == "leaves with a dot on an arc").unwrap();
+        let r = synth(&taps(&arc.strokes[..4 * arc.parts], seed));
+        let dots = r.strokes.iter().filter(|s| s.is_dot()).count();
+        assert_eq!(r.structure, Structure::Curve, "seed {seed}");
+        assert!(
+            dots + 1 >= r.strokes.len() - dots && r.strokes.len() > 12,
+            "seed {seed}: {} leaves, {dots} dots",
+            r.strokes.len() - dots
+        );
+    }
+}

@@ -105,10 +105,17 @@ pub fn find(strokes: &[Stroke]) -> Option<Chain> {
     let centre: Vec<Point> = sampled.iter().map(|s| centroid(s)).collect();
     let size: Vec<f64> = strokes.iter().map(|s| s.bounds().size().to_vec2().hypot()).collect();
     let mut rel: Vec<Option<(Similarity, bool)>> = vec![None; n * n];
+    // (A dot, a tap of the pen a few widths across, has no shape to relate: three to six
+    // points within two pixels are noise. Dots relate to one another by place alone,
+    // and to nothing else.)
+    let dot = |k: usize| strokes[k].is_dot();
     for i in 0..n {
         for j in 0..n {
             let ratio = size[j] / size[i].max(1e-9);
-            if i != j && (1.0 / MAX_SCALE..=MAX_SCALE).contains(&ratio) {
+            if i != j && dot(i) && dot(j) {
+                let shift = Similarity { a: Vec2::new(1.0, 0.0), b: centre[j] - centre[i] };
+                rel[i * n + j] = Some((shift, false));
+            } else if i != j && !dot(i) && !dot(j) && (1.0 / MAX_SCALE..=MAX_SCALE).contains(&ratio) {
                 rel[i * n + j] = relate(&sampled[i], &sampled[j], size[i], SHAPE, MAX_SCALE).map(|(t, _, b)| (t, b));
             }
         }
@@ -133,9 +140,8 @@ pub fn find(strokes: &[Stroke]) -> Option<Chain> {
     let groups: Vec<usize> = (0..n).map(|i| root(&mut group, i)).collect();
     // Where `t` carries copy `k`: the copy of its shape it lands on, related to it by
     // about the same step.
-    // (A dot, a tap of the pen a few widths across, turns as the pen went: its copies
-    // are carried by place alone. A petal's dot at its tip was left off 23 of 58.)
-    let dot = |k: usize| strokes[k].is_dot();
+    // (A dot turns as the pen went: its copies are carried by place alone. A petal's dot
+    // at its tip was left off 23 of 58.)
     let onto = |t: &Similarity, k: usize, reach: f64| -> Option<usize> {
         let p = t.apply(centre[k]);
         (0..n)
