@@ -158,6 +158,27 @@ impl Drawing<'_> {
         self.steps(i, j).into_iter().min_by(|x, y| off(&x.0).total_cmp(&off(&y.0)))
     }
 
+    /// How far copy `j` departs from copy `i` carried on by `t`, the jitter of single
+    /// points left out (a mouse's jaggies, a tremor: each point's own, which moves a copy's
+    /// centre by a fifth of itself over 24 samples, not as a hand misplaces a copy): the
+    /// rms distance of `i`'s samples, smoothed along the path and carried, from `j`'s
+    /// smoothed path.
+    fn shape_wobble(&self, i: usize, j: usize, t: &Similarity) -> f64 {
+        let (Some(a), Some(b)) = (&self.sampled[i], &self.sampled[j]) else { return 0.0 };
+        let (a, b) = (smoothed(a), smoothed(b));
+        let path: Vec<(Point, Point)> = b.windows(2).map(|w| (w[0], w[1])).collect();
+        let far = |p: Point| {
+            path.iter()
+                .map(|&(u, v)| {
+                    let (d, e) = (v - u, p - u);
+                    let s = (e.dot(d) / d.hypot2().max(1e-12)).clamp(0.0, 1.0);
+                    (e - d * s).hypot2()
+                })
+                .fold(f64::INFINITY, f64::min)
+        };
+        (a.iter().map(|&p| far(t.apply(p))).sum::<f64>() / a.len().max(1) as f64).sqrt()
+    }
+
     /// Where a copy is, for the orbit: the centre of its sampling (a similarity carries
     /// it as it carries the copy).
     fn z(&self, i: usize) -> Point {
@@ -460,6 +481,33 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
         out.reason = Some(why.into());
     }
     Some((out, parts))
+}
+
+/// `points` averaged over five along the path (fewer at an open path's ends; round a
+/// closed loop, across its closing).
+fn smoothed(points: &[Point]) -> Vec<Point> {
+    let n = points.len();
+    let closed = crate::vector::frechet::closed_loop(points);
+    // (A closed loop's last point repeats its first.)
+    let m = if closed { n - 1 } else { n };
+    (0..n)
+        .map(|i| {
+            let (mut sum, mut count) = (Vec2::ZERO, 0.0);
+            for k in -2i64..=2 {
+                let at = i as i64 + k;
+                let at = if closed {
+                    at.rem_euclid(m as i64)
+                } else if (0..n as i64).contains(&at) {
+                    at
+                } else {
+                    continue;
+                };
+                sum += points[at as usize].to_vec2();
+                count += 1.0;
+            }
+            (sum / count).to_point()
+        })
+        .collect()
 }
 
 #[cfg(test)]

@@ -1,0 +1,53 @@
+//! Ghosts when every point of a stroke shakes (a mouse's jaggies, a tremor): each point
+//! moved at random by `p` of the step on top of the families' own wobble (1%), seeds
+//! 1-10, every call from three copies on. `cargo run --release --example shaky_points`
+//! (`FAMILY=spiral` for another family of `vector::sequences`).
+use patternsynth::rng::Rng;
+use patternsynth::vector::sequences::{drawn_by, HandTurn};
+use patternsynth::vector::{suggest_strokes, Stroke, SuggestOptions};
+
+fn main() {
+    let only = std::env::var("FAMILY").unwrap_or_else(|_| "leaves on an arc".into());
+    for p in [0.0, 0.01, 0.02, 0.03, 0.05] {
+        let (mut calls, mut with, mut shown, mut wrong) = (0, 0, 0, 0);
+        let mut reasons = std::collections::BTreeMap::<String, usize>::new();
+        for seed in 1..=10 {
+            let q = drawn_by(0.01, HandTurn::STEADY, seed).into_iter().find(|q| q.name == only).unwrap();
+            let mut rng = Rng::new(seed + 100);
+            let strokes: Vec<Stroke> = q
+                .strokes
+                .iter()
+                .map(|s| {
+                    let mut t = s.clone();
+                    for pt in &mut t.points {
+                        pt[0] += rng.normal() * p * q.step;
+                        pt[1] += rng.normal() * p * q.step;
+                    }
+                    t
+                })
+                .collect();
+            let region = Some([q.canvas.x0, q.canvas.y0, q.canvas.width(), q.canvas.height()]);
+            for n in 3 * q.parts..strokes.len() {
+                let s = suggest_strokes(&strokes[..n], &SuggestOptions { region, ..Default::default() }).unwrap();
+                calls += 1;
+                with += usize::from(!s.strokes.is_empty());
+                shown += s.strokes.len();
+                for g in &s.strokes {
+                    let c = g.reference_point();
+                    let m = q.strokes[n..]
+                        .iter()
+                        .chain(q.beyond.iter().map(|b| &b.0))
+                        .map(|t| t.reference_point().distance(c))
+                        .fold(f64::INFINITY, f64::min);
+                    wrong += usize::from(m > 0.3 * q.step);
+                }
+                if s.strokes.is_empty() {
+                    *reasons.entry(s.reason.unwrap_or_default().chars().take(40).collect()).or_default() += 1;
+                }
+            }
+        }
+        println!(
+            "points shaken {p}: {with} of {calls} calls with ghosts, {shown} shown, {wrong} wrong; none: {reasons:?}"
+        );
+    }
+}
