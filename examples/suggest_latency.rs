@@ -1,6 +1,7 @@
 //! Autocomplete latency natively, on the drawings of bench/suggest.mjs (rings of eight
-//! petals, the latest three petals in; hatching along a wide arc), for profiling:
-//! `cargo run --release --example suggest_latency [rings|hatching] [strokes] [calls]`.
+//! petals, the latest three petals in; hatching along a wide arc), and rings of six to
+//! nine petals each turned a little by hand (`varied`), for profiling:
+//! `cargo run --release --example suggest_latency [rings|varied|hatching] [strokes] [calls]`.
 //! Each call is cold unless `WARM` is set (then the drawing grows a stroke a call).
 use patternsynth::vector::{suggest_strokes, Stroke, SuggestOptions};
 use std::f64::consts::PI;
@@ -18,13 +19,15 @@ fn main() {
     };
     let mut make = |shift: f64| -> Vec<Stroke> {
         let mut out = Vec::new();
-        if kind == "rings" {
+        if kind == "rings" || kind == "varied" {
             let mut r = 0;
             'rings: loop {
                 let (cx, cy) = (60.0 + 120.0 * (r % 10) as f64 + shift, 60.0 + 120.0 * (r / 10) as f64);
-                let petals = if out.len() + 8 <= n - 3 { 8 } else { 3.min(n - out.len()) };
+                let count = if kind == "varied" { 6 + r % 4 } else { 8 };
+                let petals = if out.len() + count <= n - 3 { count } else { 3.min(n - out.len()) };
                 for k in 0..petals {
-                    let theta = k as f64 * PI / 4.0;
+                    let hand = if kind == "varied" { jit() * 0.05 } else { 0.0 };
+                    let theta = k as f64 * 2.0 * PI / count as f64 + hand;
                     let pts = (0..=20)
                         .map(|j| {
                             let t = j as f64 / 20.0 * 2.0 * PI;
@@ -37,7 +40,7 @@ fn main() {
                         .collect();
                     out.push(Stroke::new(pts, 2.0, None));
                 }
-                if petals < 8 {
+                if petals < count {
                     break 'rings;
                 }
                 r += 1;

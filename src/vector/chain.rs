@@ -192,7 +192,31 @@ pub fn find(strokes: &[Stroke]) -> Option<Chain> {
     let key = |r: &Vec<usize>| (r.iter().any(|&k| !dot(k)), r.len());
     let chain = runs.iter().max_by(|x, y| key(x).cmp(&key(y)).then(extent(x).total_cmp(&extent(y))))?.clone();
     // Runs beside it, a motif's other strokes (see `Chain::companions`).
-    let companions = companions(&chain, &runs);
+    let mut companions = companions(&chain, &runs);
+    // (And strokes of one shape in no run that the step carries onto one another in
+    // whole numbers of steps: the veins of the first and third petals, the second drawn
+    // bare, left four petals of six bare in every rosette.)
+    for g in (0..n).filter(|&k| groups[k] == k) {
+        let loose: Vec<usize> = (0..n)
+            .filter(|&k| groups[k] == g && !chain.contains(&k) && !companions.iter().flatten().any(|&c| c == k))
+            .collect();
+        if loose.len() < 2 {
+            continue;
+        }
+        let beside = self::companions(&chain, std::slice::from_ref(&loose));
+        let placed: Vec<(i64, usize)> =
+            beside.iter().enumerate().flat_map(|(i, c)| c.iter().map(move |&k| (i as i64, k))).collect();
+        let carried = placed.windows(2).all(|w| {
+            let ((i, a), (j, b)) = (w[0], w[1]);
+            t.power(j - i).is_some_and(|tk| tk.apply(centre[a]).distance(centre[b]) <= FOLLOW * d)
+        });
+        if placed.len() == loose.len() && carried {
+            for (c, more) in companions.iter_mut().zip(beside) {
+                c.extend(more);
+                c.sort_unstable();
+            }
+        }
+    }
     let covered = chain.len() + companions.iter().map(Vec::len).sum::<usize>();
     let grouped =
         |k: usize| groups[k] == groups[chain[0]] || companions.iter().flatten().any(|&c| groups[c] == groups[k]);
