@@ -62,6 +62,17 @@ function rings(n) {
   }
   return out;
 }
+// Rings of six to nine petals, each petal turned a little by hand (about 3 degrees).
+function varied(n) {
+  const out = [];
+  for (let r = 0; out.length < n; r++) {
+    const cx = 60 + 120 * (r % 10), cy = 60 + 120 * Math.floor(r / 10), count = 6 + (r % 4);
+    const petals = out.length + count <= n - 3 ? count : Math.min(3, n - out.length);
+    for (let k = 0; k < petals; k++) out.push(petal(cx, cy, (k * 2 * Math.PI) / count + jit() * 0.05, 50));
+    if (petals < count) break;
+  }
+  return out;
+}
 function hatching(n) {
   const out = [];
   for (let k = 0; k < n; k++) {
@@ -102,7 +113,13 @@ function leaves(n) {
 console.log('\n| drawing | strokes | proposals | cold: median ms | stroke by stroke: median ms | slowest ms |');
 console.log('|---|---:|---:|---:|---:|---:|');
 const region = { region: [0, 0, 1500, 1500] };
-for (const [name, make] of [['rings of petals', rings], ['turning hatching', hatching], ['rosettes of three-stroke leaves', leaves]]) {
+const drawings = [
+  ['rings of petals', rings],
+  ['rings of 6-9 petals turned by hand', varied],
+  ['turning hatching', hatching],
+  ['rosettes of three-stroke leaves', leaves],
+];
+for (const [name, make] of drawings) {
   for (const n of [60, 200]) {
     const cold = [];
     let count = 0;
