@@ -705,3 +705,32 @@ fn points_that_shake_still_get_ghosts() {
     assert!(with as f64 >= 0.75 * calls as f64, "{with} of {calls} calls with ghosts");
     assert!(wrong as f64 <= 0.05 * shown as f64, "{wrong} wrong of {shown} shown");
 }
+
+/// Stalked leaves whose first copy was drawn without its stalk: a stalk is a leading
+/// part (it touches the leaf drawn after it), so no stalk is proposed past the last leaf
+/// (`trailing` took the stalks for parts drawn after their leaves, as a leaf's dot is,
+/// and proposed one on its own).
+#[test]
+fn a_first_copy_without_its_stalk_gets_no_stray_stalk() {
+    let mut checked = 0;
+    for seed in 1..=3 {
+        let all = patternsynth::vector::sequences::composite(0.01, HandTurn::STEADY, seed);
+        let q = all.iter().find(|q| q.name == "stalked leaves on a Bézier arch").expect("the family");
+        let opts = SuggestOptions { region: Some([0.0, 0.0, 800.0, 800.0]), ..SuggestOptions::default() };
+        for copies in 3..=5 {
+            let strokes = &q.strokes[1..2 * copies];
+            let s = suggest_strokes(strokes, &opts).unwrap();
+            let closed = |g: &Stroke| g.points.len() > 13;
+            let (leaves, stalks): (Vec<&Stroke>, Vec<&Stroke>) = s.strokes.iter().partition(|g| closed(g));
+            // (Each stalk ends where a proposed leaf begins.)
+            for stalk in &stalks {
+                let [x, y] = stalk.points[stalk.points.len() - 1];
+                let end = kurbo::Point::new(x, y);
+                let held = leaves.iter().any(|l| kurbo::Point::new(l.points[0][0], l.points[0][1]).distance(end) < 6.0);
+                assert!(held, "seed {seed}, {copies} copies: a stalk ending at {end:?} holds no proposed leaf");
+            }
+            checked += stalks.len();
+        }
+    }
+    assert!(checked >= 5, "{checked} stalks proposed");
+}

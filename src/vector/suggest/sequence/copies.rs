@@ -114,7 +114,10 @@ pub(super) fn companions(d: &Drawing, run: &[usize], h: usize, step: f64, turn: 
 /// followed onto that copy's), lands on no drawn stroke of its shape, and carried as the
 /// copy before's, lands on one. (Drawn before the stroke followed, a stalk and then its
 /// leaf, it lands on one both ways; so too where the run's first copy is not the first
-/// drawn: taken as drawn before, which proposes no part more.)
+/// drawn: taken as drawn before, which proposes no part more.) And each part lies nearer
+/// the copy before than the latest: a dot at the tip of the leaf before, not a stalk
+/// touching the leaf after it, whose first copy was drawn bare (the places alone cannot
+/// tell the two apart: a stray stalk was proposed past the last leaf).
 pub(super) fn trailing(d: &Drawing, run: &[usize], parts: &[usize], turn: &dyn Fn(i64) -> f64, step: f64) -> bool {
     let (Some(&last), true) = (run.last(), run.len() >= 2) else { return false };
     let lands = |c: usize, t: usize| {
@@ -123,5 +126,12 @@ pub(super) fn trailing(d: &Drawing, run: &[usize], parts: &[usize], turn: &dyn F
         (0..d.strokes.len())
             .any(|s| s != c && d.strokes[s].reference_point().distance(p) <= PLACE * step && d.alike(s, c))
     };
-    !parts.is_empty() && parts.iter().all(|&c| !lands(c, 0) && lands(c, 1))
+    let before = run[run.len() - 2];
+    let gap = |a: usize, b: usize| match (&d.sampled[a], &d.sampled[b]) {
+        (Some(p), Some(q)) => {
+            p.iter().flat_map(|u| q.iter().map(move |v| u.distance(*v))).fold(f64::INFINITY, f64::min)
+        }
+        _ => f64::INFINITY,
+    };
+    !parts.is_empty() && parts.iter().all(|&c| !lands(c, 0) && lands(c, 1) && gap(c, before) < gap(c, last))
 }
