@@ -13,7 +13,10 @@ fn main() {
         for drawn in [3usize, 4] {
             let (mut right, mut none, mut open, mut wrong) = (0, 0, 0, 0);
             for seed in 1..=10 {
-                for q in drawn_by(wobble, HandTurn(turn.to_radians()), seed).into_iter().filter(|q| q.name.starts_with("ring")) {
+                for q in drawn_by(wobble, HandTurn(turn.to_radians()), seed)
+                    .into_iter()
+                    .filter(|q| q.name.starts_with("ring"))
+                {
                     let n: usize = q.name.trim_start_matches("ring of ").parse().unwrap();
                     let found = find(&q.strokes[..drawn]).map(|c| c.closes);
                     if std::env::var("VERBOSE").is_ok() && found != Some(Some(n)) {

@@ -41,6 +41,9 @@ fn main() {
                         ..SuggestOptions::default()
                     };
                     let s = suggest_strokes(&q.strokes[..n], &opts).unwrap();
+                    if let Ok(path) = std::env::var("DUMP_JSON") {
+                        std::fs::write(path, serde_json::to_string(&q.strokes[..n]).unwrap()).unwrap();
+                    }
                     let misses: Vec<f64> = s
                         .strokes
                         .iter()

@@ -86,22 +86,42 @@ pub(super) fn begin(d: &Drawing, chain: &[usize], at: usize, stride: usize) -> O
     Some(Begun { stride, one, two, step, local, disagree: agree / one.a.hypot().max(1e-9) })
 }
 
+/// A companion carried on by the step between two copies lands within this share of the
+/// step of its copy's (looser than `PLACE`: a part at a petal's tip, a step behind, is
+/// carried less closely than the petals the step was read from).
+const COMPANION: f64 = 0.3;
+
 /// The strokes of the copy that ends with `run[h]` drawn since the copy before it
 /// (`run[h - 1]`) that repeat one of the copy before that, carried on by the step from
-/// that copy to this one (the one turning nearest `turn`) within `PLACE` of the step: a
-/// motif's other strokes (a petal's second arc, a leaf's midrib, its stalk), in drawing
-/// order.
-pub(super) fn companions(d: &Drawing, run: &[usize], h: usize, step: f64, turn: f64) -> Vec<usize> {
+/// that copy to this one within `COMPANION` of the step: a motif's other strokes (a
+/// petal's second arc, a leaf's midrib, its stalk, its dot), in drawing order. The step
+/// is the pair's own (the one turning nearest `a`), the pair's before it, or `a` itself
+/// (the orbit's turn from one copy to the next, read from every copy) about the pair's
+/// places: a person's hand turns and spaces each petal a few degrees off, and one pair's
+/// step carried a pen-tapped dot at a petal's tip off its copy's (three petals of
+/// eight, then of seven, were proposed without theirs).
+pub(super) fn companions(d: &Drawing, run: &[usize], h: usize, step: f64, a: Vec2) -> Vec<usize> {
     let (Some(&before), Some(&prev)) = (h.checked_sub(2).map(|x| &run[x]), h.checked_sub(1).map(|x| &run[x])) else {
         return Vec::new();
     };
     let last = run[h];
-    let Some((carry, _)) = d.near(prev, last, turn) else { return Vec::new() };
+    let orbit = Similarity { a, b: d.z(last).to_vec2() - crate::vector::similarity::mul(a, d.z(prev).to_vec2()) };
+    // (A part drawn after its copy, a leaf's dot, belongs to the copy before: the step
+    // from the copy before that carries it, where the hand spaced its copies unevenly.)
+    let carries: Vec<Similarity> = [d.near(prev, last, a.atan2()), d.near(before, prev, a.atan2())]
+        .into_iter()
+        .flatten()
+        .map(|(t, _)| t)
+        .chain([orbit])
+        .collect();
     let centre = |i: usize| d.strokes[i].reference_point();
     (prev + 1..last)
         .filter(|&c| {
             (before + 1..prev).any(|o| {
-                d.alike(o, c) && carry.carry(&d.strokes[o]).reference_point().distance(centre(c)) <= PLACE * step
+                d.alike(o, c)
+                    && carries
+                        .iter()
+                        .any(|t| t.carry(&d.strokes[o]).reference_point().distance(centre(c)) <= COMPANION * step)
             })
         })
         .collect()

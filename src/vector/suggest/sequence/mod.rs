@@ -354,7 +354,7 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
     // The latest copy's other strokes, carried on with it; a ghost is on a drawn stroke
     // within half the step or half the nearest two of the copy's strokes lie apart.
     let h = run.iter().position(|&i| i == last)?;
-    let parts = companions(d, &run, h, step, orbit.a.atan2());
+    let parts = companions(d, &run, h, step, orbit.turn(h as i64 - 1, h as i64));
     // (A copy's strokes may share a centre, a leaf's two halves and its midrib: a ghost
     // is on a drawn stroke that it carries onto about unturned, unscaled and unmoved.)
     let drawn = |g: &Stroke, here: f64| {

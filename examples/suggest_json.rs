@@ -1,0 +1,16 @@
+//! Autocomplete on a drawing saved as JSON (an array of strokes as the package takes
+//! them): `cargo run --release --example suggest_json drawing.json [x y w h]`.
+use patternsynth::vector::{suggest_strokes, Stroke, SuggestOptions};
+
+fn main() {
+    let args: Vec<String> = std::env::args().collect();
+    let strokes: Vec<Stroke> = serde_json::from_str(&std::fs::read_to_string(&args[1]).unwrap()).unwrap();
+    let r: Vec<f64> = args[2..].iter().filter_map(|a| a.parse().ok()).collect();
+    let region = (r.len() == 4).then(|| [r[0], r[1], r[2], r[3]]);
+    let s = suggest_strokes(&strokes, &SuggestOptions { region, ..Default::default() }).unwrap();
+    for (g, src) in s.strokes.iter().zip(&s.sources) {
+        let c = g.reference_point();
+        println!("ghost of {src} at ({:.1}, {:.1}), {} points", c.x, c.y, g.points.len());
+    }
+    println!("reason: {:?}", s.reason);
+}
