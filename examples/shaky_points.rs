@@ -2,9 +2,8 @@
 //! moved at random by `p` of the step on top of the families' own wobble (1%), seeds
 //! 1-10, every call from three copies on. `cargo run --release --example shaky_points`
 //! (`FAMILY=spiral` for another family of `vector::sequences`).
-use patternsynth::rng::Rng;
-use patternsynth::vector::sequences::{drawn_by, HandTurn};
-use patternsynth::vector::{suggest_strokes, Stroke, SuggestOptions};
+use patternsynth::vector::sequences::{drawn_by, shaken, HandTurn};
+use patternsynth::vector::{suggest_strokes, SuggestOptions};
 
 fn main() {
     let only = std::env::var("FAMILY").unwrap_or_else(|_| "leaves on an arc".into());
@@ -13,19 +12,7 @@ fn main() {
         let mut reasons = std::collections::BTreeMap::<String, usize>::new();
         for seed in 1..=10 {
             let q = drawn_by(0.01, HandTurn::STEADY, seed).into_iter().find(|q| q.name == only).unwrap();
-            let mut rng = Rng::new(seed + 100);
-            let strokes: Vec<Stroke> = q
-                .strokes
-                .iter()
-                .map(|s| {
-                    let mut t = s.clone();
-                    for pt in &mut t.points {
-                        pt[0] += rng.normal() * p * q.step;
-                        pt[1] += rng.normal() * p * q.step;
-                    }
-                    t
-                })
-                .collect();
+            let strokes = shaken(&q.strokes, p * q.step, seed + 100);
             let region = Some([q.canvas.x0, q.canvas.y0, q.canvas.width(), q.canvas.height()]);
             for n in 3 * q.parts..strokes.len() {
                 let s = suggest_strokes(&strokes[..n], &SuggestOptions { region, ..Default::default() }).unwrap();

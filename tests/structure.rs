@@ -506,23 +506,7 @@ fn a_curve_past_max_elements_is_an_error() {
 /// per petal, and the leaves continued along an arc hold a dot per leaf.
 #[test]
 fn pen_tapped_dots_go_with_their_copies() {
-    let taps = |strokes: &[Stroke], seed: u64| -> Vec<Stroke> {
-        let mut rng = patternsynth::rng::Rng::new(seed);
-        strokes
-            .iter()
-            .map(|s| {
-                if !s.is_dot() {
-                    return s.clone();
-                }
-                let c = s.reference_point();
-                let mut tap = s.clone();
-                tap.points = (0..3 + rng.below(4))
-                    .map(|_| [c.x + 2.0 * rng.next_f64() - 1.0, c.y + 2.0 * rng.next_f64() - 1.0])
-                    .collect();
-                tap
-            })
-            .collect()
-    };
+    let taps = patternsynth::vector::sequences::pen_taps;
     let hand = patternsynth::vector::sequences::HandTurn::STEADY;
     for seed in 1..=3 {
         let all = patternsynth::vector::sequences::composite(0.01, hand, seed);

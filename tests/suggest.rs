@@ -601,22 +601,7 @@ fn pen_taps_go_with_their_leaves() {
         let all = patternsynth::vector::sequences::composite(0.01, hand, seed);
         for name in ["leaves with a dot on an arc", "ring of 8 petals with a dot"] {
             let q = all.iter().find(|q| q.name == name).expect("the family");
-            let mut rng = patternsynth::rng::Rng::new(seed);
-            let strokes: Vec<Stroke> = q
-                .strokes
-                .iter()
-                .map(|s| {
-                    if !s.is_dot() {
-                        return s.clone();
-                    }
-                    let c = s.reference_point();
-                    let mut tap = s.clone();
-                    tap.points = (0..3 + rng.below(4))
-                        .map(|_| [c.x + 2.0 * rng.next_f64() - 1.0, c.y + 2.0 * rng.next_f64() - 1.0])
-                        .collect();
-                    tap
-                })
-                .collect();
+            let strokes = patternsynth::vector::sequences::pen_taps(&q.strokes, seed);
             let opts = SuggestOptions { region: Some([0.0, 0.0, 600.0, 600.0]), ..SuggestOptions::default() };
             for copies in 3..=5 {
                 let s = suggest_strokes(&strokes[..2 * copies], &opts).unwrap();
@@ -677,19 +662,7 @@ fn points_that_shake_still_get_ghosts() {
     let (mut calls, mut with, mut shown, mut wrong) = (0, 0, 0, 0);
     for seed in 1..=10 {
         let q = drawn_by(0.01, HandTurn::STEADY, seed).into_iter().find(|q| q.name == "leaves on an arc").unwrap();
-        let mut rng = patternsynth::rng::Rng::new(seed + 100);
-        let strokes: Vec<Stroke> = q
-            .strokes
-            .iter()
-            .map(|s| {
-                let mut t = s.clone();
-                for p in &mut t.points {
-                    p[0] += rng.normal() * 0.03 * q.step;
-                    p[1] += rng.normal() * 0.03 * q.step;
-                }
-                t
-            })
-            .collect();
+        let strokes = patternsynth::vector::sequences::shaken(&q.strokes, 0.03 * q.step, seed + 100);
         let region = Some([q.canvas.x0, q.canvas.y0, q.canvas.width(), q.canvas.height()]);
         for n in 3..strokes.len() {
             let s = suggest_strokes(&strokes[..n], &SuggestOptions { region, ..Default::default() }).unwrap();

@@ -91,6 +91,43 @@ impl HandTurn {
     }
 }
 
+/// `strokes` with every dot tapped with the pen instead: three to six points within two
+/// pixels of one another, as a stylus or a mouse leaves them (a shape of noise).
+pub fn pen_taps(strokes: &[Stroke], seed: u64) -> Vec<Stroke> {
+    let mut rng = Rng::new(seed);
+    strokes
+        .iter()
+        .map(|s| {
+            if !s.is_dot() {
+                return s.clone();
+            }
+            let c = s.reference_point();
+            let mut tap = s.clone();
+            tap.points = (0..3 + rng.below(4))
+                .map(|_| [c.x + 2.0 * rng.next_f64() - 1.0, c.y + 2.0 * rng.next_f64() - 1.0])
+                .collect();
+            tap
+        })
+        .collect()
+}
+
+/// `strokes` with every point moved at random by `by` (a standard deviation, each
+/// coordinate): a mouse's jaggies, a tremor.
+pub fn shaken(strokes: &[Stroke], by: f64, seed: u64) -> Vec<Stroke> {
+    let mut rng = Rng::new(seed);
+    strokes
+        .iter()
+        .map(|s| {
+            let mut t = s.clone();
+            for p in &mut t.points {
+                p[0] += rng.normal() * by;
+                p[1] += rng.normal() * by;
+            }
+            t
+        })
+        .collect()
+}
+
 /// A loop `len` long and `len / 3` wide, from `at` along `theta` (a petal, a leaf).
 fn leaf(at: Point, theta: f64, len: f64, rng: &mut Rng, noise: f64) -> Stroke {
     let (c, s) = (theta.cos(), theta.sin());
