@@ -190,7 +190,8 @@ export interface StrokeResult {
   /** The periods the output repeats on (found, fitted or given; a ring's rosettes are
    *  laid on a hexagonal lattice); null when grown freely or along a curve. */
   periods: Periods | null;
-  /** What the drawing was repeated on: 'lattice' (translations), 'ring' (copies turned
+  /** What the drawing was repeated on: 'lattice' (translations: a grid, or a row, as
+   *  three hatching lines grow into one), 'ring' (copies turned
    *  round a centre: completed, and repeated as rosettes where small beside the output),
    *  'curve' (continued along an arc), 'sequence' (each copy turned and scaled from the
    *  last: a spiral), 'irregular' (no repeat: a mosaic of the drawing, or a mesh). */

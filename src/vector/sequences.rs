@@ -128,8 +128,9 @@ pub fn shaken(strokes: &[Stroke], by: f64, seed: u64) -> Vec<Stroke> {
         .collect()
 }
 
-/// A loop `len` long and `len / 3` wide, from `at` along `theta` (a petal, a leaf).
-fn leaf(at: Point, theta: f64, len: f64, rng: &mut Rng, noise: f64) -> Stroke {
+/// A loop `len` long and `len / 3` wide, from `at` along `theta` (a petal, a leaf), each
+/// point off by `noise` (a standard deviation).
+pub fn leaf(at: Point, theta: f64, len: f64, rng: &mut Rng, noise: f64) -> Stroke {
     let (c, s) = (theta.cos(), theta.sin());
     let pts = (0..=24)
         .map(|k| {

@@ -7,11 +7,12 @@ use super::grow::{find_periods, fit_lattice, grow, Element, GrowOptions, Grown};
 use super::mesh::Mesh;
 use super::motif::{self, Motifs};
 use super::period::Periods;
+use super::reference::Spread;
 use super::stroke::Stroke;
 use super::svg::to_svg;
 use crate::error::{invalid, Error, Result};
 use crate::progress::{Progress, Throttle};
-use kurbo::Vec2;
+use kurbo::{Point, Vec2};
 use serde::{Deserialize, Serialize};
 
 /// Options of `synthesize_strokes`; every tolerance left out is proposed from the data.
@@ -261,22 +262,22 @@ pub fn synthesize_strokes(
         return along_chain(strokes, classification, chain, opts, max_elements, progress).map_err(explain);
     }
     let meshed = joined.is_some();
-    let (out, classes, sources, stats, periods) = if let Some(j) = joined {
+    // A row (hatching along a straight contour) grows along its one period: a lattice
+    // too, though it has no second period to report. Three strokes are too few to call
+    // a row (three petals of a ring lie about as evenly), but what grew from them is
+    // not: three hatching lines grown into a row of 89 were called irregular.
+    let (out, classes, sources, stats, periods, row) = if let Some(j) = joined {
         let classes = j.sources.iter().map(|&s| classification.classes[s as usize]).collect();
-        (j.strokes, classes, j.sources, j.grown.stats, j.grown.periods)
+        (j.strokes, classes, j.sources, j.grown.stats, j.grown.periods, false)
     } else {
         let Grown { placed, stats, orbit, periods } = grow(&elements, &grow_opts, &mut throttle).map_err(explain)?;
+        let row = straight_row(&elements.iter().map(|e| e.pos).collect::<Vec<_>>())
+            || straight_row(&placed.iter().map(|p| p.pos).collect::<Vec<_>>());
         let (out, classes, sources) =
             motifs.dress(strokes, &classification.classes, &placed, &orbit, opts.variation.then_some(opts.seed), area);
-        (out, classes, sources, stats, periods)
+        (out, classes, sources, stats, periods, row)
     };
-    // A row (hatching along a straight contour) grows along its one period: a lattice
-    // too, though it has no second period to report.
-    let structure = if !meshed && (periods.is_some() || straight_row(&elements)) {
-        Structure::Lattice
-    } else {
-        Structure::Irregular
-    };
+    let structure = if !meshed && (periods.is_some() || row) { Structure::Lattice } else { Structure::Irregular };
     Throttle::new(progress).tick(1.0)?;
     Ok(StrokeResult {
         periods: periods.map(|(a, b)| [[a.x, a.y], [b.x, b.y]]),
@@ -319,37 +320,54 @@ fn lattice_of(elems: &[Element]) -> Option<Periods> {
     find_periods(elems).ok().flatten().or_else(|| fit_lattice(elems).ok().flatten()?.periods(elems))
 }
 
-/// Whether `elems` make one straight row of four or more (three petals of a ring lie
-/// about as evenly): evenly spaced along their principal axis
+/// Whether elements at `pos` make one straight row of four or more (three petals of a
+/// ring lie about as evenly): evenly spaced along their principal axis
 /// (every gap within half the median gap of it) and off its line by at most a quarter
 /// of that gap. (A lattice fit reads a row into leaves along an S, which growth turns
 /// into a scatter.)
-fn straight_row(elems: &[Element]) -> bool {
-    let n = elems.len();
+fn straight_row(pos: &[Point]) -> bool {
+    let n = pos.len();
     if n < 4 {
         return false;
     }
-    let mean = elems.iter().fold(Vec2::ZERO, |s, e| s + e.pos.to_vec2()) / n as f64;
+    let mean = pos.iter().fold(Vec2::ZERO, |s, p| s + p.to_vec2()) / n as f64;
     let (mut sxx, mut sxy, mut syy) = (0.0, 0.0, 0.0);
-    for e in elems {
-        let d = e.pos.to_vec2() - mean;
+    for p in pos {
+        let d = p.to_vec2() - mean;
         (sxx, sxy, syy) = (sxx + d.x * d.x, sxy + d.x * d.y, syy + d.y * d.y);
     }
     // The principal axis: half the angle of the covariance's (2 sxy, sxx - syy).
     let theta = 0.5 * (2.0 * sxy).atan2(sxx - syy);
     let axis = Vec2::new(theta.cos(), theta.sin());
-    let mut along: Vec<f64> = elems.iter().map(|e| (e.pos.to_vec2() - mean).dot(axis)).collect();
+    let mut along: Vec<f64> = pos.iter().map(|p| (p.to_vec2() - mean).dot(axis)).collect();
     crate::order::floats(&mut along);
     let mut gaps: Vec<f64> = along.windows(2).map(|w| w[1] - w[0]).collect();
     let gap = median(&mut gaps.clone());
     gaps.retain(|g| (g - gap).abs() > 0.5 * gap);
-    gap > 0.0 && gaps.is_empty() && elems.iter().all(|e| (e.pos.to_vec2() - mean).cross(axis).abs() <= 0.25 * gap)
+    gap > 0.0 && gaps.is_empty() && pos.iter().all(|p| (p.to_vec2() - mean).cross(axis).abs() <= 0.25 * gap)
 }
 
 /// Whether the motif elements repeat by translation: only a drawing that does not is
 /// searched for a chain (a rosette aside).
+///
+/// A lattice whose shorter period is well under the spacing of the drawn copies (under
+/// `CHANCE` of their median nearest neighbour) is a chance one: any two sites of a
+/// lattice are at least its shorter period apart, so a person who drew it would have
+/// drawn some copies that close. Five leaves on a tight arc fit such a lattice (periods
+/// of 26 and 61 beside a spacing of 62, each step a different lattice vector), and
+/// growing it laid 654 overlapping leaves where the arc should have continued.
 fn translates(elements: &[Element]) -> bool {
-    elements.len() > chain::MAX_STROKES || (elements.len() >= 2 && lattice_of(elements).is_some())
+    const CHANCE: f64 = 0.75;
+    if elements.len() > chain::MAX_STROKES {
+        return true;
+    }
+    let Some(p) = (elements.len() >= 2).then(|| lattice_of(elements)).flatten() else {
+        return false;
+    };
+    match Spread::new(elements) {
+        Ok(spread) => p.a.hypot().min(p.b.hypot()) >= CHANCE * spread.spacing,
+        Err(_) => true,
+    }
 }
 
 /// The drawing repeated along its `chain`, centred in the output. A ring small beside

@@ -1,0 +1,17 @@
+//! Synthesis of a drawing saved as JSON (an array of strokes as the package takes them):
+//! `cargo run --release --example synth_json drawing.json [width height]`; prints the
+//! structure found and the output's size, and writes out/synth_json.svg.
+use patternsynth::vector::{synthesize_strokes, Stroke, StrokeOptions};
+use patternsynth::Silent;
+
+fn main() {
+    let args: Vec<String> = std::env::args().collect();
+    let strokes: Vec<Stroke> = serde_json::from_str(&std::fs::read_to_string(&args[1]).unwrap()).unwrap();
+    let size: Vec<f64> = args[2..].iter().filter_map(|a| a.parse().ok()).collect();
+    let (width, height) = if size.len() == 2 { (size[0], size[1]) } else { (800.0, 600.0) };
+    let opts = StrokeOptions { width, height, ..Default::default() };
+    let r = synthesize_strokes(&strokes, &opts, &mut Silent).unwrap();
+    println!("{:?}: {} strokes, periods {:?}", r.structure, r.strokes.len(), r.periods);
+    std::fs::create_dir_all("out").unwrap();
+    std::fs::write("out/synth_json.svg", r.svg.replace("stroke=\"none\"", "stroke=\"black\"")).unwrap();
+}
