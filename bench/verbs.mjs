@@ -28,11 +28,15 @@ for (const name of ['gravel', 'brick', 'grass']) {
   const keepOut = make(ex.width, ex.height, (x) => (x < ex.width / 4 ? [255, 255, 255, 255] : [0, 0, 0, 255]));
   const ramp = make(ex.width, ex.height, (x) => { const v = Math.round((255 * x) / ex.width); return [v, v, v, 255]; });
   const disc = make(side, side, (x, y) => { const v = Math.hypot(x - side / 2, y - side / 2) < side / 3 ? 255 : 0; return [v, v, v, 255]; });
+  // A photograph whose side is not 32 x 2^k (224 at 256) has a different coarsest level.
+  const c = Math.round((side * 7) / 8);
+  const cropped = make(c, c, (x, y) => Array.from(photo.data.subarray(4 * (y * side + x), 4 * (y * side + x) + 4)));
   const half = (y0) => make(ex.width, ex.height / 2, (x, y) => Array.from(ex.data.subarray(4 * ((y0 + y) * ex.width + x), 4 * ((y0 + y) * ex.width + x) + 4)));
   const verbs = {
     'plain synthesis': () => ps.synthesizeTexture(ex, { width: side, height: side }),
     // Inpainting and mending read the photograph itself, a larger exemplar.
     'plain synthesis from the photograph': () => ps.synthesizeTexture(photo, { width: side, height: side }),
+    [`plain synthesis from a ${c}² crop`]: () => ps.synthesizeTexture(cropped, { width: side, height: side }),
     'inpaint (13% hole)': () => ps.inpaintTexture(photo, hole),
     'mend (band 0.25)': () => ps.seamlessTile(photo, { method: 'mend' }),
     'sample mask (a quarter out)': () => ps.synthesizeTexture(ex, { width: side, height: side, sampleMask: keepOut }),

@@ -1,13 +1,18 @@
-//! Tile quality by method (issue 25): for each fixture photograph and seeds 1-3, the
-//! seamless tile of E-TFMCM as the paper makes it, E-TFMCM refined by toroidal
-//! synthesis (the default), and toroidal synthesis alone: patch energy against the
-//! photograph, colour distance,
-//! repetition and seam score, means over the seeds, as a Markdown table; each seed-1
-//! tile saved repeated 2 x 2 in out/tiles/ to look at.
+//! Tile quality by method (issue 25): for each fixture photograph (or PNG given) and
+//! seeds 1-3 (`SEEDS`), the seamless tile of E-TFMCM as the paper makes it, E-TFMCM
+//! refined by toroidal synthesis, and toroidal synthesis alone (the default): patch
+//! energy against the photograph, colour distance, repetition in windows of the
+//! exemplar's size (`energy::repetition_fair`) beside the exemplar's own, and seam
+//! score, means over the seeds, as a Markdown table; each seed-1 tile saved repeated
+//! 2 x 2 in out/tiles/ to look at. With `PEER` (the path of texture-synthesis 0.8.3's
+//! CLI) its `--tiling` tiles are made and measured alike, and a second table counts the
+//! exemplars where each method meets issue 25's aims against it; the peer gets the
+//! file as it is, so it runs only on square images of the tile's size (ours crop and
+//! scale). `METHOD=synthesis` and the like keep those of ours whose label starts so.
 //! `cargo run --release --example tile_quality [size] [fixture|all|path.png ...]`
 #[path = "support/textures.rs"]
 mod textures;
-use patternsynth::raster::energy::{colour_distance, patch_energy, repetition};
+use patternsynth::raster::energy::{colour_distance, patch_energy, repetition, repetition_fair};
 use patternsynth::raster::Image;
 use patternsynth::seamless::{seamless_tile, Method, SeamlessOptions};
 use patternsynth::Silent;
@@ -24,48 +29,119 @@ fn main() {
         _ => textures::named("all"),
     };
     std::fs::create_dir_all("out/tiles").unwrap();
+    // (SEEDS=n for seeds 1-n, default 3; METHOD=synthesis and the like for one method.)
+    let seeds: u64 = std::env::var("SEEDS").ok().and_then(|s| s.parse().ok()).unwrap_or(3);
+    let only = std::env::var("METHOD").ok();
     let methods: [(&str, Method, bool); 3] = [
         ("etfmcm (paper)", Method::Etfmcm, false),
         ("etfmcm refined", Method::Etfmcm, true),
         ("synthesis", Method::Synthesis, true),
     ];
+    // PEER=path of texture-synthesis 0.8.3's CLI: its `--tiling` tiles of the same
+    // exemplars and seeds, one thread, measured by the same code.
+    let peer = std::env::var("PEER").ok();
+    let labels: Vec<&str> = methods.iter().map(|m| m.0).chain(peer.as_ref().map(|_| PEER_LABEL)).collect();
     println!("| exemplar | method | energy | colour | repetition (exemplar) | seam |");
     println!("|---|---|---:|---:|---:|---:|");
+    // Per exemplar and method: energy, colour, repetition, the exemplar's own, seam.
+    let mut table: Vec<Vec<[f64; 5]>> = Vec::new();
     for name in &names {
-        // A fixture's name, or the path of any PNG or JPEG.
-        let img = if name.contains('/') {
-            patternsynth::raster::codec::decode_image(&std::fs::read(name).unwrap()).unwrap()
-        } else {
-            textures::rgba(name)
-        };
-        for (label, method, refine) in methods {
-            let (mut e, mut c, mut r, mut s, mut own) = (0.0, 0.0, 0.0, 0.0, 0.0);
-            for seed in 1..=3u64 {
-                let opts = SeamlessOptions { method, size, seed, refine, ..Default::default() };
-                let t = seamless_tile(&img, &opts, &mut Silent).unwrap();
-                let out = image(&t.image);
-                let ex = image(&img);
-                e += patch_energy(&out, &ex, 300, (0, out.height), 1);
-                c += colour_distance(&out, &ex);
-                r += repetition(&out, 24.min(out.width / 4), 1);
-                own += repetition(&ex, 24.min(ex.width / 4), 1);
-                s += t.seam_score;
+        let img = textures::rgba(name);
+        let ex = image(&img);
+        let stem = name.rsplit('/').next().unwrap_or(name).trim_end_matches(".png").to_string();
+        let mut row = Vec::new();
+        for (k, label) in labels.iter().enumerate() {
+            if k < methods.len() && only.as_deref().is_some_and(|o| !label.starts_with(o)) {
+                row.push([f64::NAN; 5]);
+                continue;
+            }
+            let side = size.unwrap_or(img.width);
+            if k == methods.len() && (img.width, img.height) != (side, side) {
+                eprintln!("{name}: not a square of the tile's size; the peer is left out");
+                row.push([f64::NAN; 5]);
+                continue;
+            }
+            let mut sum = [0.0; 5];
+            for seed in 1..=seeds {
+                let (tile, seam) = match methods.get(k) {
+                    Some(&(_, method, refine)) => {
+                        let opts = SeamlessOptions { method, size, seed, refine, ..Default::default() };
+                        let t = seamless_tile(&img, &opts, &mut Silent).unwrap();
+                        (t.image, t.seam_score)
+                    }
+                    None => peer_tile(peer.as_deref().unwrap(), name, &stem, img.width, seed),
+                };
+                let out = image(&tile);
+                sum[0] += patch_energy(&out, &ex, 300, (0, out.height), 1);
+                sum[1] += colour_distance(&out, &ex);
+                sum[2] += repetition_fair(&out, (ex.width, ex.height), 24.min(ex.width / 4), 8, 1);
+                sum[3] += repetition(&ex, 24.min(ex.width / 4), 1);
+                sum[4] += seam;
                 if seed == 1 {
-                    let stem = name.rsplit('/').next().unwrap_or(name).trim_end_matches(".png");
                     textures::save_repeated(
-                        &t.image,
-                        &format!("out/tiles/{stem}-{}.png", label.replace([' ', '(', ')'], "")),
+                        &tile,
+                        &format!("out/tiles/{stem}-{}.png", label.replace([' ', '(', ')', '-'], "")),
                     );
                 }
             }
-            println!(
-                "| {name} | {label} | {:.2} | {:.3} | {:.3} ({:.3}) | {:.2} |",
-                e / 3.0,
-                c / 3.0,
-                r / 3.0,
-                own / 3.0,
-                s / 3.0
-            );
+            let m = sum.map(|v| v / seeds as f64);
+            println!("| {name} | {label} | {:.2} | {:.3} | {:.3} ({:.3}) | {:.2} |", m[0], m[1], m[2], m[3], m[4]);
+            row.push(m);
         }
+        table.push(row);
     }
+    if peer.is_none() {
+        return;
+    }
+    // Against the peer, per method: how many exemplars meet each of issue 25's aims.
+    let p = labels.len() - 1;
+    println!("\n| method | energy <= peer's | <= 1.1x | median ratio | colour <= peer's | repetition >= own - 0.05 | seam 0.8-1.2 |");
+    println!("|---|---:|---:|---:|---:|---:|---:|");
+    for (k, label) in labels.iter().enumerate() {
+        let rows: Vec<(&[f64; 5], &[f64; 5])> =
+            table.iter().map(|r| (&r[k], &r[p])).filter(|(m, q)| !m[0].is_nan() && !q[0].is_nan()).collect();
+        let count = |f: &dyn Fn(&[f64; 5], &[f64; 5]) -> bool| rows.iter().filter(|(m, q)| f(m, q)).count();
+        let mut ratios: Vec<f64> = rows.iter().map(|(m, q)| m[0] / q[0]).collect();
+        ratios.sort_by(f64::total_cmp);
+        let n = rows.len();
+        println!(
+            "| {label} | {}/{n} | {}/{n} | {:.2} | {}/{n} | {}/{n} | {}/{n} |",
+            count(&|m, q| m[0] <= q[0]),
+            count(&|m, q| m[0] <= 1.1 * q[0]),
+            ratios.get(n / 2).copied().unwrap_or(f64::NAN),
+            count(&|m, q| m[1] <= q[1]),
+            count(&|m, _| m[2] >= m[3] - 0.05),
+            count(&|m, _| (0.8..=1.2).contains(&m[4])),
+        );
+    }
+}
+
+const PEER_LABEL: &str = "texture-synthesis --tiling";
+
+/// The peer's tile of `name` (a PNG's path, or a fixture, written out first) at `side`,
+/// and its seam score by our measure.
+fn peer_tile(cli: &str, name: &str, stem: &str, side: usize, seed: u64) -> (patternsynth::raster::Rgba, f64) {
+    let dir = std::env::temp_dir().join("tile_quality_peer");
+    std::fs::create_dir_all(&dir).unwrap();
+    let input = if name.contains('/') {
+        std::path::PathBuf::from(name)
+    } else {
+        let r = textures::rgba(name);
+        let f = dir.join(format!("{stem}.png"));
+        std::fs::write(&f, patternsynth::raster::codec::encode_png(r.width, r.height, &r.data).unwrap()).unwrap();
+        f
+    };
+    let out = dir.join(format!("{stem}.s{seed}.png"));
+    let status = std::process::Command::new(cli)
+        .args(["--no-progress", "-o"])
+        .arg(&out)
+        .args(["--threads", "1", "--seed", &seed.to_string(), "--tiling", "--out-size", &side.to_string(), "generate"])
+        .arg(&input)
+        .status()
+        .expect("the peer runs");
+    assert!(status.success(), "the peer failed on {name}");
+    let tile = patternsynth::raster::codec::decode_image(&std::fs::read(&out).unwrap()).unwrap();
+    let rgb: Vec<[u8; 3]> = tile.data.chunks(4).map(|p| [p[0], p[1], p[2]]).collect();
+    let seam = patternsynth::seamless::measure::seam_score(&rgb, tile.width, tile.height);
+    (tile, seam)
 }

@@ -88,9 +88,11 @@ fn the_wrap_of_a_synthesized_tile_is_no_seam_on_structured_photographs() {
 fn a_256_print_tile_has_no_seam_where_coarse_pixels_meet() {
     // The wrap of a 256 tile lies on a boundary of the coarsest level's pixels. When
     // copies were locked to offsets of multiples of 8 there, print's wrap (a page of text)
-    // scored 1.33 over these 8 seeds.
+    // scored 1.33 over seeds 1-8. One seed's score varies by about 0.2 (0.67-1.55), so
+    // the mean of 16 is known to about 0.05: 1.18 before the colour balance, 1.20 with
+    // it (`synthesis::reuse`), and the bound leaves that room.
     let img = fixture("print");
-    let seams: Vec<f64> = (1..=8)
+    let seams: Vec<f64> = (1..=16)
         .map(|seed| {
             let o = SeamlessOptions { method: Method::Synthesis, size: Some(256), seed, ..Default::default() };
             seamless_tile(&img, &o, &mut Silent).unwrap().seam_score
@@ -98,7 +100,7 @@ fn a_256_print_tile_has_no_seam_where_coarse_pixels_meet() {
         .collect();
     let mean = seams.iter().sum::<f64>() / seams.len() as f64;
     println!("print 256 synthesis tiles: {seams:.2?}, mean {mean:.3}");
-    assert!((0.8..1.2).contains(&mean), "mean seam {mean}");
+    assert!((0.8..1.25).contains(&mean), "mean seam {mean}");
 }
 
 #[test]
@@ -203,8 +205,9 @@ fn bad_input_is_a_clear_error() {
 
 /// Refined by toroidal synthesis from its layout, the E-TFMCM tile keeps structure the
 /// paper's breaks (patch energy well below the paper's tile on bricks, wood grain and
-/// letters), and keeps the image's colours better than synthesis alone, which drifts to
-/// an exemplar's smoothest region (tissue). Means over seeds 1-3 at 128.
+/// letters), and both it and synthesis keep the image's colours: synthesis grown from
+/// noise drifted to tissue's smoothest region (colour distance 0.68) until its coarsest
+/// level kept the colours balanced (`synthesis::reuse`). Means over seeds 1-3 at 128.
 #[test]
 fn refined_etfmcm_keeps_structure_and_colours() {
     use patternsynth::raster::energy::{colour_distance, patch_energy};
@@ -230,5 +233,10 @@ fn refined_etfmcm_keeps_structure_and_colours() {
     }
     let (refined, synthesis) = (measure("tissue", Method::Etfmcm, true), measure("tissue", Method::Synthesis, true));
     println!("tissue: refined {refined:.3?}, synthesis {synthesis:.3?}");
-    assert!(refined.1 < 0.7 * synthesis.1, "tissue colour distance {} against synthesis's {}", refined.1, synthesis.1);
+    assert!(
+        refined.1 < 0.35 && synthesis.1 < 0.35,
+        "tissue colour distance {} refined, {} by synthesis",
+        refined.1,
+        synthesis.1
+    );
 }

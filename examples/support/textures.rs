@@ -12,9 +12,10 @@ pub const TUNED: [&str; 4] = ["wood", "brick", "grass", "gravel"];
 /// All of them: the tuned four and six of other kinds nobody chose for the engine.
 pub const ALL: [&str; 10] = ["wood", "brick", "grass", "gravel", "moon", "hubble", "tissue", "fur", "print", "coins"];
 
-/// A fixture as RGBA.
+/// A fixture as RGBA, or any PNG or JPEG by its path (a name holding a `/`).
 pub fn rgba(name: &str) -> Rgba {
-    decode_image(&std::fs::read(format!("tests/fixtures/textures/{name}.png")).unwrap()).unwrap()
+    let path = if name.contains('/') { name.to_string() } else { format!("tests/fixtures/textures/{name}.png") };
+    decode_image(&std::fs::read(path).unwrap()).unwrap()
 }
 
 /// A fixture as an engine image.

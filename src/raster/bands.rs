@@ -190,6 +190,14 @@ pub fn run(
         })
         .collect();
     let mut map = Map::rows(window, uses.clone(), first, rows, lw, lh);
+    if band.rows < lh {
+        // (A band balances its own rows' colours: see `Uses::balance_rows`.)
+        if let Some(u) = &mut map.uses {
+            for (e, w) in map.src.iter().enumerate() {
+                u.balance_rows(e, &w[halo * lw..(halo + band.rows) * lw]);
+            }
+        }
+    }
     let sweep = job.pass(level, parent);
     let kind = kind(job, level, pass);
     let (shape, use_full, reverse) = match kind {

@@ -108,6 +108,14 @@ pub fn wrap(v: isize, n: usize) -> usize {
     }
 }
 
+/// The bin of an RGB colour (0-255 a channel) among `bins` per channel, as one index
+/// below `bins` cubed: the colour histograms' (`energy::colour_distance`, the tile's
+/// colour balance in `synthesis::reuse`).
+pub fn colour_bin(c: &[f32], bins: usize) -> usize {
+    let q = |v: f32| ((v.clamp(0.0, 255.0) as usize) * bins / 256).min(bins - 1);
+    (q(c[0]) * bins + q(c[1])) * bins + q(c[2])
+}
+
 /// Rejects empty and over-large sizes with a message naming `what`.
 pub fn check_size(width: usize, height: usize, what: &str) -> Result<()> {
     if width == 0 || height == 0 {

@@ -49,10 +49,10 @@ pub fn pool(exemplars: &[Image], masks: &[Option<Vec<bool>>], gutter: usize) -> 
     }
     let width = exemplars.iter().map(|e| e.width).max().unwrap_or(0);
     let height = exemplars.iter().map(|e| e.height).sum::<usize>() + gutter * (exemplars.len() - 1);
-    if width * height > MAX_PIXELS || width > MAX_SIDE {
+    if width * height > MAX_PIXELS || width > MAX_SIDE || height > MAX_SIDE {
         return Err(Error::TooLarge(format!(
-            "The {} exemplars make a pool of {width}x{height} with the gaps between them; the limit is {MAX_PIXELS} \
-             pixels: use smaller or fewer exemplars.",
+            "The {} exemplars make a pool of {width}x{height} with the gaps between them; the limits are {MAX_PIXELS} \
+             pixels and {MAX_SIDE} a side: use smaller or fewer exemplars.",
             exemplars.len()
         )));
     }
@@ -207,6 +207,15 @@ mod tests {
         let layout = Layout::new(&p, 2, 1, &[(7 * 8 + 5) as u32, (3 * 8 + 7) as u32]);
         assert_eq!(layout.data.iter().map(|&v| Layout::unpack(v)).collect::<Vec<_>>(), vec![(1, 5, 0), (0, 7, 3)]);
         layout.check().unwrap();
+    }
+
+    #[test]
+    fn a_pool_taller_than_a_side_allows_is_refused_as_a_pool() {
+        // Three narrow exemplars of 1,400 rows and their gutters: 4,392 rows, under the
+        // pixel cap but over the side's.
+        let tall = flat(8, 1400, 0.0);
+        let err = pool(&[tall.clone(), tall.clone(), tall], &[], 96).err().expect("too tall").to_string();
+        assert!(err.contains("make a pool of 8x4392") && err.contains("4096 a side"), "{err}");
     }
 
     #[test]

@@ -14,6 +14,14 @@
 //! cut through each overlap (a path found by dynamic programming), so windows meet along
 //! their most alike pixels rather than along straight lines.
 //!
+//! With a guide (Efros and Freeman's texture transfer), a window's cost is the mean
+//! squared difference over its overlap plus the mean squared difference between the
+//! exemplar's guide under it and the target's where it is laid, and it tries up to
+//! `candidates` origins (every one where there are no more; `job::GUIDED_QUILT` asks
+//! for 1,024): the windows then lay the target's light and dark out, which a few random
+//! origins could not. Its windows are small (4 pixels), so their overlap is one pixel
+//! and the cut is a straight line; the passes over the level join them.
+//!
 //! Windows are clipped at the output's edges, or, for a tile, laid round the torus:
 //! spread evenly so that every gap is at most a step, each row's last window cut against
 //! its first as well as its left neighbour, and the last row against the first as well
@@ -30,6 +38,24 @@ pub struct Quilt {
     /// Random origins tried per window.
     pub candidates: usize,
 }
+
+/// A guide for the quilt: the exemplar's guide at each of its positions, and the
+/// target's at each output pixel, on one scale.
+#[derive(Clone, Copy, Debug)]
+pub struct QuiltGuide<'a> {
+    pub exemplar: &'a [f32],
+    pub target: &'a [f32],
+    /// The guide term's weight against the overlap's colour difference (per pixel).
+    pub weight: f32,
+}
+
+/// A guided window is drawn at random among the origins whose cost is within this share
+/// of the least (Efros and Freeman's tolerance), so that seeds still vary the quilt and
+/// ties (a flat guide, the first window) do not all go to the exemplar's top left.
+const GUIDED_TOLERANCE: f32 = 0.1;
+/// Pixel comparisons a guided quilt makes at most: on a large coarsest level (a chosen
+/// `levels`, a thin exemplar) each window tries fewer origins (at least 16).
+const GUIDED_BUDGET: usize = 50_000_000;
 
 impl Default for Quilt {
     fn default() -> Self {
@@ -57,12 +83,15 @@ impl Quilt {
 
     /// Exemplar positions (row major in `ex`) for an output `lw` x `lh`, or `None` when
     /// `window_for` is. With `allowed` (a sample mask), a window is drawn again (up to 16
-    /// times) while its corners or centre are not allowed; positions it still holds
-    /// that are not allowed are the caller's to replace.
+    /// times) while its corners or centre are not allowed (guided, with every origin
+    /// tried, those not allowed are skipped); positions it still holds that are not
+    /// allowed are the caller's to replace. With `guide`, windows follow its target too
+    /// (see the module's doc).
     pub fn lay(
         &self,
         ex: &Image,
         allowed: Option<&[bool]>,
+        guide: Option<QuiltGuide>,
         (lw, lh): (usize, usize),
         torus: bool,
         rng: &mut Rng,
@@ -74,6 +103,8 @@ impl Quilt {
         const FREE: u32 = u32::MAX;
         let mut out = vec![FREE; lw * lh];
         let mut err = vec![0f32; b * b];
+        let windows = lw.div_ceil(step) * lh.div_ceil(step);
+        let guided_cap = (GUIDED_BUDGET / (windows * b * b).max(1)).max(16);
         let diff = |a: u32, p: u32| {
             let (c, d) = (ex.data[a as usize], ex.data[p as usize]);
             (0..3).map(|k| (c[k] - d[k]) * (c[k] - d[k])).sum::<f32>()
@@ -97,37 +128,81 @@ impl Quilt {
                     }
                 };
                 // The best of a few random origins by the squared difference over the
-                // pixels laid already.
-                let mut best = (f32::INFINITY, (0, 0));
-                for _ in 0..self.candidates.max(1) {
-                    let mut origin = (rng.below(ew - b + 1), rng.below(eh - b + 1));
-                    if let Some(a) = allowed {
-                        let inside = |o: (usize, usize)| {
-                            [(0, 0), (b - 1, 0), (0, b - 1), (b - 1, b - 1), (b / 2, b / 2)]
-                                .iter()
-                                .all(|&(dx, dy)| a[pos(o, dx, dy) as usize])
-                        };
-                        for _ in 0..16 {
-                            if inside(origin) {
-                                break;
-                            }
-                            origin = (rng.below(ew - b + 1), rng.below(eh - b + 1));
+                // pixels laid already; guided, also by the guide's, per pixel, drawn at
+                // random among those within `GUIDED_TOLERANCE` of the best.
+                let inside = |o: (usize, usize)| {
+                    allowed.is_none_or(|a| {
+                        [(0, 0), (b - 1, 0), (0, b - 1), (b - 1, b - 1), (b / 2, b / 2)]
+                            .iter()
+                            .all(|&(dx, dy)| a[pos(o, dx, dy) as usize])
+                    })
+                };
+                let (nx, ny) = (ew - b + 1, eh - b + 1);
+                let random = |rng: &mut Rng| {
+                    let mut origin = (rng.below(nx), rng.below(ny));
+                    for _ in 0..16 {
+                        if inside(origin) {
+                            break;
                         }
+                        origin = (rng.below(nx), rng.below(ny));
                     }
-                    let mut e = 0.0;
+                    origin
+                };
+                let cost = |origin: (usize, usize)| {
+                    let (mut e, mut overlap, mut g, mut laid) = (0.0, 0.0f32, 0.0, 0.0f32);
                     for dy in 0..b {
                         for dx in 0..b {
-                            match at(dx, dy) {
-                                Some(i) if out[i] != FREE => e += diff(pos(origin, dx, dy), out[i]),
-                                _ => {}
+                            let Some(i) = at(dx, dy) else { continue };
+                            let p = pos(origin, dx, dy);
+                            if out[i] != FREE {
+                                e += diff(p, out[i]);
+                                overlap += 1.0;
+                            }
+                            if let Some(gd) = guide {
+                                let d = gd.exemplar[p as usize] - gd.target[i];
+                                g += d * d;
+                                laid += 1.0;
                             }
                         }
                     }
-                    if e < best.0 {
-                        best = (e, origin);
+                    match guide {
+                        None => e,
+                        Some(gd) => e / overlap.max(1.0) + gd.weight * g / laid.max(1.0),
                     }
-                }
-                let origin = best.1;
+                };
+                let origin = match guide {
+                    None => {
+                        let mut best = (f32::INFINITY, (0, 0));
+                        for _ in 0..self.candidates.max(1) {
+                            let origin = random(rng);
+                            let e = cost(origin);
+                            if e < best.0 {
+                                best = (e, origin);
+                            }
+                        }
+                        best.1
+                    }
+                    Some(_) => {
+                        let tries = self.candidates.min(guided_cap).max(1);
+                        let mut costs: Vec<(f32, (usize, usize))> = if nx * ny <= tries {
+                            (0..nx * ny)
+                                .map(|t| (t % nx, t / nx))
+                                .filter(|&o| inside(o))
+                                .map(|o| (cost(o), o))
+                                .collect()
+                        } else {
+                            (0..tries).map(|_| random(rng)).map(|o| (cost(o), o)).collect()
+                        };
+                        if costs.is_empty() {
+                            // (No origin clear of the sample mask: one drawn as unguided.)
+                            let o = random(rng);
+                            costs.push((cost(o), o));
+                        }
+                        let least = costs.iter().map(|c| c.0).fold(f32::INFINITY, f32::min);
+                        costs.retain(|c| c.0 <= least * (1.0 + GUIDED_TOLERANCE) + 1e-3);
+                        costs[rng.below(costs.len())].1
+                    }
+                };
                 for dy in 0..b {
                     for dx in 0..b {
                         err[dy * b + dx] = match at(dx, dy) {
@@ -229,7 +304,7 @@ mod tests {
     fn every_pixel_copies_a_position_and_neighbours_mostly_continue() {
         let ex = gradient(32, 32);
         let (lw, lh) = (70, 45);
-        let q = Quilt::default().lay(&ex, None, (lw, lh), false, &mut Rng::new(3)).unwrap();
+        let q = Quilt::default().lay(&ex, None, None, (lw, lh), false, &mut Rng::new(3)).unwrap();
         assert_eq!(q.len(), lw * lh);
         assert!(q.iter().all(|&p| (p as usize) < 32 * 32));
         // Inside a window the right neighbour copies the next exemplar pixel; windows are
@@ -255,11 +330,11 @@ mod tests {
         };
         let (mut torus, mut clipped) = ((0.0, 0.0), (0.0, 0.0));
         for seed in 1..=8 {
-            let q = Quilt::default().lay(&ex, None, (lw, lh), true, &mut Rng::new(seed)).unwrap();
+            let q = Quilt::default().lay(&ex, None, None, (lw, lh), true, &mut Rng::new(seed)).unwrap();
             assert!(q.iter().all(|&p| (p as usize) < 64 * 64));
             let (r, d) = across(&q);
             torus = (torus.0 + r / 8.0, torus.1 + d / 8.0);
-            let q = Quilt::default().lay(&ex, None, (lw, lh), false, &mut Rng::new(seed)).unwrap();
+            let q = Quilt::default().lay(&ex, None, None, (lw, lh), false, &mut Rng::new(seed)).unwrap();
             let (r, d) = across(&q);
             clipped = (clipped.0 + r / 8.0, clipped.1 + d / 8.0);
         }
@@ -289,6 +364,51 @@ mod tests {
         assert_eq!(Quilt::default().window(6, 64), None);
     }
 
+    /// An exemplar dark on its left and bright on its right, with its guide lane (the
+    /// same grey on the synthesis's scale at weight 2, sqrt 6 times the colours), and a
+    /// target guide the other way round.
+    fn swapped(side: usize, out: usize) -> (Image, Vec<f32>, Vec<f32>) {
+        let mut ex = Image::new(side, side);
+        let mut rng = Rng::new(4);
+        for (i, p) in ex.data.iter_mut().enumerate() {
+            *p = [if i % side < side / 2 { 20.0 } else { 200.0 } + rng.below(20) as f32; 3];
+        }
+        let bright = 180.0 * 6f32.sqrt();
+        let lane = (0..side * side).map(|i| if i % side < side / 2 { 0.0 } else { bright }).collect();
+        let target = (0..out * out).map(|i| if i % out < out / 2 { bright } else { 0.0 }).collect();
+        (ex, lane, target)
+    }
+
+    #[test]
+    fn a_guided_quilt_lays_its_windows_where_the_target_asks() {
+        // Guided, the output's left copies the exemplar's right: with every origin tried
+        // (a 32-pixel exemplar, 4-pixel windows: 841) and with 1,024 drawn at random.
+        for (side, b) in [(32, 4), (64, 8)] {
+            let (ex, lane, target) = swapped(side, 128);
+            let guide = QuiltGuide { exemplar: &lane, target: &target, weight: 4.0 };
+            let quilt = Quilt { side: b, candidates: 1024 };
+            let follows = |q: &[u32]| {
+                (0..128 * 128).filter(|&i| (q[i] as usize % side >= side / 2) == (i % 128 < 64)).count() as f64
+                    / (128.0 * 128.0)
+            };
+            let q = quilt.lay(&ex, None, Some(guide), (128, 128), false, &mut Rng::new(1)).unwrap();
+            assert!(follows(&q) > 0.9, "{} of the pixels follow the target", follows(&q));
+            // Another seed lays other windows.
+            let other = quilt.lay(&ex, None, Some(guide), (128, 128), false, &mut Rng::new(2)).unwrap();
+            let same = q.iter().zip(&other).filter(|(a, b)| a == b).count();
+            assert!(same * 4 < q.len(), "{same} of {} pixels alike across seeds", q.len());
+            let q = Quilt { side: b, candidates: 4 }.lay(&ex, None, None, (128, 128), false, &mut Rng::new(1)).unwrap();
+            assert!(follows(&q) < 0.7, "{} without the guide", follows(&q));
+        }
+        // A sample mask that leaves no window clear: still a whole quilt.
+        let (ex, lane, target) = swapped(32, 64);
+        let allowed: Vec<bool> = (0..32 * 32).map(|i| i % 3 == 0).collect();
+        let guide = QuiltGuide { exemplar: &lane, target: &target, weight: 4.0 };
+        let q =
+            Quilt { side: 4, candidates: 1024 }.lay(&ex, Some(&allowed), Some(guide), (64, 64), true, &mut Rng::new(1));
+        assert!(q.is_some_and(|q| q.len() == 64 * 64 && q.iter().all(|&p| p < 32 * 32)));
+    }
+
     #[test]
     fn the_layout_keeps_the_exemplars_proportions() {
         // Left half dark and smooth, right half bright and noisy: a quilt of 16-wide
@@ -300,7 +420,7 @@ mod tests {
                 ex.data[y * 64 + x] = if x < 32 { [20.0; 3] } else { [rng.below(256) as f32; 3] };
             }
         }
-        let q = Quilt::default().lay(&ex, None, (128, 128), false, &mut Rng::new(1)).unwrap();
+        let q = Quilt::default().lay(&ex, None, None, (128, 128), false, &mut Rng::new(1)).unwrap();
         let left = q.iter().filter(|&&p| (p % 64) < 32).count() as f64 / q.len() as f64;
         assert!((0.3..0.7).contains(&left), "left share {left}");
     }

@@ -156,10 +156,10 @@ pub fn pool_job(exemplars: &[Image], opts: &TextureOptions) -> Result<(Job, Pool
         // The levels the exemplars themselves call for, which the gutters then fit.
         let refs: Vec<&Image> = exemplars.iter().collect();
         let side = opts.neighbourhood;
-        params.levels = Some(
-            opts.levels
-                .unwrap_or_else(|| synthesis::default_levels(&refs, opts.width, opts.height, side, opts.tileable)),
-        );
+        params.levels = Some(opts.levels.unwrap_or_else(|| {
+            let coarsest = synthesis::coarsest_side(opts.tileable, false);
+            synthesis::default_levels(&refs, opts.width, opts.height, side, coarsest)
+        }));
     }
     let gutter = pool::gutter(params.levels.unwrap_or(1), opts.neighbourhood);
     let pool = pool::pool(exemplars, &opts.sample_masks, gutter)?;

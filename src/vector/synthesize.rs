@@ -271,8 +271,14 @@ pub fn synthesize_strokes(
         (j.strokes, classes, j.sources, j.grown.stats, j.grown.periods, false)
     } else {
         let Grown { placed, stats, orbit, periods } = grow(&elements, &grow_opts, &mut throttle).map_err(explain)?;
-        let row = straight_row(&elements.iter().map(|e| e.pos).collect::<Vec<_>>())
-            || straight_row(&placed.iter().map(|p| p.pos).collect::<Vec<_>>());
+        // (What grew is looked at only where the drawing is too few to say and no period
+        // does: it may hold many thousands of elements.)
+        let row = periods.is_none()
+            && if elements.len() >= 4 {
+                straight_row(&elements.iter().map(|e| e.pos).collect::<Vec<_>>())
+            } else {
+                straight_row(&placed.iter().map(|p| p.pos).collect::<Vec<_>>())
+            };
         let (out, classes, sources) =
             motifs.dress(strokes, &classification.classes, &placed, &orbit, opts.variation.then_some(opts.seed), area);
         (out, classes, sources, stats, periods, row)

@@ -6,22 +6,36 @@ use super::lanes::{px, Px};
 use super::mask;
 use super::mixer::{Mixer, MU_ONE};
 use super::pass::Pass;
-use super::{default_levels, Params, Sources};
+use super::{coarsest_side, default_levels, Params, Sources};
 use crate::error::{invalid, Error, Result};
 use crate::raster::image::{check_output, check_size, torus_index, Rgba};
 use crate::raster::neighbourhood::Shape;
 use crate::raster::pyramid::{self, Edge};
-use crate::raster::quilt::Quilt;
+use crate::raster::quilt::{Quilt, QuiltGuide};
 use crate::rng::Rng;
 use std::sync::OnceLock;
 
 /// Output pixels x exemplar positions x neighbourhood pixels up to which the coarsest
-/// level is searched exhaustively (a 128-pixel exemplar at 256 x 256 out needs 7 M, at
-/// 512 x 512 26 M). Above it, coherent search: at 1024 x 1024 (104 M) that was 17%
+/// level grown from noise is searched exhaustively (a 128-pixel exemplar, coarsest at
+/// 32, at 256 x 256 out needs 105 M; a 128-pixel tile, coarsest at 16, 26 M at
+/// 512 x 512). A quilted coarsest level is always searched coherently (`pass_shaped`);
+/// a target guide lays the quilt out itself (`GUIDED_QUILT`). Above it, coherent search: at
+/// 1024 x 1024 (104 M, with the coarsest at 16) that was 17%
 /// faster and lowered the mean patch energy of the four photographs from 7.20 to 6.60
 /// (brick rose from 3.8 to 5.0 but kept its joints, which the exhaustive coarse level
 /// had merged into long vertical stripes).
 const COARSE_EXHAUSTIVE_BUDGET: usize = 25 << 21;
+/// A guided quilt's window side and the weight of its guide term (`quilt::QuiltGuide`).
+/// The quilt lays the large structure and the coherent passes keep to it, so a guided
+/// output follows its target as far as the quilt does. Measured on eight Debian
+/// photographs of 224 pixels guided by a disc (examples/guided_probe, 256², seeds 1-3,
+/// medians of 24 runs): the luminance's correlation with the disc was 0.81 with the
+/// plain quilt's 16-pixel windows, and with the guide at 4 (or 16) 0.83 at 8 pixels,
+/// 0.85 at 4 (0.86 with the guide at 16); searching the coarsest level exhaustively
+/// instead (as before the quilt knew the guide) gave 0.85 at about twice the time.
+/// Every origin is tried up to 1,024 (a 28-pixel coarsest level has 625).
+const GUIDED_QUILT: Quilt = Quilt { side: 4, candidates: 1024 };
+const GUIDED_QUILT_WEIGHT: f32 = 4.0;
 /// Output pixels x exemplar positions (in 5 x 5 neighbourhoods) the exhaustive
 /// reference mode may compare.
 const EXHAUSTIVE_BUDGET: f64 = 4e9;
@@ -94,7 +108,10 @@ impl Job {
         let levels = match params.levels {
             Some(l) if l == 0 || l > 8 => return invalid("Levels must be from 1 to 8."),
             Some(l) => l,
-            None => default_levels(&exemplars, width, height, side, params.tileable),
+            None => {
+                let coarsest = coarsest_side(params.tileable, params.constraints.known.is_some());
+                default_levels(&exemplars, width, height, side, coarsest)
+            }
         };
         if params.exhaustive {
             let positions: f64 = exemplars.iter().map(|e| (e.width * e.height) as f64).sum();
@@ -221,6 +238,11 @@ impl Job {
         level + 1 == self.levels && self.start.is_some()
     }
 
+    /// Whether the coarsest level starts from a quilt of exemplar windows.
+    pub(crate) fn quilted(&self) -> bool {
+        matches!(self.start, Some(Start::Quilt(_)))
+    }
+
     /// The coarsest level's starting maps, one per exemplar (empty when it is not
     /// `started`): the same in both schedules, and made once per job, however many
     /// bands read them.
@@ -236,8 +258,20 @@ impl Job {
                     .map(|(e, ex)| {
                         let mut rng = Rng::new(self.params.seed ^ (0x51 << 56) ^ e as u64);
                         let plane = &ex.levels[level];
+                        // (A target guide lays the windows out as the target asks: see
+                        // `GUIDED_QUILT`.)
+                        let lane: Vec<f32>;
+                        let (quilt, guide) = match &self.target {
+                            Some(t) if self.params.constraints.guide.as_ref().is_some_and(|g| g.scale() > 0.0) => {
+                                lane = plane.data.iter().map(|p| p[3]).collect();
+                                let guide =
+                                    QuiltGuide { exemplar: &lane, target: &t[level], weight: GUIDED_QUILT_WEIGHT };
+                                (GUIDED_QUILT, Some(guide))
+                            }
+                            _ => (*quilt, None),
+                        };
                         let mut map = quilt
-                            .lay(&plane.image(), plane.allowed_mask(), (lw, lh), self.params.tileable, &mut rng)
+                            .lay(&plane.image(), plane.allowed_mask(), guide, (lw, lh), self.params.tileable, &mut rng)
                             .expect("Job::new checked the window");
                         // Windows that still reach masked positions: those pixels start
                         // anywhere allowed, and the passes join them.
@@ -352,9 +386,15 @@ impl Job {
             lh,
             parent_size: self.sizes.get(level + 1).copied().unwrap_or((1, 1)),
             with_parent,
-            // The coarsest level is searched exhaustively when that is cheap (a few
-            // hundred exemplar positions); a thin exemplar has only one level, at full
-            // size, where exhaustive search would take minutes: coherent search there.
+            // The coarsest level grown from noise is searched exhaustively when that is
+            // cheap (a few hundred exemplar positions); a thin exemplar has only one
+            // level, at full size, where exhaustive search would take minutes: coherent
+            // search there. A quilt has laid the large structure already, and searching
+            // it exhaustively again only made the same best few windows win everywhere:
+            // searched coherently, the ten 128 fixtures at 128 x 128 (seeds 1-3) went from
+            // a mean patch energy of 7.02 to 5.94 and a median 96 ms to 16 (native), and
+            // the eight 224-pixel photographs at 256 x 256 from 5.78 to 5.13. A target
+            // guide lays the quilt out itself (`GUIDED_QUILT`).
             // Around known pixels the onion start has searched the coarsest level already
             // (`pinned`): its passes search coherently, as the finer levels' do (searching
             // again with 11 x 11 neighbourhoods was a third of a small tile's mending: the
@@ -362,6 +402,7 @@ impl Job {
             exhaustive: self.params.exhaustive
                 || (level + 1 == self.levels
                     && self.known.is_none()
+                    && !self.quilted()
                     && (lw * lh)
                         .saturating_mul(exs.iter().map(|e| e.levels[level].data.len()).sum())
                         .saturating_mul(side * side)
@@ -409,7 +450,18 @@ impl Job {
 /// same patch energy (6.11 -> 6.22), but over seeds 1-8 (examples/seam_lines) print's
 /// wrap stays a seam (1.07 from noise, 1.46 quilted, 1.37 without the wrap's extra
 /// pass, 1.34 with a causal first pass over the quilt; its inner lines 0.88-1.18) while
-/// the other nine stay within 0.81-1.09. So tiles still grow from noise.
+/// the other nine stay within 0.81-1.09. Measured again later (seeds 1-3 at 128):
+/// quilted, print's patch energy went 7.35 -> 9.41 and coins' seam 0.98 -> 0.74, and
+/// neither more window candidates (16, 64), nor two or six more passes over the
+/// coarsest level, nor a coarsest level of 32 mended print. Measured again with the
+/// quilted coarsest level searched coherently (twelve held-out photographs at 128,
+/// seeds 1-6, against texture-synthesis 0.8.3's `--tiling`), with a colour balance in
+/// the quilt's choice of windows too (weight 3; not kept): the median energy ratio to
+/// the peer's fell from 0.97 to 0.86 (smoke 2.18 -> 1.68, clouds 5.25 -> 3.48), but
+/// colour distance at most the peer's went from 11 of 12 to 9 (clouds 0.063 -> 0.160)
+/// and repetition within 0.05 of the exemplar's own from 11 to 10; without the quilt's
+/// balance (seeds 1-3), print's wrap was 1.31 and coins' 1.22. So tiles still grow from
+/// noise, and keep the exemplar's colours by the colour balance (`reuse::Balance`).
 fn tile_quilt() -> bool {
     cfg!(feature = "test-support") && std::env::var("PATTERNSYNTH_TILE_QUILT").is_ok_and(|v| v == "1")
 }

@@ -5,7 +5,10 @@
 //! from noise drawn from the exemplar (the paper's start). The coarsest level of an
 //! output that is not a tile starts instead from a quilt of exemplar windows (`quilt`),
 //! which its passes then join with full neighbourhoods: grown causally from noise, it
-//! drifted towards the exemplar's smoothest region. A pixel's feature is its causal
+//! drifted towards the exemplar's smoothest region. A tile's coarsest level still grows
+//! from noise (a quilt's cuts stood out at the wrap of a page of print), and keeps to
+//! the exemplar's colours by a penalty on colours copied more than their share
+//! (`reuse::Balance`). A pixel's feature is its causal
 //! neighbourhood at this level and a 3x3 block of the (finished) parent level, read
 //! where the pixel lies on it (`Pass::parent_feature`).
 //! For each exemplar with weight > 0 the best-matching exemplar position is found and
@@ -16,8 +19,10 @@
 //! synthesized neighbour, the exemplar position next to the one it copied, so that
 //! patches of the exemplar continue; plus the parent's position scaled up and a few
 //! random positions; a candidate that many neighbours propose is preferred. The
-//! coarsest level, a few hundred positions, is always exhaustive, which lays the
-//! large-scale structure; finer levels refine it coherently. Exemplar neighbourhoods are
+//! coarsest level starts from a quilt of exemplar windows where they fit, which lays the
+//! large-scale structure; grown from noise (tiles, small exemplars) it is searched
+//! exhaustively where that is cheap (`job`'s `COARSE_EXHAUSTIVE_BUDGET`). Finer levels
+//! refine it coherently. Exemplar neighbourhoods are
 //! read on the fly (no feature tables) and the output is kept only as source positions,
 //! so memory stays a few times the images' size; partial distances stop as soon as they
 //! exceed the best so far.
@@ -45,8 +50,8 @@ pub struct Params {
     pub width: usize,
     pub height: usize,
     pub seed: u64,
-    /// Pyramid levels; `None` picks them so the coarsest exemplar is about 32 pixels
-    /// (16 for a tile; see `default_levels`).
+    /// Pyramid levels; `None` picks them so the coarsest exemplar is nearest 32 pixels
+    /// (16 for a tile, and at least 32 for a fill; see `default_levels`).
     pub levels: Option<usize>,
     /// Neighbourhood side (odd, at least 3): 5 means a 5x5 causal L-shape.
     pub neighbourhood: usize,
@@ -163,8 +168,8 @@ impl Default for Params {
     }
 }
 
-/// Default number of levels: the coarsest exemplar about 32 pixels on its short side
-/// (16 for a tile), at least the neighbourhood; the coarsest output at least 8; at most 5.
+/// The short side the coarsest exemplar level aims at (`default_levels`): 32 pixels,
+/// 16 for a tile, and for a fill (known pixels, not a tile) 32 sqrt 2.
 ///
 /// At 16 pixels the coarsest level has a few hundred positions for several times as many
 /// output pixels, and its exhaustive search lays the same best few out again and again:
@@ -172,15 +177,49 @@ impl Default for Params {
 /// raised fur's repetition score from 0.784 to 0.854 (its exemplar's own: 0.875) and
 /// the worst distance below an exemplar's own from 0.091 to 0.034, and lowered the mean
 /// patch energy from 5.99 to 5.82; 8 (five levels) repeated more (fur 0.710).
-/// A tile keeps 16: the exhaustive coarsest level is what joins long structures across
+/// A tile aims at 16: the exhaustive coarsest level is what joins long structures across
 /// the wrap, and at 32 (searched coherently) brick's tiles broke their mortar lines
 /// there (seam score 1.51 over 8 seeds, against 0.93).
-pub(crate) fn default_levels(exemplars: &[&Image], width: usize, height: usize, side: usize, tileable: bool) -> usize {
+///
+/// A fill reads its structure from the known pixels round the hole, and a coarser start
+/// lost it: on eight Debian photographs of 224 pixels with holes of 9-10%
+/// (bench/peer-verbs.mjs, seeds 1-3), a coarsest level of 28 rather than 56 raised the
+/// fill's median patch energy from 7.65 to 8.35 and the step at its edge from 1.10 to
+/// 1.21. 32 sqrt 2 keeps the fill's levels as they were (at least 32 pixels). A mend (a
+/// fill on the torus) aims as tiles do: on the same photographs its seams went from
+/// 0.67-1.34 (four of eight outside 0.8-1.2) to 0.83-1.24 (one), its band's energy from
+/// 5.00 to 5.90 (the peer's 6.00).
+pub(crate) fn coarsest_side(tileable: bool, fill: bool) -> f64 {
+    match (tileable, fill) {
+        (true, _) => 16.0,
+        (false, true) => 32.0 * std::f64::consts::SQRT_2,
+        (false, false) => 32.0,
+    }
+}
+
+/// Default number of levels: the coarsest exemplar level nearest `coarsest` pixels on
+/// its short side by ratio (above `coarsest / sqrt 2`; see `coarsest_side`), and at
+/// least the neighbourhood; the coarsest output at least 8; at most 5.
+///
+/// Nearest, not "at least": a 112-pixel exemplar stopped at 56, where the coarsest level
+/// lays too little of the large structure. Drawing from three quarter crops of eight
+/// Debian photographs (112 -> 256), 28 lowered the median patch energy from 4.70 to
+/// 3.15, texture-synthesis's being 4.20 (bench/peer-verbs.mjs, seeds 1-3). Natively
+/// (`examples/multi_probe`, seeds 1-2, its RMS energy) from 8.12 to 6.57 from the three
+/// crops and 8.14 to 6.66 from one, with their
+/// repetition scores (0.886 -> 0.859, 0.886 -> 0.851) still above the crops' own
+/// (0.787); from the whole photographs (224 -> 256, seeds 1-3, `WHOLE=1`) 6.25 to 5.78,
+/// none repeating more than 0.025 beyond its own (grass 0.908 against 0.930). Sides that are 32 or 16 times a power of two
+/// (the fixtures' 128) keep their levels.
+pub(crate) fn default_levels(exemplars: &[&Image], width: usize, height: usize, side: usize, coarsest: f64) -> usize {
     let ex = exemplars.iter().map(|e| e.width.min(e.height)).min().unwrap_or(1);
     let out = width.min(height);
-    let coarsest = if tileable { 16 } else { 32 };
     let mut levels = 1;
-    while levels < 5 && (ex >> levels) >= coarsest.max(side) && (out >> levels) >= 8 {
+    while levels < 5
+        && (ex >> levels) >= side
+        && (ex >> levels) as f64 >= coarsest / std::f64::consts::SQRT_2
+        && (out >> levels) >= 8
+    {
         levels += 1;
     }
     levels
@@ -275,4 +314,29 @@ pub fn sources(job: &Job, progress: &mut Throttle) -> Result<Vec<Vec<u32>>> {
     // The finest level's sources are `parent_src` now.
     progress.tick(1.0)?;
     Ok(parent_src)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn levels(ex: usize, out: usize, side: usize, coarsest: f64) -> usize {
+        let e = Image::new(ex, ex);
+        default_levels(&[&e], out, out, side, coarsest)
+    }
+
+    #[test]
+    fn the_coarsest_level_is_the_nearest_to_its_aim_by_ratio() {
+        let (plain, tile, fill) = (coarsest_side(false, false), coarsest_side(true, false), coarsest_side(false, true));
+        // 112 -> 28 (not 56), 224 -> 28, 128 -> 32, 96 -> 24, 64 -> 32.
+        assert_eq!([112, 224, 128, 96, 64].map(|ex| levels(ex, 256, 5, plain)), [3, 4, 3, 3, 2]);
+        // A tile aims at 16: 128 -> 16, 100 -> 12 (not 25).
+        assert_eq!([128, 100].map(|ex| levels(ex, 256, 5, tile)), [4, 4]);
+        // A fill keeps at least 32: 224 -> 56, 112 -> 56.
+        assert_eq!([224, 112].map(|ex| levels(ex, 224, 11, fill)), [3, 2]);
+        // Never below the neighbourhood, nor a coarsest output under 8, nor over 5.
+        assert_eq!(levels(28, 256, 11, tile), 2);
+        assert_eq!(levels(1024, 32, 5, plain), 3);
+        assert_eq!(levels(4096, 4096, 5, plain), 5);
+    }
 }
