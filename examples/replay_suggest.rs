@@ -77,6 +77,7 @@ fn main() {
     for q in patternsynth::vector::sequences::drawn_by(jitter, hand, seed)
         .into_iter()
         .chain(patternsynth::vector::sequences::composite(jitter, hand, seed))
+        .chain(patternsynth::vector::sequences::along_drawn(jitter, hand, seed))
         .filter(|q| only_sequence.as_deref().is_none_or(|o| q.name.starts_with(o)))
     {
         if let Ok(dir) = std::env::var("DUMP") {

@@ -712,3 +712,26 @@ fn a_first_copy_without_its_stalk_gets_no_stray_stalk() {
     }
     assert!(checked >= 5, "{checked} stalks proposed");
 }
+
+/// Leaves along a stem drawn first (issue 27, "a stem and three leaves"): sines that
+/// bend either way every few leaves, Bézier curves and a circle, each drawn by a
+/// person's hand (copies turned 2.5 degrees at random) with a wobble of 3% of the step.
+/// The ghosts follow the drawn stem: most leaves after the third are accepted, few
+/// ghosts are wrong, and none go past the stem's end (no ghost is counted past it).
+#[test]
+fn leaves_follow_a_drawn_stem() {
+    let (mut after, mut accepted, mut shown, mut wrong) = (0, 0, 0, 0);
+    for seed in 1..=3 {
+        for q in patternsynth::vector::sequences::along_drawn(0.03, HandTurn::PERSON, seed) {
+            let r = q.replay(&q.strokes);
+            assert_eq!(r.beyond, 0, "{}: a ghost past the stem's end", q.name);
+            after += r.strokes - q.lead - 3;
+            accepted += r.accepted;
+            shown += r.shown;
+            wrong += r.wrong;
+        }
+    }
+    let share = accepted as f64 / after as f64;
+    assert!(share >= 0.75, "{accepted} of {after} accepted");
+    assert!(wrong as f64 <= 0.05 * shown as f64, "{wrong} of {shown} wrong");
+}

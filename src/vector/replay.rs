@@ -82,6 +82,10 @@ pub fn replay_each(truth: &[Stroke], classes: &[u32], region: Rect, tol: &[f64],
                 s.reason,
                 s.cells.iter().zip(&s.strokes).map(|(c, st)| (c, st.reference_point())).collect::<Vec<_>>()
             );
+            eprintln!(
+                "  truth next {:?}",
+                (first..truth.len().min(first + 3)).map(|g| truth[g].reference_point()).collect::<Vec<_>>()
+            );
         }
         let mut matched = Vec::new();
         for (k, stroke) in s.strokes.iter().enumerate() {

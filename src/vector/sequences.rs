@@ -31,6 +31,8 @@ pub struct Sequence {
     pub classes: Vec<u32>,
     /// Strokes in each copy.
     pub parts: usize,
+    /// Strokes drawn before the first copy (a stem the copies go along).
+    pub lead: usize,
 }
 
 impl Sequence {
@@ -56,12 +58,13 @@ impl Sequence {
             canvas: kurbo::Rect::ZERO,
             classes: Vec::new(),
             parts,
+            lead: 0,
         }
     }
 
     /// Share of the strokes accepted after the first three copies were drawn.
     pub fn accepted_after_three(&self, r: &Replay) -> f64 {
-        r.accepted_after(3 * self.parts)
+        r.accepted_after(self.lead + 3 * self.parts)
     }
 }
 
@@ -227,16 +230,8 @@ fn leaves_along(
     let turn = wobble.2;
     let mut rng = Rng::new(seed);
     let step = 40.0;
-    let (mut sites, mut along, mut t) = (Vec::new(), 0.0, from.0);
-    while sites.len() < n + BEYOND {
-        let (p, q) = (path(t), path(t + from.1));
-        along += p.distance(q);
-        t += from.1;
-        if along >= step || sites.is_empty() {
-            along = 0.0;
-            sites.push((p, (q.y - p.y).atan2(q.x - p.x)));
-        }
-    }
+    let sites: Vec<(Point, f64)> =
+        sites(&path, from, step, n + BEYOND).into_iter().map(|(p, phi, _)| (p, phi)).collect();
     let strokes = sites
         .iter()
         .map(|&(p, phi)| {
@@ -254,7 +249,94 @@ fn leaves_along(
         canvas: kurbo::Rect::ZERO,
         classes: Vec::new(),
         parts: 1,
+        lead: 0,
     }
+}
+
+/// Sites `step` apart (of arc length) along `path(t)` from `t = from.0` on in steps of
+/// `from.1`: each one's place, the path's direction there and its `t`.
+fn sites(path: &impl Fn(f64) -> Point, from: (f64, f64), step: f64, count: usize) -> Vec<(Point, f64, f64)> {
+    let (mut sites, mut along, mut t) = (Vec::new(), 0.0, from.0);
+    while sites.len() < count {
+        let (p, q) = (path(t), path(t + from.1));
+        along += p.distance(q);
+        if along >= step || sites.is_empty() {
+            along = 0.0;
+            sites.push((p, (q.y - p.y).atan2(q.x - p.x), t));
+        }
+        t += from.1;
+    }
+    sites
+}
+
+/// Leaves along a stem the hand draws first (issue 27: "a stem and three leaves"): the
+/// stem from half a step before the first leaf to half a step past the `n`-th (round
+/// and closed, for a `closed` path), its points off by a fifth of `wobble` of the step
+/// and swaying by `wobble` of it; then the leaves, as `leaves_along` draws them.
+fn stem_drawn(
+    name: &str,
+    path: impl Fn(f64) -> Point,
+    from: (f64, f64),
+    n: usize,
+    closed: bool,
+    wobble: (f64, HandTurn),
+    seed: u64,
+) -> Sequence {
+    let step = 40.0;
+    let mut leaves = leaves_along(name, &path, from, n, (wobble.0, 0.0, wobble.1), seed);
+    let mut rng = Rng::new(seed ^ 0x5EED);
+    let at = sites(&path, from, step, n + 1);
+    let (t0, t1) =
+        if closed { (from.0, at[n].2) } else { (from.0 - 0.5 * (at[1].2 - at[0].2), 0.5 * (at[n - 1].2 + at[n].2)) };
+    let phase = rng.next_f64() * TAU;
+    let count = ((t1 - t0) / from.1 / 40.0).ceil().max(8.0) as usize;
+    let noise = 0.2 * wobble.0 * step;
+    let mut points: Vec<[f64; 2]> = (0..=count)
+        .map(|k| {
+            let t = t0 + (t1 - t0) * k as f64 / count as f64;
+            let (p, q) = (path(t), path(t + from.1));
+            let normal = Vec2::new(p.y - q.y, q.x - p.x).normalize();
+            let sway = wobble.0 * step * (k as f64 / count as f64 * TAU + phase).sin();
+            let p = p + normal * sway;
+            [p.x + rng.normal() * noise, p.y + rng.normal() * noise]
+        })
+        .collect();
+    if closed {
+        points.push(points[0]);
+    }
+    leaves.strokes.insert(0, Stroke::new(points, 2.0, None));
+    leaves.classes = std::iter::once(1).chain(std::iter::repeat_n(0, leaves.strokes.len() - 1)).collect();
+    leaves.lead = 1;
+    if closed {
+        leaves.strokes.truncate(1 + n);
+        leaves.classes.truncate(1 + n);
+    }
+    leaves
+}
+
+/// Leaves along stems drawn first, each leaf turned with its stem, at `wobble` (share
+/// of the step) and turned off as `turn` says: an S-curve, wavy, curly and tight sines,
+/// a Bézier S and arch, and twelve round a drawn circle.
+pub fn along_drawn(wobble: f64, turn: HandTurn, seed: u64) -> Vec<Sequence> {
+    let sine =
+        |amplitude: f64, scale: f64| move |x: f64| Point::new(x, 300.0 + amplitude * ((x - 300.0) / scale).sin());
+    let hand = (wobble, turn);
+    let k = seed * 131;
+    let mut out = vec![
+        stem_drawn("leaves on a drawn S-curve", sine(70.0, 110.0), (70.0, 0.5), 12, false, hand, k + 13),
+        stem_drawn("leaves on a drawn wavy stem", sine(40.0, 400.0 / TAU), (50.0, 0.5), 16, false, hand, k + 19),
+        stem_drawn("leaves on a drawn curly stem", sine(60.0, 300.0 / TAU), (50.0, 0.5), 16, false, hand, k + 23),
+        stem_drawn("leaves on a drawn tight stem", sine(50.0, 250.0 / TAU), (40.0, 0.5), 16, false, hand, k + 37),
+    ];
+    let arch = bezier([(60.0, 500.0), (250.0, 50.0), (650.0, 50.0), (840.0, 500.0)]);
+    let s = bezier([(60.0, 150.0), (700.0, -50.0), (200.0, 750.0), (840.0, 450.0)]);
+    out.push(stem_drawn("leaves on a drawn Bézier arch", arch, (0.0, 1.0 / 8000.0), 16, false, hand, k + 29));
+    out.push(stem_drawn("leaves on a drawn Bézier S", s, (0.0, 1.0 / 8000.0), 16, false, hand, k + 30));
+    let r = 12.0 * 40.0 / TAU;
+    let circle = move |t: f64| Point::new(300.0 + r * t.cos(), 300.0 + r * t.sin());
+    out.push(stem_drawn("ring of 12 leaves round a drawn circle", circle, (0.0, TAU / 4000.0), 12, true, hand, k + 41));
+    finish(&mut out);
+    out
 }
 
 /// The cubic Bézier curve through `p[0]` and `p[3]` with control points `p[1]`, `p[2]`.
@@ -313,6 +395,7 @@ pub fn drawn_by(wobble: f64, turn: HandTurn, seed: u64) -> Vec<Sequence> {
             canvas,
             classes: Vec::new(),
             parts: 1,
+            lead: 0,
         });
     }
     // A spiral: petals turning by 30° and growing by 6% a step, out from the centre.
@@ -344,6 +427,7 @@ pub fn drawn_by(wobble: f64, turn: HandTurn, seed: u64) -> Vec<Sequence> {
             canvas,
             classes: Vec::new(),
             parts: 1,
+            lead: 0,
         });
     }
     // Leaves along an arc of radius 260, one every 14°, each turned with the arc.
@@ -368,6 +452,7 @@ pub fn drawn_by(wobble: f64, turn: HandTurn, seed: u64) -> Vec<Sequence> {
             canvas,
             classes: Vec::new(),
             parts: 1,
+            lead: 0,
         });
     }
     // Hatching across a contour that turns: lines 70 long, 7.2 apart along an arc of
@@ -398,6 +483,7 @@ pub fn drawn_by(wobble: f64, turn: HandTurn, seed: u64) -> Vec<Sequence> {
             canvas,
             classes: Vec::new(),
             parts: 1,
+            lead: 0,
         });
     }
     // Leaves along an S: a stem that bends one way and then the other (no one similarity
@@ -454,6 +540,7 @@ pub fn drawn_by(wobble: f64, turn: HandTurn, seed: u64) -> Vec<Sequence> {
             canvas,
             classes: Vec::new(),
             parts: 1,
+            lead: 0,
         });
     }
     finish(&mut out);

@@ -1,0 +1,490 @@
+//! Copies along a drawn path (issue 27: "a stem and three leaves"). Where the latest
+//! copies of a shape each touch one long stroke that curves (a vine, a contour, a
+//! flower's heart), the path itself says where the next copies go: as far on along it,
+//! by arc length, as the copies are apart, each turned as the path's tangent turns,
+//! up to where the path ends (round again, on a closed one, to the first copy).
+//!
+//! Read from the path, not from the copies' steps: a sine stem's turn changes sign
+//! every few leaves, which no similarity between the last copies carries
+//! (`sequence`: leaves over a wavy stem were 8% accepted, over a curly one none),
+//! while the drawn stem shows it outright. A straight path is left to the lattice,
+//! which reads a row with its own certainty.
+//!
+//! A copy's place on the path is where it comes nearest it (a leaf's base, a hatching
+//! line's crossing); its pose is kept in the path's frame there: carried to arc length
+//! `s'`, a copy at `s` turns by the tangent's turn from `s` to `s'` about the path's
+//! point. The places along the path are fitted by a line in the copies' order; a ghost
+//! is shown where the hand's copy is likely within the matching tolerance of it, as
+//! for lattices (`certainty::reach`), from the spread of the places about that line and
+//! of the copies' poses in the path's frame.
+
+use super::certainty::reach;
+use super::sequence::{relations, Ask};
+use super::{Suggestions, FALLOFF, TOLERANCE};
+use crate::rng::Rng;
+use crate::vector::frechet::closed_loop;
+use crate::vector::similarity::{samples, Similarity};
+use crate::vector::stroke::Stroke;
+use kurbo::{Point, Vec2};
+
+/// Strokes looked back over for the path and the copies.
+const LOOK_BACK: usize = 32;
+/// A path is at least this many times as long as a copy is large...
+const PATH_LENGTH: f64 = 3.0;
+/// ...and its tangent turns by at least this much along it (radians, about 17 degrees;
+/// a straight one, a row, is the lattice's).
+const MIN_CURVE: f64 = 0.3;
+/// A copy touches the path when it comes within this share of its size of it (plus
+/// twice the stroke's width).
+const ATTACH: f64 = 0.3;
+/// Each gap along the path is within this factor of the median either way.
+const GAP_SPREAD: f64 = 1.6;
+/// At least this many hand-drawn copies, and at most this many read.
+const MIN_COPIES: usize = 3;
+const MAX_COPIES: usize = 8;
+/// The hand's prior scatter of a copy's place, as a share of the gap, counted as
+/// `PRIOR_COPIES` copies.
+const PRIOR_SCATTER: f64 = 0.05;
+const PRIOR_COPIES: f64 = 3.0;
+/// A ghost is on a drawn copy when their centres lie within this share of the gap.
+const DRAWN: f64 = 0.3;
+
+const PATH_ENDS: &str = "The next copy would go past the end of the path: draw it on, and the copies follow it.";
+const UNCERTAIN: &str = "The copies along the path are spaced too unevenly to go on from: draw one more.";
+
+/// A drawn path resampled evenly by arc length and smoothed.
+struct Path {
+    points: Vec<Point>,
+    /// Arc length between consecutive points.
+    ds: f64,
+    closed: bool,
+    /// Half the window the tangent is read over (arc length).
+    window: f64,
+}
+
+impl Path {
+    fn new(stroke: &Stroke, window: f64) -> Option<Path> {
+        let raw: Vec<Point> = stroke.points.iter().map(|p| Point::new(p[0], p[1])).collect();
+        let closed = closed_loop(&raw);
+        let length: f64 = raw.windows(2).map(|w| w[0].distance(w[1])).sum();
+        if length <= 0.0 {
+            return None;
+        }
+        let n = ((length / 2.0).ceil() as usize).clamp(16, 1024);
+        let ds = length / n as f64;
+        let mut points = Vec::with_capacity(n + 1);
+        let (mut seg, mut into) = (0usize, 0.0);
+        for k in 0..=n {
+            let want = k as f64 * ds;
+            while seg + 1 < raw.len() - 1 && into + raw[seg].distance(raw[seg + 1]) < want {
+                into += raw[seg].distance(raw[seg + 1]);
+                seg += 1;
+            }
+            let len = raw[seg].distance(raw[(seg + 1).min(raw.len() - 1)]).max(1e-12);
+            points.push(raw[seg].lerp(raw[(seg + 1).min(raw.len() - 1)], ((want - into) / len).clamp(0.0, 1.0)));
+        }
+        // (A hand's jaggies would turn the tangent at random: averaged over 5 points.)
+        let smooth: Vec<Point> = (0..points.len())
+            .map(|i| {
+                let r = 2usize.min(i).min(points.len() - 1 - i);
+                let sum = points[i - r..=i + r].iter().fold(Vec2::ZERO, |a, p| a + p.to_vec2());
+                (sum / (2 * r + 1) as f64).to_point()
+            })
+            .collect();
+        Some(Path { points: smooth, ds, closed, window })
+    }
+
+    fn length(&self) -> f64 {
+        self.ds * (self.points.len() - 1) as f64
+    }
+
+    /// `s` brought onto the path (round a closed one), or `None` past an open one's ends.
+    fn on(&self, s: f64) -> Option<f64> {
+        let l = self.length();
+        if self.closed {
+            Some(s.rem_euclid(l))
+        } else {
+            (-1e-9..=l + 1e-9).contains(&s).then_some(s.clamp(0.0, l))
+        }
+    }
+
+    fn at(&self, s: f64) -> Point {
+        let x = (s / self.ds).clamp(0.0, (self.points.len() - 1) as f64);
+        let i = (x.floor() as usize).min(self.points.len() - 2);
+        self.points[i].lerp(self.points[i + 1], x - i as f64)
+    }
+
+    /// The tangent's direction at `s` (radians), read over `window` either side.
+    fn heading(&self, s: f64) -> f64 {
+        let l = self.length();
+        let (a, b) = if self.closed {
+            (self.at((s - self.window).rem_euclid(l)), self.at((s + self.window).rem_euclid(l)))
+        } else {
+            (self.at((s - self.window).max(0.0)), self.at((s + self.window).min(l)))
+        };
+        (b - a).atan2()
+    }
+
+    /// How far the tangent turns along the path (the range of its unwrapped direction).
+    fn curve(&self) -> f64 {
+        let steps = (self.length() / self.window.max(self.ds)).ceil().max(2.0) as usize;
+        let (mut lo, mut hi, mut acc, mut prev) = (0.0f64, 0.0f64, 0.0, self.heading(0.0));
+        for k in 1..=steps {
+            let h = self.heading(self.length() * k as f64 / steps as f64);
+            acc += (h - prev + std::f64::consts::PI).rem_euclid(std::f64::consts::TAU) - std::f64::consts::PI;
+            prev = h;
+            (lo, hi) = (lo.min(acc), hi.max(acc));
+        }
+        hi - lo
+    }
+
+    /// Where `points` come nearest the path: the arc length there and the distance.
+    fn nearest(&self, points: &[Point]) -> (f64, f64) {
+        let mut best = (0.0, f64::INFINITY);
+        for (i, w) in self.points.windows(2).enumerate() {
+            let d = w[1] - w[0];
+            for &p in points {
+                let u = ((p - w[0]).dot(d) / d.hypot2().max(1e-12)).clamp(0.0, 1.0);
+                let dist = (p - (w[0] + d * u)).hypot();
+                if dist < best.1 {
+                    best = ((i as f64 + u) * self.ds, dist);
+                }
+            }
+        }
+        best
+    }
+
+    /// Where on the path, within `window` of `near`, `points` lie as `target` lies at
+    /// `at` in the path's frame: the arc length from which carrying them to `at` brings
+    /// them nearest `target`, and their mean square distance from it there.
+    fn register(&self, points: &[Point], target: &[Point], at: f64, near: f64, window: f64) -> (f64, f64) {
+        let msd = |s: f64| {
+            let carry = self.carry(s, at);
+            points.iter().map(|&p| to_polyline(carry.apply(p), target)).sum::<f64>() / points.len().max(1) as f64
+        };
+        let k = (window / self.ds).ceil() as i64;
+        let i0 = (near / self.ds).round() as i64;
+        let costs: Vec<(f64, f64)> =
+            (i0 - k..=i0 + k).filter_map(|i| self.on(i as f64 * self.ds)).map(|s| (s, msd(s))).collect();
+        let Some(b) = (0..costs.len()).min_by(|&x, &y| costs[x].1.total_cmp(&costs[y].1)) else {
+            return (near, f64::INFINITY);
+        };
+        // (Between samples: the parabola through the least cost and its neighbours.)
+        if b > 0 && b + 1 < costs.len() {
+            let (l, m, r) = (costs[b - 1].1, costs[b].1, costs[b + 1].1);
+            let curve = l - 2.0 * m + r;
+            if curve > 1e-12 {
+                let shift = (0.5 * (l - r) / curve).clamp(-0.5, 0.5);
+                let s = costs[b].0 + shift * self.ds;
+                return (s, msd(s));
+            }
+        }
+        costs[b]
+    }
+
+    /// The similarity carrying what lies at arc length `from` to `to`, in the path's
+    /// frame (turned as the tangent turns, about the path's point).
+    fn carry(&self, from: f64, to: f64) -> Similarity {
+        let turn = self.heading(to) - self.heading(from);
+        let a = Vec2::new(turn.cos(), turn.sin());
+        let (p, q) = (self.at(from).to_vec2(), self.at(to).to_vec2());
+        Similarity { a, b: q - crate::vector::similarity::mul(a, p) }
+    }
+
+    /// The signed arc length from `a` to `b` (the shorter way round a closed path).
+    fn gap(&self, a: f64, b: f64) -> f64 {
+        let d = b - a;
+        if self.closed {
+            let l = self.length();
+            (d + 0.5 * l).rem_euclid(l) - 0.5 * l
+        } else {
+            d
+        }
+    }
+}
+
+/// The squared distance from `p` to the polyline through `line`.
+fn to_polyline(p: Point, line: &[Point]) -> f64 {
+    line.windows(2)
+        .map(|w| {
+            let (d, e) = (w[1] - w[0], p - w[0]);
+            let u = (e.dot(d) / d.hypot2().max(1e-12)).clamp(0.0, 1.0);
+            (e - d * u).hypot2()
+        })
+        .fold(f64::INFINITY, f64::min)
+}
+
+fn size(s: &Stroke) -> f64 {
+    s.bounds().size().to_vec2().hypot()
+}
+
+/// Proposals carrying on the copies of the latest hand-drawn stroke (or, where that is
+/// the path, the one before) along a drawn path they touch; `None` where no curving path
+/// holds the latest copies.
+pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Option<Suggestions> {
+    let n = strokes.len();
+    let lo = n.saturating_sub(LOOK_BACK);
+    let hand = |i: usize| !accepted.get(i).copied().unwrap_or(false);
+    let mut motifs = (lo..n).rev().filter(|&i| hand(i) && !strokes[i].is_dot());
+    let first = motifs.next()?;
+    let second = motifs.next();
+    along(strokes, accepted, ask, first).or_else(|| second.and_then(|m| along(strokes, accepted, ask, m)))
+}
+
+/// `propose` with the copies of stroke `m` as the motif.
+fn along(strokes: &[Stroke], accepted: &[bool], ask: &Ask, m: usize) -> Option<Suggestions> {
+    let n = strokes.len();
+    let lo = n.saturating_sub(LOOK_BACK);
+    let hand = |i: usize| !accepted.get(i).copied().unwrap_or(false);
+    let big = size(&strokes[m]);
+    let length = |s: &Stroke| s.points.windows(2).map(|w| (w[0][0] - w[1][0]).hypot(w[0][1] - w[1][1])).sum::<f64>();
+    // Paths first (cheap): long hand-drawn strokes that curve.
+    let window = 0.5 * big;
+    let paths: Vec<(usize, Path)> = (lo..n)
+        .filter(|&j| j != m && hand(j) && length(&strokes[j]) >= PATH_LENGTH * big)
+        .filter_map(|j| Some((j, Path::new(&strokes[j], window)?)))
+        .filter(|(_, p)| p.curve() >= MIN_CURVE)
+        .collect();
+    // (A path is drawn once: a stroke with copies of its own is a motif's, a petal of
+    // a ring whose veins all reach its base.)
+    let paths: Vec<(usize, Path)> = paths
+        .into_iter()
+        .filter(|(j, _)| {
+            let (l, mine) = (length(&strokes[*j]), samples(&strokes[*j]));
+            !(lo..n).any(|i| {
+                i != *j
+                    && (length(&strokes[i]) - l).abs() < 0.3 * l
+                    && !relations(&samples(&strokes[i]), &mine, size(&strokes[i])).is_empty()
+            })
+        })
+        .collect();
+    if paths.is_empty() {
+        return None;
+    }
+    let mine = samples(&strokes[m]);
+    let sampled: Vec<Option<Vec<Point>>> = (0..n).map(|i| (i >= lo).then(|| samples(&strokes[i]))).collect();
+    // Copies of its shape, in drawing order.
+    let copies: Vec<usize> = (lo..n)
+        .filter(|&i| {
+            i == m
+                || (!strokes[i].is_dot()
+                    && !paths.iter().any(|p| p.0 == i)
+                    && !relations(sampled[i].as_ref().expect("sampled"), &mine, size(&strokes[i])).is_empty())
+        })
+        .collect();
+    paths.iter().find_map(|(j, path)| along_path(strokes, accepted, ask, (*j, path), &copies, &sampled))
+}
+
+/// The copies (`copies`, in drawing order, the motif's last) carried on along `path`.
+fn along_path(
+    strokes: &[Stroke],
+    accepted: &[bool],
+    ask: &Ask,
+    (path_index, path): (usize, &Path),
+    copies: &[usize],
+    sampled: &[Option<Vec<Point>>],
+) -> Option<Suggestions> {
+    let hand = |i: usize| !accepted.get(i).copied().unwrap_or(false);
+    // The run: back from the latest copy, each touching the path, one way along it.
+    let mut run: Vec<(usize, f64, f64)> = Vec::new();
+    for &i in copies.iter().rev() {
+        let pts = sampled[i].as_ref()?;
+        let (near, dist) = path.nearest(pts);
+        if dist > ATTACH * size(&strokes[i]) + 2.0 * strokes[i].width {
+            break;
+        }
+        // (Placed where, in the path's frame, it lies as the latest copy does there: the
+        // point it comes nearest at is as loose as its outline, and its centre's foot
+        // shifts with the path's curvature.)
+        let (s, off) = match run.first() {
+            None => (near, 0.0),
+            Some(&(latest, at, _)) => {
+                let target = sampled[latest].as_ref()?;
+                path.register(pts, target, at, near, size(&strokes[i]))
+            }
+        };
+        if let [.., (_, a, _), (_, b, _)] = run[..] {
+            // (Each gap one way, as the one after it.)
+            if path.gap(s, b).signum() != path.gap(b, a).signum() {
+                break;
+            }
+        }
+        run.push((i, s, off));
+        if run.iter().filter(|r| hand(r.0)).count() >= MAX_COPIES {
+            break;
+        }
+    }
+    run.reverse();
+    let hands: Vec<usize> = (0..run.len()).filter(|&t| hand(run[t].0)).collect();
+    if hands.len() < MIN_COPIES {
+        return None;
+    }
+    // Unwrapped places along the path, in the run's order.
+    let mut places = vec![run[0].1];
+    for w in run.windows(2) {
+        let last = *places.last()?;
+        places.push(last + path.gap(w[0].1, w[1].1));
+    }
+    let mut gaps: Vec<f64> = places.windows(2).map(|w| (w[1] - w[0]).abs()).collect();
+    gaps.sort_by(f64::total_cmp);
+    let median = gaps[gaps.len() / 2];
+    if median <= 0.0 || gaps.iter().any(|&g| g > GAP_SPREAD * median || g < median / GAP_SPREAD) {
+        return None;
+    }
+    // The places fitted by a line in the run's order (hand-drawn copies only: an
+    // accepted one sits where the line put it).
+    let h = hands.len() as f64;
+    let tm = hands.iter().map(|&t| t as f64).sum::<f64>() / h;
+    let sm = hands.iter().map(|&t| places[t]).sum::<f64>() / h;
+    let sxx: f64 = hands.iter().map(|&t| (t as f64 - tm).powi(2)).sum();
+    let step = hands.iter().map(|&t| (t as f64 - tm) * (places[t] - sm)).sum::<f64>() / sxx;
+    let place = |t: f64| sm + step * (t - tm);
+    let gap = step.abs();
+    // The scatter about it: of the places along the path, and of the copies' poses in
+    // its frame (each hand-drawn copy carried onto the latest's place, against it).
+    let prior = (PRIOR_SCATTER * gap).powi(2);
+    let along_ss: f64 = hands.iter().map(|&t| (places[t] - place(t as f64)).powi(2)).sum();
+    let var_along = (along_ss + PRIOR_COPIES * prior) / (h - 2.0 + PRIOR_COPIES);
+    let latest = *hands.last()?;
+    // (Each copy's mean square distance from the latest, registered in the path's frame.)
+    let pose_ss: f64 = hands.iter().map(|&t| run[t].2).sum();
+    let var_pose = (pose_ss + PRIOR_COPIES * prior) / (h - 1.0 + PRIOR_COPIES);
+    let reach = reach(h + PRIOR_COPIES);
+    // The latest hand-drawn copy's other strokes (drawn after it and before the next
+    // copy, near it: a leaf's dot, its midrib) go with each ghost.
+    let own = run[latest].0;
+    let next = copies.iter().copied().find(|&i| i > own).unwrap_or(strokes.len());
+    let parts: Vec<usize> = (own + 1..next)
+        .filter(|&i| i != path_index && hand(i))
+        .filter(|&i| strokes[i].reference_point().distance(strokes[own].reference_point()) < size(&strokes[own]))
+        .collect();
+    let drawn = |g: &Stroke| {
+        let c = g.reference_point();
+        copies.iter().any(|&i| strokes[i].reference_point().distance(c) < DRAWN * gap)
+    };
+    let mut rng = ask.seed.map(Rng::new);
+    let mut out = Suggestions::default();
+    let mut why = None;
+    let end = run.len() - 1;
+    for k in 1..=ask.count {
+        let t = end + k;
+        // (Read off the line, round a closed path's length.)
+        let Some(s) = path.on(place(t as f64)) else {
+            why = Some(PATH_ENDS);
+            break;
+        };
+        let spread = var_along * (1.0 + 1.0 / h + (t as f64 - tm).powi(2) / sxx) + var_pose;
+        if reach * spread.sqrt() > TOLERANCE * gap {
+            why = Some(UNCERTAIN);
+            break;
+        }
+        let from = match &mut rng {
+            Some(r) => hands[r.below(hands.len())],
+            None => latest,
+        };
+        let (src, at, _) = run[from];
+        let carry = path.carry(at, s);
+        let ghost = carry.carry(&strokes[src]);
+        if ask.region.is_some_and(|r| !r.contains(ghost.reference_point())) {
+            break;
+        }
+        if drawn(&ghost) {
+            why = Some("The copies along the path are complete.");
+            break;
+        }
+        let with = path.carry(run[latest].1, s);
+        let ghosts = std::iter::once((ghost, src)).chain(parts.iter().map(|&p| (with.carry(&strokes[p]), p)));
+        for (g, source) in ghosts {
+            out.strokes.push(g);
+            out.confidence.push(FALLOFF.powi(k as i32));
+            out.sources.push((source + ask.offset) as u32);
+            out.cells.push([k as i64, 0]);
+        }
+    }
+    if out.strokes.is_empty() {
+        out.reason = Some(why.unwrap_or(PATH_ENDS).into());
+    }
+    Some(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A loop 36 long from `at` along `theta`.
+    fn leaf(at: Point, theta: f64) -> Stroke {
+        let (c, s) = (theta.cos(), theta.sin());
+        let pts = (0..=24)
+            .map(|k| {
+                let t = k as f64 / 24.0 * std::f64::consts::TAU;
+                let (along, across) = (18.0 * (1.0 - t.cos()), 6.0 * t.sin());
+                [at.x + along * c - across * s, at.y + along * s + across * c]
+            })
+            .collect();
+        Stroke::new(pts, 2.0, None)
+    }
+
+    fn ask(count: usize) -> Ask {
+        Ask { count, region: None, offset: 0, seed: None, rows: true }
+    }
+
+    /// A stem along `y = 300 + 40 sin((x - 300) / 64)` from x = 40 to `to`, and leaves
+    /// every 40 of its arc length from x = 60, each leaning 0.6 off the stem.
+    fn vine(leaves: usize, to: f64) -> (Vec<Stroke>, Vec<Point>) {
+        let f = |x: f64| Point::new(x, 300.0 + 40.0 * ((x - 300.0) / 64.0).sin());
+        let stem = Stroke::new(
+            (0..=200).map(|k| f(40.0 + (to - 40.0) * k as f64 / 200.0)).map(|p| [p.x, p.y]).collect(),
+            2.0,
+            None,
+        );
+        // (Each site with the stem's direction there.)
+        let site = |x: f64| (f(x), (f(x + 0.01) - f(x)).atan2());
+        let (mut x, mut along, mut sites) = (60.0, 0.0, vec![site(60.0)]);
+        while sites.len() < leaves + 5 {
+            along += f(x).distance(f(x + 0.05));
+            x += 0.05;
+            if along >= 40.0 {
+                along = 0.0;
+                sites.push(site(x));
+            }
+        }
+        let strokes =
+            std::iter::once(stem).chain(sites.iter().take(leaves).map(|&(p, phi)| leaf(p, phi - 0.6))).collect();
+        let truth = sites.iter().map(|&(p, phi)| leaf(p, phi - 0.6).reference_point()).collect();
+        (strokes, truth)
+    }
+
+    #[test]
+    fn leaves_go_on_along_a_drawn_stem_and_stop_at_its_end() {
+        let (strokes, truth) = vine(3, 560.0);
+        let s = propose(&strokes, &[], &ask(3)).expect("leaves along a stem");
+        assert_eq!(s.strokes.len(), 3, "{:?}", s.reason);
+        for (k, g) in s.strokes.iter().enumerate() {
+            let d = g.reference_point().distance(truth[3 + k]);
+            assert!(d < 0.1 * 40.0, "ghost {k} is {d:.1} off");
+        }
+        // The stem drawn on only past the fourth leaf: one ghost, and the page says why
+        // no more.
+        let (short, _) = vine(3, 200.0);
+        let s = propose(&short, &[], &ask(3)).expect("leaves along a stem");
+        assert_eq!(s.strokes.len(), 1);
+        let (none, _) = vine(4, 200.0);
+        let s = propose(&none, &[], &ask(3)).expect("leaves along a stem");
+        assert!(s.strokes.is_empty() && s.reason.as_deref() == Some(PATH_ENDS), "{s:?}");
+    }
+
+    #[test]
+    fn copies_off_the_path_or_along_a_straight_one_are_not_its() {
+        let (mut strokes, _) = vine(3, 560.0);
+        // Straight: left to the lattice.
+        strokes[0] = Stroke::new(vec![[40.0, 300.0], [560.0, 300.0]], 2.0, None);
+        let leaves: Vec<Stroke> = (0..3).map(|k| leaf(Point::new(60.0 + 40.0 * k as f64, 300.0), -0.6)).collect();
+        let straight: Vec<Stroke> = std::iter::once(strokes[0].clone()).chain(leaves.iter().cloned()).collect();
+        assert!(propose(&straight, &[], &ask(3)).is_none());
+        // The leaves 60 away from a curving stem.
+        let (vine, _) = vine(3, 560.0);
+        let away: Vec<Stroke> =
+            std::iter::once(vine[0].clone()).chain(vine[1..].iter().map(|l| l.translated(0.0, 60.0))).collect();
+        assert!(propose(&away, &[], &ask(3)).is_none());
+    }
+}
