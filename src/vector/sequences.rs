@@ -272,18 +272,32 @@ fn sites(path: &impl Fn(f64) -> Point, from: (f64, f64), step: f64, count: usize
 /// Leaves along a stem the hand draws first (issue 27: "a stem and three leaves"): the
 /// stem from half a step before the first leaf to half a step past the `n`-th (round
 /// and closed, for a `closed` path), its points off by a fifth of `wobble` of the step
-/// and swaying by `wobble` of it; then the leaves, as `leaves_along` draws them.
+/// and swaying by `wobble` of it; then the leaves, as `leaves_along` draws them (every
+/// other one on the stem's other side, where they `alternate`).
 fn stem_drawn(
     name: &str,
     path: impl Fn(f64) -> Point,
     from: (f64, f64),
     n: usize,
-    closed: bool,
+    (closed, alternate): (bool, bool),
     wobble: (f64, HandTurn),
     seed: u64,
 ) -> Sequence {
     let step = 40.0;
     let mut leaves = leaves_along(name, &path, from, n, (wobble.0, 0.0, wobble.1), seed);
+    // (Every other leaf on the stem's other side: mirrored across its tangent.)
+    if alternate {
+        for (leaf, (p, phi, _)) in
+            leaves.strokes.iter_mut().zip(sites(&path, from, step, n + BEYOND)).skip(1).step_by(2)
+        {
+            let d = Vec2::new(phi.cos(), phi.sin());
+            for q in &mut leaf.points {
+                let v = Vec2::new(q[0] - p.x, q[1] - p.y);
+                let m = d * (2.0 * v.dot(d)) - v;
+                (q[0], q[1]) = (p.x + m.x, p.y + m.y);
+            }
+        }
+    }
     let mut rng = Rng::new(seed ^ 0x5EED);
     let at = sites(&path, from, step, n + 1);
     let (t0, t1) =
@@ -315,26 +329,45 @@ fn stem_drawn(
 }
 
 /// Leaves along stems drawn first, each leaf turned with its stem, at `wobble` (share
-/// of the step) and turned off as `turn` says: an S-curve, wavy, curly and tight sines,
-/// a Bézier S and arch, and twelve round a drawn circle.
+/// of the step) and turned off as `turn` says: an S-curve, wavy, curly and tight sines
+/// (and the wavy one with its leaves on alternate sides), a Bézier S and arch, and twelve
+/// round a drawn circle.
 pub fn along_drawn(wobble: f64, turn: HandTurn, seed: u64) -> Vec<Sequence> {
     let sine =
         |amplitude: f64, scale: f64| move |x: f64| Point::new(x, 300.0 + amplitude * ((x - 300.0) / scale).sin());
     let hand = (wobble, turn);
     let k = seed * 131;
+    let open = (false, false);
     let mut out = vec![
-        stem_drawn("leaves on a drawn S-curve", sine(70.0, 110.0), (70.0, 0.5), 12, false, hand, k + 13),
-        stem_drawn("leaves on a drawn wavy stem", sine(40.0, 400.0 / TAU), (50.0, 0.5), 16, false, hand, k + 19),
-        stem_drawn("leaves on a drawn curly stem", sine(60.0, 300.0 / TAU), (50.0, 0.5), 16, false, hand, k + 23),
-        stem_drawn("leaves on a drawn tight stem", sine(50.0, 250.0 / TAU), (40.0, 0.5), 16, false, hand, k + 37),
+        stem_drawn("leaves on a drawn S-curve", sine(70.0, 110.0), (70.0, 0.5), 12, open, hand, k + 13),
+        stem_drawn("leaves on a drawn wavy stem", sine(40.0, 400.0 / TAU), (50.0, 0.5), 16, open, hand, k + 19),
+        stem_drawn("leaves on a drawn curly stem", sine(60.0, 300.0 / TAU), (50.0, 0.5), 16, open, hand, k + 23),
+        stem_drawn("leaves on a drawn tight stem", sine(50.0, 250.0 / TAU), (40.0, 0.5), 16, open, hand, k + 37),
+        stem_drawn(
+            "leaves alternating on a drawn wavy stem",
+            sine(40.0, 400.0 / TAU),
+            (50.0, 0.5),
+            16,
+            (false, true),
+            hand,
+            k + 43,
+        ),
     ];
     let arch = bezier([(60.0, 500.0), (250.0, 50.0), (650.0, 50.0), (840.0, 500.0)]);
     let s = bezier([(60.0, 150.0), (700.0, -50.0), (200.0, 750.0), (840.0, 450.0)]);
-    out.push(stem_drawn("leaves on a drawn Bézier arch", arch, (0.0, 1.0 / 8000.0), 16, false, hand, k + 29));
-    out.push(stem_drawn("leaves on a drawn Bézier S", s, (0.0, 1.0 / 8000.0), 16, false, hand, k + 30));
+    out.push(stem_drawn("leaves on a drawn Bézier arch", arch, (0.0, 1.0 / 8000.0), 16, open, hand, k + 29));
+    out.push(stem_drawn("leaves on a drawn Bézier S", s, (0.0, 1.0 / 8000.0), 16, open, hand, k + 30));
     let r = 12.0 * 40.0 / TAU;
     let circle = move |t: f64| Point::new(300.0 + r * t.cos(), 300.0 + r * t.sin());
-    out.push(stem_drawn("ring of 12 leaves round a drawn circle", circle, (0.0, TAU / 4000.0), 12, true, hand, k + 41));
+    out.push(stem_drawn(
+        "ring of 12 leaves round a drawn circle",
+        circle,
+        (0.0, TAU / 4000.0),
+        12,
+        (true, false),
+        hand,
+        k + 41,
+    ));
     finish(&mut out);
     out
 }
