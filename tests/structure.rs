@@ -578,3 +578,52 @@ fn leaves_on_a_tight_arc_are_not_read_as_a_fine_lattice() {
     }
     assert!(lattices.is_empty(), "{} of {runs}: {lattices:#?}", lattices.len());
 }
+
+/// A stem drawn once and three leaves touching it (issue 27, "a stem and three
+/// leaves"), a person's hand at 3% (`sequences::along_drawn`): synthesized, leaves go
+/// all along the drawn stem, both ways, each beginning on it (within a fifth of the
+/// step: the hand puts its own leaves 3% of the step off, and on the curly stem's tight
+/// bends a carried leaf lands up to 6 off) and a leaf's gap on from
+/// the last, and the result says it followed a curve (from these three leaves alone a
+/// chain went off the stem in a spiral).
+#[test]
+fn leaves_drawn_on_a_stem_go_all_along_it() {
+    use patternsynth::vector::sequences::{along_drawn, HandTurn};
+    for seed in 1..=3 {
+        for name in ["leaves on a drawn wavy stem", "leaves on a drawn Bézier S", "leaves on a drawn curly stem"] {
+            let q = along_drawn(0.03, HandTurn::PERSON, seed).into_iter().find(|q| q.name == name).unwrap();
+            // The stem and the first three leaves (of sixteen the stem carries).
+            let r = synth(&q.strokes[..4]);
+            assert_eq!(r.structure, Structure::Curve, "{name}");
+            let stem: Vec<Point> = r.strokes[0].points.iter().map(|p| Point::new(p[0], p[1])).collect();
+            let off = |p: Point| {
+                stem.windows(2)
+                    .map(|w| {
+                        let (d, e) = (w[1] - w[0], p - w[0]);
+                        (e - d * (e.dot(d) / d.hypot2()).clamp(0.0, 1.0)).hypot()
+                    })
+                    .fold(f64::INFINITY, f64::min)
+            };
+            let leaves = &r.strokes[1..];
+            assert!(leaves.len() >= 14, "{name}, seed {seed}: {} leaves", leaves.len());
+            for l in leaves {
+                let base = Point::new(l.points[0][0], l.points[0][1]);
+                assert!(off(base) < 0.2 * q.step, "{name}, seed {seed}: a leaf begins {:.1} off the stem", off(base));
+            }
+            // Each leaf a gap from its nearest neighbour: none stacked, none left out.
+            let bases: Vec<Point> = leaves.iter().map(|l| Point::new(l.points[0][0], l.points[0][1])).collect();
+            for (i, b) in bases.iter().enumerate() {
+                let near = bases
+                    .iter()
+                    .enumerate()
+                    .filter(|&(j, _)| j != i)
+                    .map(|(_, c)| b.distance(*c))
+                    .fold(f64::INFINITY, f64::min);
+                assert!(
+                    (0.6 * q.step..1.3 * q.step).contains(&near),
+                    "{name}, seed {seed}: a leaf {near:.1} from the next"
+                );
+            }
+        }
+    }
+}

@@ -242,6 +242,15 @@ pub fn synthesize_strokes(
         periods,
         ..GrowOptions::default()
     };
+    // Copies touching a curving stroke drawn once (a stem and its leaves) go all along it
+    // (`suggest::along`), which neither a lattice nor a similarity step reads: from three
+    // leaves on a drawn sine, a chain went off the stem in a spiral.
+    if periods.is_none() {
+        let seed = opts.variation.then_some(opts.seed);
+        if let Some(more) = super::suggest::along::fill(strokes, seed, max_elements + 1) {
+            return along_path(strokes, classification, more, opts, max_elements, progress).map_err(explain);
+        }
+    }
     let area = kurbo::Rect::new(0.0, 0.0, opts.width, opts.height);
     let mut throttle = Throttle::with_range(progress, 0.02, 0.98);
     // A mesh (pieces that share their edges) is joined afresh, not placed piece by piece,
@@ -381,6 +390,36 @@ fn translates(elements: &[Element]) -> bool {
 /// repeated as a rosette on a hexagonal lattice its diameter and a tenth apart; a
 /// larger ring, a curve or a sequence is continued both ways across the output (a ring
 /// until it closes). Other strokes stay as drawn (in a rosette, they repeat with it).
+/// The drawing, in the middle of the output, with `more` copies along its path (each
+/// with the stroke it repeats: `suggest::along::fill`).
+fn along_path(
+    strokes: &[Stroke],
+    classification: Classification,
+    more: Vec<(Stroke, usize)>,
+    opts: &StrokeOptions,
+    max_elements: usize,
+    progress: &mut dyn Progress,
+) -> Result<StrokeResult> {
+    if strokes.len() + more.len() > max_elements {
+        return Err(Error::TooLarge(format!(
+            "This output would hold more than {max_elements} elements; the limit is {max_elements}. Use a smaller output or larger strokes."
+        )));
+    }
+    let area = kurbo::Rect::new(0.0, 0.0, opts.width, opts.height);
+    let bounds = strokes.iter().skip(1).fold(strokes[0].bounds(), |r, s| r.union(s.bounds()));
+    let v = area.center() - bounds.center();
+    let (out, sources): (Vec<Stroke>, Vec<u32>) = strokes
+        .iter()
+        .cloned()
+        .enumerate()
+        .chain(more.into_iter().map(|(s, from)| (from, s)))
+        .map(|(from, s)| (s.translated(v.x, v.y), from as u32))
+        .unzip();
+    let classes: Vec<u32> = sources.iter().map(|&i| classification.classes[i as usize]).collect();
+    Throttle::new(progress).tick(1.0)?;
+    Ok(StrokeResult::new(out, classes, sources, classification, opts, Structure::Curve))
+}
+
 fn along_chain(
     strokes: &[Stroke],
     classification: Classification,

@@ -45,7 +45,9 @@ test('a built-in example is there at once, with the default output size', async 
 test('draw, classify, synthesize, download a periodic SVG', async () => {
   await drawGrid();
   assert.equal(await page.textContent('#stroke-count'), '20 strokes');
-  await page.waitForFunction(() => document.querySelectorAll('#legend .chip').length === 1);
+  // (The legend follows the drawing once its classification comes back from the
+  // worker: wait for the one of all 20 strokes, not an earlier one's single chip.)
+  await page.waitForFunction(() => document.querySelectorAll('#legend .chip').length === 1 && /class 1: 20/.test(document.querySelector('#legend').textContent)).catch(() => {});
   assert.match(await page.textContent('#legend'), /class 1: 20/);
 
   await page.fill('#out-width', '600');

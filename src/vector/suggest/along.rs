@@ -31,9 +31,10 @@ use kurbo::{Point, Vec2};
 const LOOK_BACK: usize = 32;
 /// A path is at least this many times as long as a copy is large...
 const PATH_LENGTH: f64 = 3.0;
-/// ...and its tangent turns by at least this much along it (radians, about 17 degrees;
-/// a straight one, a row, is the lattice's).
-const MIN_CURVE: f64 = 0.3;
+/// ...and its tangent turns by at least this much along it (radians, about 23 degrees;
+/// a straight one, a row along a baseline drawn a little bowed, is the lattice's: a
+/// sag of a twenty-fifth of its length turns it by 0.16).
+const MIN_CURVE: f64 = 0.4;
 /// A copy touches the path when it comes within this share of its size of it (plus
 /// twice the stroke's width).
 const ATTACH: f64 = 0.3;
@@ -220,34 +221,75 @@ fn to_polyline(p: Point, line: &[Point]) -> f64 {
         .fold(f64::INFINITY, f64::min)
 }
 
+/// Whether stroke `i` was drawn by hand (not an accepted proposal).
+fn hand(accepted: &[bool], i: usize) -> bool {
+    !accepted.get(i).copied().unwrap_or(false)
+}
+
 fn size(s: &Stroke) -> f64 {
     s.bounds().size().to_vec2().hypot()
 }
 
 /// Proposals carrying on the copies of the latest hand-drawn stroke (or, where that is
-/// the path, the one before) along a drawn path they touch; `None` where no curving path
-/// holds the latest copies.
-pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Option<Suggestions> {
+/// the path, the one before) along a drawn path they touch, those too uncertain to show
+/// held back when `sure` (not for a fill of the canvas, asked for outright); `None`
+/// where no curving path holds the latest copies.
+pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask, sure: bool) -> Option<Suggestions> {
+    follow(strokes, accepted, ask, sure)
+}
+
+/// Every copy along the path that the copies in `strokes` (a drawing to synthesize from)
+/// touch, past the last drawn and before the first, up to its ends, each with the stroke
+/// it repeats (with `seed`, a random drawn copy); at most `limit`, or `None` where no
+/// curving path holds the latest copies (`propose`'s test). Not held back by certainty:
+/// the path says where each goes.
+pub(crate) fn fill(strokes: &[Stroke], seed: Option<u64>, limit: usize) -> Option<Vec<(Stroke, usize)>> {
+    let n = strokes.len();
+    let ask = Ask { count: limit, region: None, offset: 0, seed, rows: true };
+    let on = follow(strokes, &[], &ask, false)?;
+    // (Back from the first copy: the drawing read the other way round.)
+    let reversed: Vec<Stroke> = strokes.iter().rev().cloned().collect();
+    let back = follow(&reversed, &[], &ask, false)
+        .map(|b| b.strokes.into_iter().zip(b.sources.into_iter().map(|i| n - 1 - i as usize)));
+    let mut out: Vec<(Stroke, usize)> =
+        on.strokes.into_iter().zip(on.sources.into_iter().map(|i| i as usize)).collect();
+    out.extend(back.into_iter().flatten());
+    out.truncate(limit);
+    Some(out)
+}
+
+/// `propose`, holding back ghosts too uncertain to show when `sure`.
+fn follow(strokes: &[Stroke], accepted: &[bool], ask: &Ask, sure: bool) -> Option<Suggestions> {
     let n = strokes.len();
     let lo = n.saturating_sub(LOOK_BACK);
-    let hand = |i: usize| !accepted.get(i).copied().unwrap_or(false);
-    let mut motifs = (lo..n).rev().filter(|&i| hand(i) && !strokes[i].is_dot());
-    let first = motifs.next()?;
-    let second = motifs.next();
-    along(strokes, accepted, ask, first).or_else(|| second.and_then(|m| along(strokes, accepted, ask, m)))
+    let hand = |i: usize| hand(accepted, i);
+    // The latest few hand-drawn strokes, the largest first (a leaf's outline before its
+    // midrib, which touches the stem too but is not the leaf).
+    let mut motifs: Vec<usize> = (lo..n).rev().filter(|&i| hand(i) && !strokes[i].is_dot()).take(3).collect();
+    motifs.sort_by(|&a, &b| size(&strokes[b]).total_cmp(&size(&strokes[a])));
+    motifs.into_iter().find_map(|m| along(strokes, accepted, ask, m, sure))
 }
 
 /// `propose` with the copies of stroke `m` as the motif.
-fn along(strokes: &[Stroke], accepted: &[bool], ask: &Ask, m: usize) -> Option<Suggestions> {
+fn along(strokes: &[Stroke], accepted: &[bool], ask: &Ask, m: usize, sure: bool) -> Option<Suggestions> {
     let n = strokes.len();
     let lo = n.saturating_sub(LOOK_BACK);
-    let hand = |i: usize| !accepted.get(i).copied().unwrap_or(false);
+    let hand = |i: usize| hand(accepted, i);
     let big = size(&strokes[m]);
-    let length = |s: &Stroke| s.points.windows(2).map(|w| (w[0][0] - w[1][0]).hypot(w[0][1] - w[1][1])).sum::<f64>();
+    let lengths: Vec<f64> = (0..n)
+        .map(|i| {
+            if i < lo {
+                0.0
+            } else {
+                strokes[i].points.windows(2).map(|w| (w[0][0] - w[1][0]).hypot(w[0][1] - w[1][1])).sum()
+            }
+        })
+        .collect();
+    let length = |s: usize| lengths[s];
     // Paths first (cheap): long hand-drawn strokes that curve.
     let window = 0.5 * big;
     let paths: Vec<(usize, Path)> = (lo..n)
-        .filter(|&j| j != m && hand(j) && length(&strokes[j]) >= PATH_LENGTH * big)
+        .filter(|&j| j != m && hand(j) && length(j) >= PATH_LENGTH * big)
         .filter_map(|j| Some((j, Path::new(&strokes[j], window)?)))
         .filter(|(_, p)| p.curve() >= MIN_CURVE)
         .collect();
@@ -256,10 +298,10 @@ fn along(strokes: &[Stroke], accepted: &[bool], ask: &Ask, m: usize) -> Option<S
     let paths: Vec<(usize, Path)> = paths
         .into_iter()
         .filter(|(j, _)| {
-            let (l, mine) = (length(&strokes[*j]), samples(&strokes[*j]));
+            let (l, mine) = (length(*j), samples(&strokes[*j]));
             !(lo..n).any(|i| {
                 i != *j
-                    && (length(&strokes[i]) - l).abs() < 0.3 * l
+                    && (length(i) - l).abs() < 0.3 * l
                     && !relations(&samples(&strokes[i]), &mine, size(&strokes[i])).is_empty()
             })
         })
@@ -278,7 +320,7 @@ fn along(strokes: &[Stroke], accepted: &[bool], ask: &Ask, m: usize) -> Option<S
                     && !relations(sampled[i].as_ref().expect("sampled"), &mine, size(&strokes[i])).is_empty())
         })
         .collect();
-    paths.iter().find_map(|(j, path)| along_path(strokes, accepted, ask, (*j, path), &copies, &sampled))
+    paths.iter().find_map(|(j, path)| along_path(strokes, accepted, ask, (*j, path), &copies, &sampled, sure))
 }
 
 /// The copies (`copies`, in drawing order, the motif's last) carried on along `path`:
@@ -291,8 +333,9 @@ fn along_path(
     path: (usize, &Path),
     copies: &[usize],
     sampled: &[Option<Vec<Point>>],
+    sure: bool,
 ) -> Option<Suggestions> {
-    (1..=MAX_STRIDE).find_map(|stride| along_stride(strokes, accepted, ask, path, copies, sampled, stride))
+    (1..=MAX_STRIDE).find_map(|stride| along_stride(strokes, accepted, ask, path, copies, sampled, (stride, sure)))
 }
 
 /// `along_path` with each copy like the one `stride` before it.
@@ -303,9 +346,9 @@ fn along_stride(
     (path_index, path): (usize, &Path),
     copies: &[usize],
     sampled: &[Option<Vec<Point>>],
-    stride: usize,
+    (stride, sure): (usize, bool),
 ) -> Option<Suggestions> {
-    let hand = |i: usize| !accepted.get(i).copied().unwrap_or(false);
+    let hand = |i: usize| hand(accepted, i);
     // The run: back from the latest copy, each touching the path, one way along it, and
     // lying in the path's frame as the latest of its kind (every `stride`-th) does.
     let mut run: Vec<(usize, f64, f64)> = Vec::new();
@@ -343,7 +386,8 @@ fn along_stride(
     let kind = |t: usize| if t <= end { (end - t) % stride } else { (stride - (t - end) % stride) % stride };
     let hands: Vec<usize> = (0..run.len()).filter(|&t| hand(run[t].0)).collect();
     let of_kind = |j: usize| hands.iter().copied().filter(move |&t| kind(t) == j);
-    if hands.len() < MIN_COPIES.max(stride + 1) || (0..stride).any(|j| of_kind(j).next().is_none()) {
+    // (Each kind seen at least twice: its own copies say how it lies on the path.)
+    if hands.len() < MIN_COPIES || (stride > 1 && (0..stride).any(|j| of_kind(j).count() < 2)) {
         return None;
     }
     // Unwrapped places along the path, in the run's order.
@@ -380,13 +424,19 @@ fn along_stride(
     let var_along = (along_ss + PRIOR_COPIES * prior) / (h - stride as f64 - 1.0 + PRIOR_COPIES);
     let pose_ss: f64 = hands.iter().map(|&t| run[t].2).sum();
     let var_pose = (pose_ss + PRIOR_COPIES * prior) / (h - stride as f64 + PRIOR_COPIES);
-    let reach = reach(h + PRIOR_COPIES);
+    // (As for lattices, the scatter's degrees of freedom with the prior's copies.)
+    let reach = reach(h - stride as f64 - 1.0 + PRIOR_COPIES);
     // A copy's other strokes (drawn after it and before the next copy, near it: a leaf's
     // dot, its midrib) go with each ghost carried from it.
     let parts = |own: usize| -> Vec<usize> {
         let next = copies.iter().copied().find(|&i| i > own).unwrap_or(strokes.len());
-        (own + 1..next)
-            .filter(|&i| i != path_index && hand(i))
+        let previous = copies.iter().copied().rfind(|&i| i < own);
+        // (A stroke drawn before the copy is its own where it lies nearer it than the
+        // copy before: a leaf's midrib drawn first; not the one before's, drawn after it.)
+        let at = |i: usize| strokes[i].reference_point();
+        let nearer = |i: usize| previous.is_none_or(|p| i > own || at(i).distance(at(own)) < at(i).distance(at(p)));
+        (previous.map_or(0, |i| i + 1)..next)
+            .filter(|&i| i != own && i != path_index && hand(i) && nearer(i))
             .filter(|&i| strokes[i].reference_point().distance(strokes[own].reference_point()) < size(&strokes[own]))
             .collect()
     };
@@ -406,7 +456,7 @@ fn along_stride(
             break;
         };
         let spread = var_along * (1.0 + 1.0 / means[j].2 + (t as f64 - means[j].0).powi(2) / sxx) + var_pose;
-        if reach * spread.sqrt() > TOLERANCE * gap {
+        if sure && reach * spread.sqrt() > TOLERANCE * gap {
             why = Some(UNCERTAIN);
             break;
         }
@@ -420,6 +470,14 @@ fn along_stride(
         };
         let (src, at, _) = run[from];
         let ghost = path.carry(at, s).carry(&strokes[src]);
+        // (A ghost touches the path inside its ends, as the drawn copies do: near an end
+        // its place, read off a line, may hang it past.)
+        let (touch, dist) = path.nearest(&samples(&ghost));
+        let inside = path.closed || (2.0 * path.ds..=path.length() - 2.0 * path.ds).contains(&touch);
+        if !inside || dist > ATTACH * size(&ghost) + 2.0 * ghost.width {
+            why = Some(PATH_ENDS);
+            break;
+        }
         if ask.region.is_some_and(|r| !r.contains(ghost.reference_point())) {
             break;
         }
@@ -437,7 +495,11 @@ fn along_stride(
             out.cells.push([k as i64, 0]);
         }
     }
+    // (Nothing sure enough: other readings of the drawing may be.)
     if out.strokes.is_empty() {
+        if why == Some(UNCERTAIN) {
+            return None;
+        }
         out.reason = Some(why.unwrap_or(PATH_ENDS).into());
     }
     Some(out)
@@ -458,6 +520,10 @@ mod tests {
             })
             .collect();
         Stroke::new(pts, 2.0, None)
+    }
+
+    fn propose_sure(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Option<Suggestions> {
+        propose(strokes, accepted, ask, true)
     }
 
     fn ask(count: usize) -> Ask {
@@ -499,7 +565,7 @@ mod tests {
     #[test]
     fn leaves_go_on_along_a_drawn_stem_and_stop_at_its_end() {
         let (strokes, truth) = vine(3, 560.0);
-        let s = propose(&strokes, &[], &ask(3)).expect("leaves along a stem");
+        let s = propose_sure(&strokes, &[], &ask(3)).expect("leaves along a stem");
         assert!(s.strokes.len() >= 2, "{:?}", s.reason);
         for (k, g) in s.strokes.iter().enumerate() {
             let d = g.reference_point().distance(truth[3 + k]);
@@ -508,21 +574,23 @@ mod tests {
         // The stem drawn on only past the fourth leaf: one ghost, and the page says why
         // no more.
         let (short, _) = vine(3, 200.0);
-        let s = propose(&short, &[], &ask(3)).expect("leaves along a stem");
+        let s = propose_sure(&short, &[], &ask(3)).expect("leaves along a stem");
         assert_eq!(s.strokes.len(), 1);
         let (none, _) = vine(4, 200.0);
-        let s = propose(&none, &[], &ask(3)).expect("leaves along a stem");
+        let s = propose_sure(&none, &[], &ask(3)).expect("leaves along a stem");
         assert!(s.strokes.is_empty() && s.reason.as_deref() == Some(PATH_ENDS), "{s:?}");
     }
 
     #[test]
     fn leaves_on_alternate_sides_go_on_alternating() {
         let lean = |k: usize| if k % 2 == 0 { -0.6 } else { 0.6 };
-        for drawn in [3, 4] {
+        // (Three drawn show the other side once, which says too little: nothing yet.)
+        let (three, _) = vine_leaning(3, 560.0, &lean);
+        assert!(propose_sure(&three, &[], &ask(3)).is_none_or(|s| s.strokes.is_empty()));
+        for drawn in [4, 5] {
             let (strokes, truth) = vine_leaning(drawn, 560.0, &lean);
-            let s = propose(&strokes, &[], &ask(3)).expect("leaves along a stem");
-            // (Three drawn show the other side once: one ghost.)
-            assert!(s.strokes.len() >= drawn - 2, "{drawn} drawn: {:?}", s.reason);
+            let s = propose_sure(&strokes, &[], &ask(3)).expect("leaves along a stem");
+            assert!(!s.strokes.is_empty(), "{drawn} drawn: {:?}", s.reason);
             for (k, g) in s.strokes.iter().enumerate() {
                 let d = g.reference_point().distance(truth[drawn + k]);
                 assert!(d < 0.1 * 40.0, "{drawn} drawn: ghost {k} is {d:.1} off");
@@ -537,11 +605,11 @@ mod tests {
         strokes[0] = Stroke::new(vec![[40.0, 300.0], [560.0, 300.0]], 2.0, None);
         let leaves: Vec<Stroke> = (0..3).map(|k| leaf(Point::new(60.0 + 40.0 * k as f64, 300.0), -0.6)).collect();
         let straight: Vec<Stroke> = std::iter::once(strokes[0].clone()).chain(leaves.iter().cloned()).collect();
-        assert!(propose(&straight, &[], &ask(3)).is_none());
+        assert!(propose_sure(&straight, &[], &ask(3)).is_none());
         // The leaves 60 away from a curving stem.
         let (vine, _) = vine(3, 560.0);
         let away: Vec<Stroke> =
             std::iter::once(vine[0].clone()).chain(vine[1..].iter().map(|l| l.translated(0.0, 60.0))).collect();
-        assert!(propose(&away, &[], &ask(3)).is_none());
+        assert!(propose_sure(&away, &[], &ask(3)).is_none());
     }
 }

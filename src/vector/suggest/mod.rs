@@ -36,7 +36,7 @@
 //! finished by hand weighs by its hand-drawn share).
 
 mod ahead;
-mod along;
+pub(crate) mod along;
 mod certainty;
 mod drift;
 mod fit;
@@ -180,12 +180,12 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
         rows,
     };
     let accepted: Vec<bool> = weight.iter().map(|&w| w < 1.0).collect();
-    // Copies along a drawn path that curves go where the path takes them (`along`).
-    if let Some(s) = along::propose(strokes, &accepted, &ask(true)) {
-        return Ok(s);
-    }
     let classification =
         classify_drawing(strokes, opts.path_tolerance, opts.width_tolerance, opts.color_tolerance, &accepted)?;
+    // Copies along a drawn path that curves go where the path takes them (`along`).
+    if let Some(s) = along::propose(strokes, &accepted, &ask(true), !opts.fill) {
+        return Ok(s);
+    }
     // The repetition is one of motifs: a copy of a motif of several strokes is one
     // element, proposed whole (an accepted copy is one whose strokes all were).
     let motifs = &classification.motifs;

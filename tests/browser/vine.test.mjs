@@ -1,0 +1,105 @@
+// A stem drawn with the mouse and three leaves along it (issue 27, "a stem and three
+// leaves"): the ghosts follow the drawn stem round its bends, each leaf turned with it;
+// Tab accepts them, and "Fill the canvas" adds leaves up to the stem's end, and no
+// further. Screenshots:
+// out/vine-ghosts.png, out/vine-accepted.png.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { mkdirSync } from 'node:fs';
+import { openEmptyCanvas } from './harness.mjs';
+
+/** The stem: a sine across the 800 x 500 canvas, from x = 60 to 740. */
+const stem = (x) => [x, 250 + 60 * Math.sin((x - 400) / 70)];
+const STEM = Array.from({ length: 69 }, (_, k) => stem(60 + 10 * k));
+
+/** Points along the stem every `gap` of arc length from x = `from`, each with the
+ *  stem's direction there. */
+function sites(from, gap, count) {
+  const out = [];
+  let along = 0;
+  for (let x = from; out.length < count && x < 740; x += 0.25) {
+    const [p, q] = [stem(x), stem(x + 0.25)];
+    if (out.length === 0 || along >= gap) {
+      out.push([p, Math.atan2(q[1] - p[1], q[0] - p[0])]);
+      along = 0;
+    }
+    along += Math.hypot(q[0] - p[0], q[1] - p[1]);
+  }
+  return out;
+}
+
+async function drawPolyline(page, pts) {
+  const box = await page.locator('#draw').boundingBox();
+  const at = (x, y) => [box.x + (x * box.width) / 800, box.y + (y * box.height) / 500];
+  await page.mouse.move(...at(...pts[0]));
+  await page.mouse.down();
+  for (const p of pts.slice(1)) await page.mouse.move(...at(...p), { steps: 2 });
+  await page.mouse.up();
+}
+
+/** A leaf: a loop 40 long from its base `p`, leaning 0.6 off the stem's direction
+ *  `phi`, its points wobbling by `wobble` across. */
+function leaf([p, phi], wobble, phase) {
+  const theta = phi - 0.6;
+  return Array.from({ length: 25 }, (_, k) => {
+    const t = (k / 24) * 2 * Math.PI;
+    const along = 20 * (1 - Math.cos(t)), across = 7 * Math.sin(t) + (((k + phase) % 3) - 1) * wobble;
+    return [p[0] + along * Math.cos(theta) - across * Math.sin(theta), p[1] + along * Math.sin(theta) + across * Math.cos(theta)];
+  });
+}
+
+const settled = (page) => page.waitForFunction(() => document.querySelector('#suggest-status').getAttribute('aria-busy') === 'false', null, { timeout: 15000 });
+const strokeCount = async (page) => Number((await page.textContent('#stroke-count')).split(' ')[0]);
+
+/** The distance from `p` to the drawn stem. */
+function offStem(p) {
+  let best = Infinity;
+  for (let i = 0; i + 1 < STEM.length; i++) {
+    const [a, b] = [STEM[i], STEM[i + 1]];
+    const [dx, dy] = [b[0] - a[0], b[1] - a[1]];
+    const u = Math.max(0, Math.min(1, ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / (dx * dx + dy * dy)));
+    best = Math.min(best, Math.hypot(p[0] - a[0] - u * dx, p[1] - a[1] - u * dy));
+  }
+  return best;
+}
+
+test('a stem and three leaves drawn with the mouse: ghosts follow the stem to its end, Tab accepts', async () => {
+  mkdirSync('out', { recursive: true });
+  const { page, close } = await openEmptyCanvas({ height: 1000 });
+  try {
+    await drawPolyline(page, STEM);
+    const at = sites(80, 50, 3);
+    for (let k = 0; k < 3; k++) await drawPolyline(page, leaf(at[k], 0.6, k));
+    await settled(page);
+    const status = await page.textContent('#suggest-status');
+    assert.match(status, /^[1-9]\d* suggested stroke/, status);
+    await page.screenshot({ path: 'out/vine-ghosts.png' });
+    // Tab (just after drawing) accepts the ghosts.
+    const before = await strokeCount(page);
+    await page.keyboard.press('Tab');
+    await page.waitForFunction((n) => Number(document.querySelector('#stroke-count').textContent.split(' ')[0]) > n, before);
+    await settled(page);
+    // "Fill the canvas" adds every leaf the stem still carries.
+    const accepted = await strokeCount(page);
+    await page.click('#fill-canvas');
+    await page.waitForFunction((n) => Number(document.querySelector('#stroke-count').textContent.split(' ')[0]) > n, accepted);
+    await settled(page);
+    await page.screenshot({ path: 'out/vine-accepted.png' });
+    const leaves = (await page.evaluate(() => window.playground.drawing().strokes.map((s) => s.points))).slice(1);
+    // Leaves every 50 along the stem from x = 80 to its end at 740: about 19 (the arc is
+    // about 1,000 long); each begins on the stem (the ghosts carry the base with them)
+    // and the last before its end.
+    assert.ok(leaves.length >= 15, `${leaves.length} leaves`);
+    for (const l of leaves) assert.ok(offStem(l[0]) < 6, `a leaf begins ${offStem(l[0]).toFixed(1)} off the stem`);
+    const bases = leaves.map((l) => l[0]);
+    for (let i = 1; i < bases.length; i++) {
+      const d = Math.hypot(bases[i][0] - bases[i - 1][0], bases[i][1] - bases[i - 1][1]);
+      assert.ok(d > 30 && d < 52, `leaves ${i - 1} and ${i} are ${d.toFixed(1)} apart`);
+    }
+    assert.ok(Math.max(...bases.map((b) => b[0])) <= 745, 'no leaf past the stem\'s end');
+    await page.click('#undo');
+    assert.ok((await strokeCount(page)) < leaves.length + 1, 'undo takes the accepted leaves back');
+  } finally {
+    await close();
+  }
+});
