@@ -349,7 +349,7 @@ fn segment_distance(p0: Point, p1: Point, q0: Point, q1: Point) -> f64 {
         .min(point_segment(q1, p0, p1))
 }
 
-fn point_segment(p: Point, a: Point, b: Point) -> f64 {
+pub(crate) fn point_segment(p: Point, a: Point, b: Point) -> f64 {
     let d = b - a;
     let len2 = d.hypot2();
     let t = if len2 > 0.0 { ((p - a).dot(d) / len2).clamp(0.0, 1.0) } else { 0.0 };

@@ -18,7 +18,7 @@
 
 mod cells;
 mod complete;
-mod contact;
+pub(crate) mod contact;
 mod kinds;
 
 use super::element::{Element, Placed};

@@ -23,6 +23,7 @@ use super::sequence::{relations, Ask};
 use super::{Suggestions, FALLOFF, TOLERANCE};
 use crate::rng::Rng;
 use crate::vector::frechet::closed_loop;
+use crate::vector::motif::contact::point_segment;
 use crate::vector::similarity::{samples, Similarity};
 use crate::vector::stroke::Stroke;
 use kurbo::{Point, Vec2};
@@ -212,13 +213,7 @@ impl Path {
 
 /// The squared distance from `p` to the polyline through `line`.
 fn to_polyline(p: Point, line: &[Point]) -> f64 {
-    line.windows(2)
-        .map(|w| {
-            let (d, e) = (w[1] - w[0], p - w[0]);
-            let u = (e.dot(d) / d.hypot2().max(1e-12)).clamp(0.0, 1.0);
-            (e - d * u).hypot2()
-        })
-        .fold(f64::INFINITY, f64::min)
+    line.windows(2).map(|w| point_segment(p, w[0], w[1]).powi(2)).fold(f64::INFINITY, f64::min)
 }
 
 /// Whether stroke `i` was drawn by hand (not an accepted proposal).
