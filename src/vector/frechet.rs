@@ -78,7 +78,7 @@ impl Shape {
             });
         let centre = lo.midpoint(hi);
         let rel: Vec<Point> = pts.iter().map(|p| (*p - centre).to_point()).collect();
-        let points = resample(&rel, spacing);
+        let points = resample(&rel, spacing, MAX_SAMPLES);
         let (low, high) = points.iter().fold(
             (Vec2::new(f64::INFINITY, f64::INFINITY), Vec2::new(f64::NEG_INFINITY, f64::NEG_INFINITY)),
             |(l, h), p| (Vec2::new(l.x.min(p.x), l.y.min(p.y)), Vec2::new(h.x.max(p.x), h.y.max(p.y))),
@@ -249,11 +249,12 @@ impl Shape {
 pub(crate) fn resample_count(pts: &[Point], count: usize) -> Vec<Point> {
     let len: f64 = pts.windows(2).map(|w| w[0].distance(w[1])).sum();
     // A hair over the exact step, so rounding never asks for one sample more.
-    resample(pts, len / (count.clamp(2, MAX_SAMPLES) - 1) as f64 * (1.0 + 1e-9))
+    resample(pts, len / (count.clamp(2, MAX_SAMPLES) - 1) as f64 * (1.0 + 1e-9), MAX_SAMPLES)
 }
 
-/// Resamples a polyline at equal arc-length steps, keeping both ends.
-fn resample(pts: &[Point], spacing: f64) -> Vec<Point> {
+/// Resamples a polyline at equal arc-length steps of about `spacing` (at most `max`
+/// points), keeping both ends.
+pub(crate) fn resample(pts: &[Point], spacing: f64, max: usize) -> Vec<Point> {
     if pts.len() < 2 {
         return pts.to_vec();
     }
@@ -261,7 +262,7 @@ fn resample(pts: &[Point], spacing: f64) -> Vec<Point> {
     if len <= 0.0 {
         return vec![pts[0]];
     }
-    let n = ((len / spacing.max(1e-12)).ceil() as usize).clamp(1, MAX_SAMPLES - 1);
+    let n = ((len / spacing.max(1e-12)).ceil() as usize).clamp(1, max.max(2) - 1);
     let step = len / n as f64;
     let mut out = Vec::with_capacity(n + 1);
     out.push(pts[0]);

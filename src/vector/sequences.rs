@@ -303,7 +303,8 @@ fn stem_drawn(
     let (t0, t1) =
         if closed { (from.0, at[n].2) } else { (from.0 - 0.5 * (at[1].2 - at[0].2), 0.5 * (at[n - 1].2 + at[n].2)) };
     let phase = rng.next_f64() * TAU;
-    let count = ((t1 - t0) / from.1 / 40.0).ceil().max(8.0) as usize;
+    // (A point every 4 of the step's 40 or so, as a pen's coalesced events give.)
+    let count = ((t1 - t0) / from.1 / 8.0).ceil().max(8.0) as usize;
     let noise = 0.2 * wobble.0 * step;
     let mut points: Vec<[f64; 2]> = (0..=count)
         .map(|k| {

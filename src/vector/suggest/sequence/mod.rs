@@ -485,7 +485,7 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
 
 /// `points` averaged over five along the path (fewer at an open path's ends; round a
 /// closed loop, across its closing).
-fn smoothed(points: &[Point]) -> Vec<Point> {
+pub(in crate::vector::suggest) fn smoothed(points: &[Point]) -> Vec<Point> {
     let n = points.len();
     let closed = crate::vector::frechet::closed_loop(points);
     // (A closed loop's last point repeats its first.)

@@ -18,15 +18,19 @@
 //! for lattices (`certainty::reach`), from the spread of the places about that line and
 //! of the copies' poses in the path's frame.
 
-use super::certainty::reach;
 use super::sequence::{relations, Ask};
 use super::{Suggestions, FALLOFF, TOLERANCE};
 use crate::rng::Rng;
-use crate::vector::frechet::closed_loop;
-use crate::vector::motif::contact::point_segment;
-use crate::vector::similarity::{samples, Similarity};
+use crate::vector::similarity::samples;
 use crate::vector::stroke::Stroke;
-use kurbo::{Point, Vec2};
+use fit::Fit;
+use kurbo::Point;
+use path::Path;
+use run::{Candidate, Run, ATTACH};
+
+mod fit;
+mod path;
+mod run;
 
 /// Strokes looked back over for the path and the copies.
 const LOOK_BACK: usize = 32;
@@ -36,185 +40,16 @@ const PATH_LENGTH: f64 = 3.0;
 /// a straight one, a row along a baseline drawn a little bowed, is the lattice's: a
 /// sag of a twenty-fifth of its length turns it by 0.16).
 const MIN_CURVE: f64 = 0.4;
-/// A copy touches the path when it comes within this share of its size of it (plus
-/// twice the stroke's width).
-const ATTACH: f64 = 0.3;
-/// Each gap along the path is within this factor of the median either way.
-const GAP_SPREAD: f64 = 1.6;
-/// At least this many hand-drawn copies, and at most this many read.
+/// At least this many hand-drawn copies.
 const MIN_COPIES: usize = 3;
-const MAX_COPIES: usize = 8;
-/// The hand's prior scatter of a copy's place, as a share of the gap, counted as
-/// `PRIOR_COPIES` copies.
-const PRIOR_SCATTER: f64 = 0.05;
-const PRIOR_COPIES: f64 = 3.0;
-/// A copy lies in the path's frame as the latest of its kind does when, registered
-/// there, its points are within this share of its size of that one's (rms)...
-const POSE: f64 = 0.2;
-/// ...the latest copy's kind being every copy (1) or every other one (2: leaves on
-/// alternate sides of a stem).
+/// A copy's kind is every copy (1) or every other one (2: leaves on alternate sides of
+/// a stem).
 const MAX_STRIDE: usize = 2;
 /// A ghost is on a drawn copy when their centres lie within this share of the gap.
 const DRAWN: f64 = 0.3;
 
 const PATH_ENDS: &str = "The next copy would go past the end of the path: draw it on, and the copies follow it.";
 const UNCERTAIN: &str = "The copies along the path are spaced too unevenly to go on from: draw one more.";
-
-/// A drawn path resampled evenly by arc length and smoothed.
-struct Path {
-    points: Vec<Point>,
-    /// Arc length between consecutive points.
-    ds: f64,
-    closed: bool,
-    /// Half the window the tangent is read over (arc length).
-    window: f64,
-}
-
-impl Path {
-    fn new(stroke: &Stroke, window: f64) -> Option<Path> {
-        let raw: Vec<Point> = stroke.points.iter().map(|p| Point::new(p[0], p[1])).collect();
-        let closed = closed_loop(&raw);
-        let length: f64 = raw.windows(2).map(|w| w[0].distance(w[1])).sum();
-        if length <= 0.0 {
-            return None;
-        }
-        let n = ((length / 2.0).ceil() as usize).clamp(16, 1024);
-        let ds = length / n as f64;
-        let mut points = Vec::with_capacity(n + 1);
-        let (mut seg, mut into) = (0usize, 0.0);
-        for k in 0..=n {
-            let want = k as f64 * ds;
-            while seg + 1 < raw.len() - 1 && into + raw[seg].distance(raw[seg + 1]) < want {
-                into += raw[seg].distance(raw[seg + 1]);
-                seg += 1;
-            }
-            let len = raw[seg].distance(raw[(seg + 1).min(raw.len() - 1)]).max(1e-12);
-            points.push(raw[seg].lerp(raw[(seg + 1).min(raw.len() - 1)], ((want - into) / len).clamp(0.0, 1.0)));
-        }
-        // (A hand's jaggies would turn the tangent at random: averaged over 5 points.)
-        let smooth: Vec<Point> = (0..points.len())
-            .map(|i| {
-                let r = 2usize.min(i).min(points.len() - 1 - i);
-                let sum = points[i - r..=i + r].iter().fold(Vec2::ZERO, |a, p| a + p.to_vec2());
-                (sum / (2 * r + 1) as f64).to_point()
-            })
-            .collect();
-        Some(Path { points: smooth, ds, closed, window })
-    }
-
-    fn length(&self) -> f64 {
-        self.ds * (self.points.len() - 1) as f64
-    }
-
-    /// `s` brought onto the path (round a closed one), or `None` past an open one's ends.
-    fn on(&self, s: f64) -> Option<f64> {
-        let l = self.length();
-        if self.closed {
-            Some(s.rem_euclid(l))
-        } else {
-            (-1e-9..=l + 1e-9).contains(&s).then_some(s.clamp(0.0, l))
-        }
-    }
-
-    fn at(&self, s: f64) -> Point {
-        let x = (s / self.ds).clamp(0.0, (self.points.len() - 1) as f64);
-        let i = (x.floor() as usize).min(self.points.len() - 2);
-        self.points[i].lerp(self.points[i + 1], x - i as f64)
-    }
-
-    /// The tangent's direction at `s` (radians), read over `window` either side.
-    fn heading(&self, s: f64) -> f64 {
-        let l = self.length();
-        let (a, b) = if self.closed {
-            (self.at((s - self.window).rem_euclid(l)), self.at((s + self.window).rem_euclid(l)))
-        } else {
-            (self.at((s - self.window).max(0.0)), self.at((s + self.window).min(l)))
-        };
-        (b - a).atan2()
-    }
-
-    /// How far the tangent turns along the path (the range of its unwrapped direction).
-    fn curve(&self) -> f64 {
-        let steps = (self.length() / self.window.max(self.ds)).ceil().max(2.0) as usize;
-        let (mut lo, mut hi, mut acc, mut prev) = (0.0f64, 0.0f64, 0.0, self.heading(0.0));
-        for k in 1..=steps {
-            let h = self.heading(self.length() * k as f64 / steps as f64);
-            acc += (h - prev + std::f64::consts::PI).rem_euclid(std::f64::consts::TAU) - std::f64::consts::PI;
-            prev = h;
-            (lo, hi) = (lo.min(acc), hi.max(acc));
-        }
-        hi - lo
-    }
-
-    /// Where `points` come nearest the path: the arc length there and the distance.
-    fn nearest(&self, points: &[Point]) -> (f64, f64) {
-        let mut best = (0.0, f64::INFINITY);
-        for (i, w) in self.points.windows(2).enumerate() {
-            let d = w[1] - w[0];
-            for &p in points {
-                let u = ((p - w[0]).dot(d) / d.hypot2().max(1e-12)).clamp(0.0, 1.0);
-                let dist = (p - (w[0] + d * u)).hypot();
-                if dist < best.1 {
-                    best = ((i as f64 + u) * self.ds, dist);
-                }
-            }
-        }
-        best
-    }
-
-    /// Where on the path, within `window` of `near`, `points` lie as `target` lies at
-    /// `at` in the path's frame: the arc length from which carrying them to `at` brings
-    /// them nearest `target`, and their mean square distance from it there.
-    fn register(&self, points: &[Point], target: &[Point], at: f64, near: f64, window: f64) -> (f64, f64) {
-        let msd = |s: f64| {
-            let carry = self.carry(s, at);
-            points.iter().map(|&p| to_polyline(carry.apply(p), target)).sum::<f64>() / points.len().max(1) as f64
-        };
-        let k = (window / self.ds).ceil() as i64;
-        let i0 = (near / self.ds).round() as i64;
-        let costs: Vec<(f64, f64)> =
-            (i0 - k..=i0 + k).filter_map(|i| self.on(i as f64 * self.ds)).map(|s| (s, msd(s))).collect();
-        let Some(b) = (0..costs.len()).min_by(|&x, &y| costs[x].1.total_cmp(&costs[y].1)) else {
-            return (near, f64::INFINITY);
-        };
-        // (Between samples: the parabola through the least cost and its neighbours.)
-        if b > 0 && b + 1 < costs.len() {
-            let (l, m, r) = (costs[b - 1].1, costs[b].1, costs[b + 1].1);
-            let curve = l - 2.0 * m + r;
-            if curve > 1e-12 {
-                let shift = (0.5 * (l - r) / curve).clamp(-0.5, 0.5);
-                let s = costs[b].0 + shift * self.ds;
-                return (s, msd(s));
-            }
-        }
-        costs[b]
-    }
-
-    /// The similarity carrying what lies at arc length `from` to `to`, in the path's
-    /// frame (turned as the tangent turns, about the path's point).
-    fn carry(&self, from: f64, to: f64) -> Similarity {
-        let turn = self.heading(to) - self.heading(from);
-        let a = Vec2::new(turn.cos(), turn.sin());
-        let (p, q) = (self.at(from).to_vec2(), self.at(to).to_vec2());
-        Similarity { a, b: q - crate::vector::similarity::mul(a, p) }
-    }
-
-    /// The signed arc length from `a` to `b` (the shorter way round a closed path).
-    fn gap(&self, a: f64, b: f64) -> f64 {
-        let d = b - a;
-        if self.closed {
-            let l = self.length();
-            (d + 0.5 * l).rem_euclid(l) - 0.5 * l
-        } else {
-            d
-        }
-    }
-}
-
-/// The squared distance from `p` to the polyline through `line`.
-fn to_polyline(p: Point, line: &[Point]) -> f64 {
-    line.windows(2).map(|w| point_segment(p, w[0], w[1]).powi(2)).fold(f64::INFINITY, f64::min)
-}
 
 /// Whether stroke `i` was drawn by hand (not an accepted proposal).
 fn hand(accepted: &[bool], i: usize) -> bool {
@@ -330,97 +165,45 @@ fn along_path(
     sampled: &[Option<Vec<Point>>],
     sure: bool,
 ) -> Option<Suggestions> {
-    (1..=MAX_STRIDE).find_map(|stride| along_stride(strokes, accepted, ask, path, copies, sampled, (stride, sure)))
+    let candidates: Vec<Candidate> = copies
+        .iter()
+        .map(|&i| {
+            let points = sampled[i].as_deref()?;
+            Some(Candidate {
+                index: i,
+                points,
+                size: size(&strokes[i]),
+                width: strokes[i].width,
+                nearest: path.1.nearest(points),
+            })
+        })
+        .collect::<Option<_>>()?;
+    let hand = |i: usize| hand(accepted, i);
+    (1..=MAX_STRIDE).find_map(|stride| {
+        let run = Run::read(path.1, &candidates, stride, &hand)?;
+        ghosts(strokes, &hand, ask, path, copies, &run, sure)
+    })
 }
 
-/// `along_path` with each copy like the one `stride` before it.
-fn along_stride(
+/// The ghosts carrying `run` on along the path.
+fn ghosts(
     strokes: &[Stroke],
-    accepted: &[bool],
+    hand: &dyn Fn(usize) -> bool,
     ask: &Ask,
     (path_index, path): (usize, &Path),
     copies: &[usize],
-    sampled: &[Option<Vec<Point>>],
-    (stride, sure): (usize, bool),
+    run: &Run,
+    sure: bool,
 ) -> Option<Suggestions> {
-    let hand = |i: usize| hand(accepted, i);
-    // The run: back from the latest copy, each touching the path, one way along it, and
-    // lying in the path's frame as the latest of its kind (every `stride`-th) does.
-    let mut run: Vec<(usize, f64, f64)> = Vec::new();
-    for &i in copies.iter().rev() {
-        let pts = sampled[i].as_ref()?;
-        let (near, dist) = path.nearest(pts);
-        let big = size(&strokes[i]);
-        if dist > ATTACH * big + 2.0 * strokes[i].width {
-            break;
-        }
-        // (Placed where, in the path's frame, it lies as the latest copy of its kind does
-        // there: the point it comes nearest at is as loose as its outline, and its
-        // centre's foot shifts with the path's curvature.)
-        let (s, msd) = match run.get(run.len() % stride).filter(|_| run.len() >= stride) {
-            None => (near, 0.0),
-            Some(&(latest, at, _)) => path.register(pts, sampled[latest].as_ref()?, at, near, big),
-        };
-        if msd > (POSE * big).powi(2) {
-            break;
-        }
-        if let [.., (_, a, _), (_, b, _)] = run[..] {
-            // (Each gap one way, as the one after it.)
-            if path.gap(s, b).signum() != path.gap(b, a).signum() {
-                break;
-            }
-        }
-        run.push((i, s, msd));
-        if run.iter().filter(|r| hand(r.0)).count() >= MAX_COPIES {
-            break;
-        }
-    }
-    run.reverse();
-    let end = run.len().checked_sub(1)?;
-    // Which of the `stride` kinds copy `t` is (0: the latest's).
-    let kind = |t: usize| if t <= end { (end - t) % stride } else { (stride - (t - end) % stride) % stride };
-    let hands: Vec<usize> = (0..run.len()).filter(|&t| hand(run[t].0)).collect();
-    let of_kind = |j: usize| hands.iter().copied().filter(move |&t| kind(t) == j);
+    let (end, stride) = (run.end(), run.stride);
+    let hands: Vec<usize> = (0..run.copies.len()).filter(|&t| hand(run.copies[t].index)).collect();
+    let of_kind = |j: usize| hands.iter().copied().filter(move |&t| run.kind(t) == j);
     // (Each kind seen at least twice: its own copies say how it lies on the path.)
     if hands.len() < MIN_COPIES || (stride > 1 && (0..stride).any(|j| of_kind(j).count() < 2)) {
         return None;
     }
-    // Unwrapped places along the path, in the run's order.
-    let mut places = vec![run[0].1];
-    for w in run.windows(2) {
-        let last = *places.last()?;
-        places.push(last + path.gap(w[0].1, w[1].1));
-    }
-    let mut gaps: Vec<f64> = places.windows(2).map(|w| (w[1] - w[0]).abs()).collect();
-    gaps.sort_by(f64::total_cmp);
-    let median = gaps[gaps.len() / 2];
-    if median <= 0.0 || gaps.iter().any(|&g| g > GAP_SPREAD * median || g < median / GAP_SPREAD) {
-        return None;
-    }
-    // The places fitted by lines of one slope in the run's order, one for each kind
-    // (hand-drawn copies only: an accepted one sits where the line put it).
-    let h = hands.len() as f64;
-    let means: Vec<(f64, f64, f64)> = (0..stride)
-        .map(|j| {
-            let n = of_kind(j).count() as f64;
-            (of_kind(j).map(|t| t as f64).sum::<f64>() / n, of_kind(j).map(|t| places[t]).sum::<f64>() / n, n)
-        })
-        .collect();
-    let sxx: f64 = hands.iter().map(|&t| (t as f64 - means[kind(t)].0).powi(2)).sum();
-    let sxy: f64 = hands.iter().map(|&t| (t as f64 - means[kind(t)].0) * (places[t] - means[kind(t)].1)).sum();
-    let step = sxy / sxx.max(1e-12);
-    let place = |t: usize| means[kind(t)].1 + step * (t as f64 - means[kind(t)].0);
-    let gap = step.abs();
-    // The scatter about them: of the places along the path, and of the copies' poses in
-    // its frame (each copy's mean square distance from the latest of its kind, registered
-    // in the path's frame).
-    let prior = (PRIOR_SCATTER * gap).powi(2);
-    let along_ss: f64 = hands.iter().map(|&t| (places[t] - place(t)).powi(2)).sum();
-    let var_along = (along_ss + PRIOR_COPIES * prior) / (h - stride as f64 - 1.0 + PRIOR_COPIES);
-    let pose_ss: f64 = hands.iter().map(|&t| run[t].2).sum();
-    let var_pose = (pose_ss + PRIOR_COPIES * prior) / (h - stride as f64 + PRIOR_COPIES);
-    // (As for lattices, the scatter's degrees of freedom with the prior's copies.)
-    let reach = reach(h - stride as f64 - 1.0 + PRIOR_COPIES);
+    let fit = Fit::new(run, &run.places(path), &hands)?;
+    let gap = fit.step.abs();
     // A copy's other strokes (drawn after it and before the next copy, near it: a leaf's
     // dot, its midrib) go with each ghost carried from it.
     let parts = |own: usize| -> Vec<usize> {
@@ -432,7 +215,7 @@ fn along_stride(
         let nearer = |i: usize| previous.is_none_or(|p| i > own || at(i).distance(at(own)) < at(i).distance(at(p)));
         (previous.map_or(0, |i| i + 1)..next)
             .filter(|&i| i != own && i != path_index && hand(i) && nearer(i))
-            .filter(|&i| strokes[i].reference_point().distance(strokes[own].reference_point()) < size(&strokes[own]))
+            .filter(|&i| at(i).distance(at(own)) < size(&strokes[own]))
             .collect()
     };
     let drawn = |g: &Stroke| {
@@ -444,27 +227,25 @@ fn along_stride(
     let mut why = None;
     for k in 1..=ask.count {
         let t = end + k;
-        let j = kind(t);
+        let j = run.kind(t);
         // (Read off the line, round a closed path's length.)
-        let Some(s) = path.on(place(t)) else {
+        let Some(s) = path.on(fit.place(t, j)) else {
             why = Some(PATH_ENDS);
             break;
         };
-        let spread = var_along * (1.0 + 1.0 / means[j].2 + (t as f64 - means[j].0).powi(2) / sxx) + var_pose;
-        if sure && reach * spread.sqrt() > TOLERANCE * gap {
+        if sure && fit.reach * fit.spread(t, j).sqrt() > TOLERANCE * gap {
             why = Some(UNCERTAIN);
             break;
         }
         // The latest hand-drawn copy of its kind carried to its place, or with variation
         // a random one.
         let mine: Vec<usize> = of_kind(j).collect();
-        let latest = *mine.last()?;
+        let latest = run.copies[*mine.last()?];
         let from = match &mut rng {
-            Some(r) => mine[r.below(mine.len())],
+            Some(r) => run.copies[mine[r.below(mine.len())]],
             None => latest,
         };
-        let (src, at, _) = run[from];
-        let ghost = path.carry(at, s).carry(&strokes[src]);
+        let ghost = path.carry(from.at, s).carry(&strokes[from.index]);
         // (A ghost touches the path inside its ends, as the drawn copies do: near an end
         // its place, read off a line, may hang it past.)
         let (touch, dist) = path.nearest(&samples(&ghost));
@@ -480,9 +261,9 @@ fn along_stride(
             why = Some("The copies along the path are complete.");
             break;
         }
-        let with = path.carry(run[latest].1, s);
-        let ghosts =
-            std::iter::once((ghost, src)).chain(parts(run[latest].0).into_iter().map(|p| (with.carry(&strokes[p]), p)));
+        let with = path.carry(latest.at, s);
+        let ghosts = std::iter::once((ghost, from.index))
+            .chain(parts(latest.index).into_iter().map(|p| (with.carry(&strokes[p]), p)));
         for (g, source) in ghosts {
             out.strokes.push(g);
             out.confidence.push(FALLOFF.powi(k as i32));
