@@ -582,16 +582,20 @@ fn leaves_on_a_tight_arc_are_not_read_as_a_fine_lattice() {
 /// A stem drawn once and three leaves touching it (issue 27, "a stem and three
 /// leaves"), a person's hand at 3% (`sequences::along_drawn`): synthesized, leaves go
 /// all along the drawn stem, both ways, each beginning on it (within a fifth of the
-/// step: the hand puts its own leaves 3% of the step off) and a leaf's gap on from
+/// step, the median within 5%: the hand puts its own leaves 3% of the step off;
+/// measured: median 0.8, 95% within 3.5, at most 6.2 of a step of 40, the most on the
+/// tight stem's bends, of radius 32) and a leaf's gap on from
 /// the last, and the result says it followed a curve (from these three leaves alone a
 /// chain went off the stem in a spiral).
 #[test]
 fn leaves_drawn_on_a_stem_go_all_along_it() {
     use patternsynth::vector::sequences::{along_drawn, HandTurn};
+    let (mut offsets, mut step) = (Vec::new(), 0.0);
     for seed in 1..=3 {
-        // (Not yet the curly stem: on its tight bends a carried leaf lands up to 15 off.)
-        for name in ["leaves on a drawn wavy stem", "leaves on a drawn Bézier S"] {
+        let stems = ["wavy stem", "curly stem", "tight stem", "Bézier S"];
+        for name in stems.map(|s| format!("leaves on a drawn {s}")) {
             let q = along_drawn(0.03, HandTurn::PERSON, seed).into_iter().find(|q| q.name == name).unwrap();
+            step = q.step;
             // The stem and the first three leaves (of sixteen the stem carries).
             let r = synth(&q.strokes[..4]);
             assert_eq!(r.structure, Structure::Curve, "{name}");
@@ -609,6 +613,7 @@ fn leaves_drawn_on_a_stem_go_all_along_it() {
             for l in leaves {
                 let base = Point::new(l.points[0][0], l.points[0][1]);
                 assert!(off(base) < 0.2 * q.step, "{name}, seed {seed}: a leaf begins {:.1} off the stem", off(base));
+                offsets.push(off(base));
             }
             // Each leaf a gap from its nearest neighbour: none stacked, none left out.
             let bases: Vec<Point> = leaves.iter().map(|l| Point::new(l.points[0][0], l.points[0][1])).collect();
@@ -626,4 +631,8 @@ fn leaves_drawn_on_a_stem_go_all_along_it() {
             }
         }
     }
+    // (Over all: the median leaf begins within 5% of the step of the stem; measured 2%.)
+    offsets.sort_by(f64::total_cmp);
+    let median = offsets[offsets.len() / 2];
+    assert!(median < 0.05 * step, "the median leaf begins {median:.1} off the stem");
 }
