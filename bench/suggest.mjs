@@ -107,6 +107,27 @@ function leaves(n) {
   }
   return out;
 }
+// Vines: a wavy stem drawn across the canvas (a point every 4 px, as coalesced pointer
+// events give), then a leaf every 50 px along it, each leaning off the stem; the latest
+// vine three leaves in (its ghosts go on along the stem: suggest::along).
+function vines(n) {
+  const out = [];
+  for (let v = 0; out.length < n; v++) {
+    const cy = 80 + 140 * v, f = (x) => cy + 30 * Math.sin(x / 40);
+    const stem = [];
+    for (let x = 40; x <= 1440; x += 4) stem.push([x + jit() * 0.3, f(x) + jit() * 0.3]);
+    out.push({ points: stem, width: 2, stroke: '#335522' });
+    const left = n - out.length;
+    const count = left >= 28 + 4 ? 28 : Math.min(3, left);
+    for (let k = 0; k < count; k++) {
+      const x = 60 + 50 * k, th = Math.atan2(f(x + 1) - f(x), 1) - 0.6;
+      const p = petal(x, f(x), th, 36);
+      out.push(p);
+    }
+    if (count < 28) break;
+  }
+  return out;
+}
 // Cold: the first call on a drawing (new strokes every time); stroke by stroke: each
 // call after the one for the drawing one stroke shorter, as the page makes them (the
 // worker remembers the shape distances it has measured).
@@ -118,6 +139,7 @@ const drawings = [
   ['rings of 6-9 petals turned by hand', varied],
   ['turning hatching', hatching],
   ['rosettes of three-stroke leaves', leaves],
+  ['leaves along drawn stems', vines],
 ];
 for (const [name, make] of drawings) {
   for (const n of [60, 200]) {

@@ -8,6 +8,7 @@
 //! The `wasm` module (wasm32 only) is the thin JS binding over them.
 
 pub mod error;
+mod memo;
 pub mod order;
 pub mod progress;
 #[cfg(any(feature = "texture", feature = "codec"))]

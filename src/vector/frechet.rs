@@ -7,6 +7,7 @@
 //! directions. The discrete distance over-estimates the continuous one by at most the
 //! sample spacing, which is chosen small against the tolerances in use.
 
+use crate::memo::{digest, PairMemo};
 use kurbo::{Point, Vec2};
 
 /// A stroke's path centred on its reference point and resampled.
@@ -27,30 +28,14 @@ pub struct Shape {
     pub closed: bool,
 }
 
-/// Distances already measured, by the two shapes' digests. Autocomplete classifies the
-/// whole drawing again after every stroke, and its tolerances come from the distances
-/// between up to 120 strokes: about 7,000 of them, a quarter of a second in wasm for a
-/// hand's 200 strokes, all but a hundred measured the stroke before. The memo is of a
-/// pure function (the same points give the same distance), per thread (each worker
-/// keeps its own), and is emptied when it holds `MEMO_ENTRIES`.
+/// Distances already measured, by the two shapes' digests (see `crate::memo`).
+/// Autocomplete classifies the whole drawing again after every stroke, and its
+/// tolerances come from the distances between up to 120 strokes: about 7,000 of them, a
+/// quarter of a second in wasm for a hand's 200 strokes, all but a hundred measured the
+/// stroke before.
 const MEMO_ENTRIES: usize = 1 << 18;
 thread_local! {
-    static MEMO: std::cell::RefCell<std::collections::HashMap<(u64, u64), f64>> = Default::default();
-}
-
-/// A digest of a resampled path (the standard library's hasher, whose keys are fixed
-/// within a build, over its coordinates' bits).
-/// (FNV-1a over whole 64-bit words, used before, kept a sign bit in the top bit alone:
-/// a stroke and its mirror image, such as a cross's two bars, had one digest, so the
-/// memo gave them a distance of 0.)
-fn digest(points: &[Point]) -> u64 {
-    use std::hash::Hasher;
-    let mut h = std::collections::hash_map::DefaultHasher::new();
-    points.iter().for_each(|p| {
-        h.write_u64(p.x.to_bits());
-        h.write_u64(p.y.to_bits());
-    });
-    h.finish()
+    static MEMO: PairMemo = PairMemo::new(MEMO_ENTRIES);
 }
 
 /// Whether a path resampled at equal steps closes on itself: its ends within two steps
@@ -85,7 +70,15 @@ impl Shape {
         );
         let closed = closed_loop(&points);
         let slack = if closed { points[0].distance(points[points.len() - 1]) } else { 0.0 };
-        Shape { key: digest(&points), closed, points, half_extent: (hi - lo) * 0.5, low, high, slack }
+        Shape {
+            key: digest(points.iter().map(|p| (p.x, p.y)), &[]),
+            closed,
+            points,
+            half_extent: (hi - lo) * 0.5,
+            low,
+            high,
+            slack,
+        }
     }
 
     /// A lower bound on the discrete Fréchet distance: every point is coupled with one
@@ -144,12 +137,7 @@ impl Shape {
 
     /// The distance to `other`, if measured already.
     fn remembered(&self, other: &Shape) -> Option<f64> {
-        MEMO.with(|m| m.borrow().get(&self.pair(other)).copied())
-    }
-
-    /// The memo's key for the pair, either way round.
-    fn pair(&self, other: &Shape) -> (u64, u64) {
-        (self.key.min(other.key), self.key.max(other.key))
+        MEMO.with(|m| m.get(self.key, other.key))
     }
 
     /// Two closed loops: `other` started where it best matches `self`'s start, each
@@ -202,19 +190,7 @@ impl Shape {
     /// whose ends lie closer is measured first; the other only as far as it could still
     /// come out smaller (its ends, and each row of its recurrence, bound it from below).
     pub fn distance(&self, other: &Shape) -> f64 {
-        if let Some(d) = self.remembered(other) {
-            return d;
-        }
-        let key = self.pair(other);
-        let d = self.measure(other);
-        MEMO.with(|m| {
-            let mut m = m.borrow_mut();
-            if m.len() >= MEMO_ENTRIES {
-                m.clear();
-            }
-            m.insert(key, d);
-        });
-        d
+        MEMO.with(|m| m.get_or(self.key, other.key, || self.measure(other)))
     }
 
     fn measure(&self, other: &Shape) -> f64 {
