@@ -270,16 +270,18 @@ fn sites(path: &impl Fn(f64) -> Point, from: (f64, f64), step: f64, count: usize
 }
 
 /// Leaves along a stem the hand draws first (issue 27: "a stem and three leaves"): the
-/// stem from half a step before the first leaf to half a step past the `n`-th (round
-/// and closed, for a `closed` path), its points off by a fifth of `wobble` of the step
-/// and swaying by `wobble` of it; then the leaves, as `leaves_along` draws them (every
+/// stem from half a step before the first leaf to half a step past the `n`-th (round,
+/// for a closed path, `Some(past)`: closed exactly where `past` is 0, else begun half
+/// way round and drawn `past` of `t` on beyond its start, or short of it where `past`
+/// is negative, as a hand's circle seldom meets itself), its points off by a fifth of `wobble` of the step and
+/// swaying by `wobble` of it; then the leaves, as `leaves_along` draws them (every
 /// other one on the stem's other side, where they `alternate`).
 fn stem_drawn(
     name: &str,
     path: impl Fn(f64) -> Point,
     from: (f64, f64),
     n: usize,
-    (closed, alternate): (bool, bool),
+    (round, alternate): (Option<f64>, bool),
     wobble: (f64, HandTurn),
     seed: u64,
 ) -> Sequence {
@@ -300,8 +302,13 @@ fn stem_drawn(
     }
     let mut rng = Rng::new(seed ^ 0x5EED);
     let at = sites(&path, from, step, n + 1);
-    let (t0, t1) =
-        if closed { (from.0, at[n].2) } else { (from.0 - 0.5 * (at[1].2 - at[0].2), 0.5 * (at[n - 1].2 + at[n].2)) };
+    let closed = round.is_some();
+    let (t0, t1) = match round {
+        Some(0.0) => (from.0, at[n].2),
+        // (Begun half way round: a periodic path, a circle, is drawn from anywhere.)
+        Some(past) => (0.5 * (from.0 + at[n].2), 1.5 * at[n].2 - 0.5 * from.0 + past),
+        None => (from.0 - 0.5 * (at[1].2 - at[0].2), 0.5 * (at[n - 1].2 + at[n].2)),
+    };
     let phase = rng.next_f64() * TAU;
     // (A point every 4 of the step's 40 or so, as a pen's coalesced events give.)
     let count = ((t1 - t0) / from.1 / 8.0).ceil().max(8.0) as usize;
@@ -316,7 +323,7 @@ fn stem_drawn(
             [p.x + rng.normal() * noise, p.y + rng.normal() * noise]
         })
         .collect();
-    if closed {
+    if round == Some(0.0) {
         points.push(points[0]);
     }
     leaves.strokes.insert(0, Stroke::new(points, 2.0, None));
@@ -338,7 +345,7 @@ pub fn along_drawn(wobble: f64, turn: HandTurn, seed: u64) -> Vec<Sequence> {
         |amplitude: f64, scale: f64| move |x: f64| Point::new(x, 300.0 + amplitude * ((x - 300.0) / scale).sin());
     let hand = (wobble, turn);
     let k = seed * 131;
-    let open = (false, false);
+    let open = (None, false);
     let mut out = vec![
         stem_drawn("leaves on a drawn S-curve", sine(70.0, 110.0), (70.0, 0.5), 12, open, hand, k + 13),
         stem_drawn("leaves on a drawn wavy stem", sine(40.0, 400.0 / TAU), (50.0, 0.5), 16, open, hand, k + 19),
@@ -349,7 +356,7 @@ pub fn along_drawn(wobble: f64, turn: HandTurn, seed: u64) -> Vec<Sequence> {
             sine(40.0, 400.0 / TAU),
             (50.0, 0.5),
             16,
-            (false, true),
+            (None, true),
             hand,
             k + 43,
         ),
@@ -365,9 +372,20 @@ pub fn along_drawn(wobble: f64, turn: HandTurn, seed: u64) -> Vec<Sequence> {
         circle,
         (0.0, TAU / 4000.0),
         12,
-        (true, false),
+        (Some(0.0), false),
         hand,
         k + 41,
+    ));
+    // (The circle's end a fifth of a gap short of its start, or up to half a gap past.)
+    let past = (Rng::new(k + 47).next_f64() * 0.7 - 0.2) * TAU / 12.0;
+    out.push(stem_drawn(
+        "ring of 12 leaves round a circle drawn open",
+        circle,
+        (0.0, TAU / 4000.0),
+        12,
+        (Some(past), false),
+        hand,
+        k + 47,
     ));
     finish(&mut out);
     out

@@ -388,4 +388,33 @@ mod tests {
             std::iter::once(vine[0].clone()).chain(vine[1..].iter().map(|l| l.translated(0.0, 60.0))).collect();
         assert!(propose_sure(&away, &[], &ask(3)).is_none());
     }
+
+    /// A circle of radius 80 about (300, 300) drawn from `from` radians round by `turn`
+    /// (its end short of its start, or past it), and leaves every 30 degrees round it
+    /// from 0, each leaning 0.6 off it; the truth's reference points.
+    fn ring(from: f64, turn: f64, leaves: usize) -> (Vec<Stroke>, Vec<Point>) {
+        let at = |t: f64| Point::new(300.0 + 80.0 * t.cos(), 300.0 + 80.0 * t.sin());
+        let points = (0..=360).map(|k| at(from + turn * k as f64 / 360.0)).map(|p| [p.x, p.y]).collect();
+        let step = std::f64::consts::TAU / 12.0;
+        let site = |k: usize| leaf(at(k as f64 * step), k as f64 * step + std::f64::consts::FRAC_PI_2 - 0.6);
+        let strokes = std::iter::once(Stroke::new(points, 2.0, None)).chain((0..leaves).map(site)).collect();
+        (strokes, (0..12).map(|k| site(k).reference_point()).collect())
+    }
+
+    #[test]
+    fn leaves_round_a_circle_go_on_past_where_the_hand_began_it() {
+        use std::f64::consts::TAU;
+        // Begun at 100 degrees (between the fourth leaf and the fifth), its end 12 short
+        // of its start or 20 past it: closed all the same, so the ghosts go on past 100
+        // degrees (an open path ended there).
+        for turn in [TAU - 0.15, TAU + 0.25] {
+            let (strokes, truth) = ring(100f64.to_radians(), turn, 4);
+            let s = propose_sure(&strokes, &[], &ask(3)).expect("leaves round a circle");
+            assert!(s.strokes.len() >= 2, "turn {turn:.2}: {:?}", s.reason);
+            for (k, g) in s.strokes.iter().enumerate() {
+                let d = g.reference_point().distance(truth[4 + k]);
+                assert!(d < 0.1 * 80.0 * TAU / 12.0, "turn {turn:.2}: ghost {k} is {d:.1} off");
+            }
+        }
+    }
 }

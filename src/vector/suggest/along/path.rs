@@ -14,6 +14,10 @@ const SPACING: f64 = 2.0;
 const MIN_POINTS: usize = 16;
 const MAX_POINTS: usize = 1024;
 
+/// A path whose end comes back within this share of its extent (its box's diagonal)
+/// of its start, having turned most of the way round, is closed.
+const CLOSE: f64 = 0.15;
+
 /// A drawn path resampled evenly by arc length and smoothed.
 pub(super) struct Path {
     pub(super) points: Vec<Point>,
@@ -27,7 +31,7 @@ pub(super) struct Path {
 impl Path {
     pub(super) fn new(stroke: &Stroke, window: f64) -> Option<Path> {
         let raw: Vec<Point> = stroke.points.iter().map(|p| Point::new(p[0], p[1])).collect();
-        let closed = closed_loop(&raw);
+        let (raw, closed) = round(raw);
         let length: f64 = raw.windows(2).map(|w| w[0].distance(w[1])).sum();
         if length <= 0.0 {
             return None;
@@ -159,4 +163,70 @@ impl Path {
 /// The squared distance from `p` to the polyline through `line`.
 fn to_polyline(p: Point, line: &[Point]) -> f64 {
     line.windows(2).map(|w| point_segment(p, w[0], w[1]).powi(2)).fold(f64::INFINITY, f64::min)
+}
+
+/// `raw` closed where the hand drew it round to where it began: a circle's ends seldom
+/// meet, falling short or running on past the start. Its end within `CLOSE` of its
+/// extent of its start, after turning at least 1.5 pi (a horseshoe's ends may come as
+/// near), it is closed; run on past, the overshoot is cut where it comes nearest the
+/// start. (`closed_loop`'s test alone, ends within two steps, is for shapes: a petal.)
+fn round(mut raw: Vec<Point>) -> (Vec<Point>, bool) {
+    let n = raw.len();
+    if closed_loop(&raw) {
+        return (raw, true);
+    }
+    if n < 6 {
+        return (raw, false);
+    }
+    let bounds = raw.iter().fold(kurbo::Rect::from_points(raw[0], raw[0]), |r, &p| r.union_pt(p));
+    let reach = CLOSE * bounds.size().to_vec2().hypot();
+    // (The end's last stretch, its last quarter: where it comes nearest the start.)
+    let Some((k, d)) = (3 * n / 4..n).map(|k| (k, raw[k].distance(raw[0]))).min_by(|a, b| a.1.total_cmp(&b.1)) else {
+        return (raw, false);
+    };
+    let turning: f64 = raw[..=k]
+        .windows(3)
+        .map(|w| {
+            let (u, v) = (w[1] - w[0], w[2] - w[1]);
+            u.cross(v).atan2(u.dot(v))
+        })
+        .sum();
+    if d > reach || turning.abs() < 1.5 * std::f64::consts::PI {
+        return (raw, false);
+    }
+    raw.truncate(k + 1);
+    raw.push(raw[0]);
+    (raw, true)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_circle_whose_ends_miss_is_closed_and_a_horseshoe_is_not() {
+        let circle = |turn: f64| -> Vec<Point> {
+            (0..=200).map(|k| (Vec2::from_angle(turn * k as f64 / 200.0) * 80.0).to_point()).collect()
+        };
+        // Short of its start by 12, or on past it by 20 (cut where it comes back).
+        for turn in [std::f64::consts::TAU - 0.15, std::f64::consts::TAU + 0.25] {
+            let (points, closed) = round(circle(turn));
+            assert!(closed, "turn {turn:.2}");
+            assert_eq!(points.first(), points.last());
+            let length: f64 = points.windows(2).map(|w| w[0].distance(w[1])).sum();
+            assert!((length - 160.0 * std::f64::consts::PI).abs() < 15.0, "turn {turn:.2}: {length:.0} long");
+        }
+        // Half way round: open.
+        assert!(!round(circle(std::f64::consts::PI)).1);
+        // A narrow U: its ends 20 apart, within reach, but it turns by pi only.
+        let u: Vec<Point> = (0..=40)
+            .map(|k| Point::new(200.0 - 5.0 * k as f64, -10.0))
+            .chain((1..=20).map(|k| {
+                Point::new(0.0, 0.0)
+                    + Vec2::from_angle(-std::f64::consts::FRAC_PI_2 - std::f64::consts::PI * k as f64 / 20.0) * 10.0
+            }))
+            .chain((1..=40).map(|k| Point::new(5.0 * k as f64, 10.0)))
+            .collect();
+        assert!(!round(u).1);
+    }
 }
