@@ -8,6 +8,7 @@
 //! The `wasm` module (wasm32 only) is the thin JS binding over them.
 
 pub mod error;
+#[cfg(feature = "vector")]
 mod memo;
 pub mod order;
 pub mod progress;

@@ -103,3 +103,52 @@ test('a stem and three leaves drawn with the mouse: ghosts follow the stem to it
     await close();
   }
 });
+
+/** Draws `pts` (canvas coordinates) with a finger: touch events through the DevTools
+ *  protocol, as a phone's screen sends them. */
+async function drawWithFinger(page, client, pts) {
+  const box = await page.locator('#draw').boundingBox();
+  const at = ([x, y]) => ({ x: box.x + (x * box.width) / 800, y: box.y + (y * box.height) / 500 });
+  await client.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: [at(pts[0])] });
+  for (const p of pts.slice(1)) await client.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: [at(p)] });
+  await client.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+}
+
+test('on a phone, leaves round a circle drawn with a finger (begun between two leaves, its end past its start) go on round it; a tap accepts', async () => {
+  mkdirSync('out', { recursive: true });
+  const { page, close } = await openEmptyCanvas({ width: 390, height: 844, touch: true });
+  try {
+    const client = await page.context().newCDPSession(page);
+    const [cx, cy, r] = [400, 250, 110];
+    const on = (t) => [cx + r * Math.cos(t), cy + r * Math.sin(t)];
+    // The circle from 100 degrees round to 0.2 rad past where it began.
+    const from = (100 * Math.PI) / 180;
+    const circle = Array.from({ length: 121 }, (_, k) => on(from + ((2 * Math.PI + 0.2) * k) / 120));
+    await drawWithFinger(page, client, circle);
+    // Leaves every 30 degrees from 0, each leaning off the circle's direction there.
+    const site = (k) => [on((k * Math.PI) / 6), (k * Math.PI) / 6 + Math.PI / 2];
+    for (let k = 0; k < 4; k++) await drawWithFinger(page, client, leaf(site(k), 0.6, k));
+    await settled(page);
+    const status = await page.textContent('#suggest-status');
+    assert.match(status, /^[1-9]\d* suggested stroke/, status);
+    await page.screenshot({ path: 'out/vine-phone-ghosts.png', fullPage: true });
+    // A tap on Accept adds them; they go on round the circle past 100 degrees, where
+    // the finger began it, each on the circle.
+    const before = await strokeCount(page);
+    const accept = await page.locator('#accept-ghosts').boundingBox();
+    await page.touchscreen.tap(accept.x + accept.width / 2, accept.y + accept.height / 2);
+    await page.waitForFunction((n) => Number(document.querySelector('#stroke-count').textContent.split(' ')[0]) > n, before);
+    await settled(page);
+    await page.screenshot({ path: 'out/vine-phone-accepted.png', fullPage: true });
+    const leaves = (await page.evaluate(() => window.playground.drawing().strokes.map((s) => s.points))).slice(5);
+    assert.ok(leaves.length >= 2, `${leaves.length} leaves accepted`);
+    const angle = (p) => ((Math.atan2(p[1] - cy, p[0] - cx) + 2 * Math.PI) % (2 * Math.PI)) * (180 / Math.PI);
+    for (const [k, l] of leaves.entries()) {
+      const base = l[0];
+      assert.ok(Math.abs(Math.hypot(base[0] - cx, base[1] - cy) - r) < 6, `leaf ${k} begins off the circle`);
+      assert.ok(Math.abs(angle(base) - 30 * (4 + k)) < 6, `leaf ${k} at ${angle(base).toFixed(0)} degrees, not ${30 * (4 + k)}`);
+    }
+  } finally {
+    await close();
+  }
+});
