@@ -25,15 +25,27 @@ pub(crate) fn digest(points: impl IntoIterator<Item = (f64, f64)>, extra: &[f64]
     h.finish()
 }
 
-/// The map's own hasher: its keys are digests already, evenly spread, so a multiply
-/// and a rotation per word (as rustc's FxHasher does) place them as well as SipHash, at
-/// a fraction of the cost (SipHash was a tenth of a warm autocomplete call).
+/// The memo's hasher, and that of maps keyed by a few small integers (a class and a
+/// cell): a multiply and a rotation per word, as rustc's FxHasher does. Its keys are
+/// digests already, or cells of a drawing, not chosen by an adversary; SipHash, the
+/// standard map's, was a tenth of a warm autocomplete call.
 #[derive(Default)]
-struct Spread(u64);
+pub(crate) struct Spread(u64);
+
+/// A hash map hashed by `Spread`.
+pub(crate) type SpreadMap<K, V> = HashMap<K, V, BuildHasherDefault<Spread>>;
 
 impl Hasher for Spread {
     fn write(&mut self, bytes: &[u8]) {
         bytes.iter().for_each(|&b| self.write_u64(u64::from(b)));
+    }
+
+    fn write_u32(&mut self, word: u32) {
+        self.write_u64(u64::from(word));
+    }
+
+    fn write_usize(&mut self, word: usize) {
+        self.write_u64(word as u64);
     }
 
     fn write_u64(&mut self, word: u64) {
@@ -47,7 +59,7 @@ impl Hasher for Spread {
 
 /// Figures by pairs of digests, up to a capacity.
 pub(crate) struct PairMemo {
-    map: RefCell<HashMap<(u64, u64), f64, BuildHasherDefault<Spread>>>,
+    map: RefCell<SpreadMap<(u64, u64), f64>>,
     capacity: usize,
 }
 

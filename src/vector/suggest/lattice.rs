@@ -189,7 +189,8 @@ pub(super) struct Residues {
     lattice: Lattice,
     cells: (i64, i64),
     tol: f64,
-    filed: std::collections::HashMap<(u32, i64, i64), Vec<usize>>,
+    /// (Hashed by `memo::Spread`: SipHash was a twentieth of autocomplete on hatching.)
+    filed: crate::memo::SpreadMap<(u32, i64, i64), Vec<usize>>,
 }
 
 impl Residues {
