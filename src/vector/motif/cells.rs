@@ -80,7 +80,8 @@ pub fn instances(strokes: &[Stroke], periods: &Periods) -> Option<Vec<Vec<u32>>>
     let whole_copies = multi.iter().filter(|g| {
         connected(g, |i, j| {
             let (i, j) = (i as usize, j as usize);
-            gap(&strokes[i], &paths[i], &strokes[j], &paths[j]) <= near
+            // (Capped just past `near`: only whether it is within it counts.)
+            gap(&strokes[i], &paths[i], &strokes[j], &paths[j], 2.0 * near + 1.0) <= near
         })
     });
     (4 * whole_copies.count() >= 3 * multi.len()).then_some(out)

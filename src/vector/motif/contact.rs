@@ -82,7 +82,7 @@ pub fn instances(
     let mut edges: Vec<(f64, u32, u32)> = Vec::new();
     for (i, j) in pairs {
         let (i, j) = (i as usize, j as usize);
-        let g = gap(&strokes[i], &paths[i], &strokes[j], &paths[j]);
+        let g = gap(&strokes[i], &paths[i], &strokes[j], &paths[j], reach);
         if g < reach {
             edges.push((g, i as u32, j as u32));
         }
@@ -294,12 +294,23 @@ impl Path {
 }
 
 /// The gap between two strokes: least distance between their paths less half their
-/// widths, zero when the paths cross or one lies inside the other's closed outline.
-/// Segment pairs whose boxes lie further apart than the best distance so far are not
-/// measured: two neighbours' paths of 32 segments each are 1,024 pairs, of which a
-/// handful come close.
-pub(super) fn gap(a: &Stroke, pa: &Path, b: &Stroke, pb: &Path) -> f64 {
-    GAPS.with(|m| m.get_or(pa.key, pb.key, || measure_gap(a, pa, b, pb)))
+/// widths, zero when the paths cross or one lies inside the other's closed outline; or
+/// `cap` where it is at least `cap` (the callers ask only whether it is under a reach).
+/// Segment pairs whose boxes lie further apart than the best distance so far (at first
+/// the cap) are not measured: two neighbours' paths of 32 segments each are 1,024
+/// pairs, of which a handful come close.
+pub(super) fn gap(a: &Stroke, pa: &Path, b: &Stroke, pb: &Path, cap: f64) -> f64 {
+    GAPS.with(|m| {
+        // (Remembered exactly, or as "at least" a cap, stored negated.)
+        match m.get(pa.key, pb.key) {
+            Some(g) if g >= 0.0 => return g.min(cap),
+            Some(g) if -g >= cap => return cap,
+            _ => {}
+        }
+        let g = measure_gap(a, pa, b, pb, cap);
+        m.insert(pa.key, pb.key, if g >= cap { -cap } else { g });
+        g
+    })
 }
 
 /// Gaps already measured, by the two strokes' digests (see `crate::memo`): autocomplete
@@ -312,12 +323,12 @@ thread_local! {
 }
 
 /// `gap`, measured.
-fn measure_gap(a: &Stroke, pa: &Path, b: &Stroke, pb: &Path) -> f64 {
+fn measure_gap(a: &Stroke, pa: &Path, b: &Stroke, pb: &Path, cap: f64) -> f64 {
     let pad = 0.5 * (a.width + b.width);
     if inside(pa, &pb.points) || inside(pb, &pa.points) {
         return 0.0;
     }
-    let mut best = f64::INFINITY;
+    let mut best = cap + pad;
     for &(p0, p1, ra) in &pa.segments {
         for &(q0, q1, rb) in &pb.segments {
             let dx = (rb.x0 - ra.x1).max(ra.x0 - rb.x1).max(0.0);
@@ -331,7 +342,7 @@ fn measure_gap(a: &Stroke, pa: &Path, b: &Stroke, pb: &Path) -> f64 {
             }
         }
     }
-    (best - pad).max(0.0)
+    (best - pad).clamp(0.0, cap)
 }
 
 /// Whether `other`'s first point lies inside the outline `path`, when it encloses.
