@@ -63,27 +63,7 @@ pub fn fit(elems: &[Element], grid: &Grid, pair_radius: &[f64], spacing: f64, re
     let partner = |i: usize, v: Vec2| partner(elems, grid, pair_radius, i, v);
     let step = n.div_ceil(SAMPLE).max(1);
     let sample: Vec<usize> = (0..n).step_by(step).collect();
-    // Whether at least `MIN_SUPPORT` of the sample has a partner under `v`: counted only
-    // until that is decided either way (most candidates fail within a few elements).
-    let len = sample.len();
-    let need = (0..=len).find(|&h| h as f64 / len as f64 >= MIN_SUPPORT).unwrap_or(len);
-    let supported = |v: Vec2| {
-        let (mut hits, mut misses) = (0, 0);
-        for &i in &sample {
-            if partner(i, v).is_some() {
-                hits += 1;
-            } else {
-                misses += 1;
-            }
-            if hits >= need {
-                return true;
-            }
-            if misses > len - need {
-                return false;
-            }
-        }
-        hits >= need
-    };
+    let support = |v: Vec2| sample.iter().filter(|&&i| partner(i, v).is_some()).count() as f64 / sample.len() as f64;
 
     // Candidate periods: offsets from a few central elements to their same-class
     // neighbours, in one half-plane, shortest first.
@@ -110,9 +90,12 @@ pub fn fit(elems: &[Element], grid: &Grid, pair_radius: &[f64], spacing: f64, re
     let mut candidates = crate::order::sorted(&candidates, |v| v.hypot2());
     candidates.dedup_by(|a, b| (*a - *b).hypot() < 0.25 * spacing);
 
-    let a = *candidates.iter().find(|&&v| supported(v))?;
-    let b =
-        candidates.iter().copied().filter(|v| a.cross(*v).abs() > 0.3 * a.hypot() * v.hypot()).find(|&v| supported(v));
+    let a = *candidates.iter().find(|&&v| support(v) >= MIN_SUPPORT)?;
+    let b = candidates
+        .iter()
+        .copied()
+        .filter(|v| a.cross(*v).abs() > 0.3 * a.hypot() * v.hypot())
+        .find(|&v| support(v) >= MIN_SUPPORT);
 
     // Refine each period as the mean of all its observed instances.
     let refine = |v: Vec2| -> Vec2 {
