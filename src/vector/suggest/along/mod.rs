@@ -97,15 +97,7 @@ fn follow(strokes: &[Stroke], accepted: &[bool], ask: &Ask, sure: bool) -> Optio
     // midrib, which touches the stem too but is not the leaf).
     let mut motifs: Vec<usize> = (lo..n).rev().filter(|&i| hand(i) && !strokes[i].is_dot()).take(3).collect();
     motifs.sort_by(|&a, &b| size(&strokes[b]).total_cmp(&size(&strokes[a])));
-    motifs.into_iter().find_map(|m| along(strokes, accepted, ask, m, sure))
-}
-
-/// `propose` with the copies of stroke `m` as the motif.
-fn along(strokes: &[Stroke], accepted: &[bool], ask: &Ask, m: usize, sure: bool) -> Option<Suggestions> {
-    let n = strokes.len();
-    let lo = n.saturating_sub(LOOK_BACK);
-    let hand = |i: usize| hand(accepted, i);
-    let big = size(&strokes[m]);
+    // (Each recent stroke's length, measured once for every motif tried.)
     let lengths: Vec<f64> = (0..n)
         .map(|i| {
             if i < lo {
@@ -115,6 +107,23 @@ fn along(strokes: &[Stroke], accepted: &[bool], ask: &Ask, m: usize, sure: bool)
             }
         })
         .collect();
+    motifs.into_iter().find_map(|m| along(strokes, accepted, ask, m, sure, &lengths))
+}
+
+/// `propose` with the copies of stroke `m` as the motif (`lengths`: each of the latest
+/// `LOOK_BACK` strokes' length).
+fn along(
+    strokes: &[Stroke],
+    accepted: &[bool],
+    ask: &Ask,
+    m: usize,
+    sure: bool,
+    lengths: &[f64],
+) -> Option<Suggestions> {
+    let n = strokes.len();
+    let lo = n.saturating_sub(LOOK_BACK);
+    let hand = |i: usize| hand(accepted, i);
+    let big = size(&strokes[m]);
     let length = |s: usize| lengths[s];
     // Paths first (cheap): long hand-drawn strokes that curve.
     let window = 0.5 * big;

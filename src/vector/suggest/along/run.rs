@@ -53,6 +53,9 @@ impl Run {
         hand: &dyn Fn(usize) -> bool,
     ) -> Option<Run> {
         let mut run: Vec<Copy> = Vec::new();
+        // (Each copy's points, beside the run: a copy is registered on the one of its
+        // kind before it.)
+        let mut outlines: Vec<&[Point]> = Vec::new();
         for c in candidates.iter().rev() {
             let (near, dist) = c.nearest;
             if dist > ATTACH * c.size + 2.0 * c.width {
@@ -61,12 +64,10 @@ impl Run {
             // (Placed where, in the path's frame, it lies as the latest copy of its kind
             // does there: the point it comes nearest at is as loose as its outline, and
             // its centre's foot shifts with the path's curvature.)
-            let (at, msd) = match run.get(run.len() % stride).filter(|_| run.len() >= stride) {
+            let kin = run.len() % stride;
+            let (at, msd) = match run.get(kin).filter(|_| run.len() >= stride) {
                 None => (near, 0.0),
-                Some(latest) => {
-                    let target = candidates.iter().find(|o| o.index == latest.index)?.points;
-                    path.register(c.points, target, latest.at, near, c.size)
-                }
+                Some(latest) => path.register(c.points, outlines[kin], latest.at, near, c.size),
             };
             if msd > (POSE * c.size).powi(2) {
                 break;
@@ -78,6 +79,7 @@ impl Run {
                 }
             }
             run.push(Copy { index: c.index, at, msd });
+            outlines.push(c.points);
             if run.iter().filter(|r| hand(r.index)).count() >= MAX_COPIES {
                 break;
             }
