@@ -194,7 +194,7 @@ fn translates(strokes: &[Stroke]) -> (Vec<usize>, Vec<usize>) {
 }
 
 /// At most this many strokes are sampled to propose tolerances (pairs grow quadratically).
-const PROPOSAL_SAMPLE: usize = 64;
+const PROPOSAL_SAMPLE: usize = 48;
 /// The strokes' shapes are resampled every this share of the typical size to propose
 /// the path tolerance.
 const PROPOSAL_SPACING: f64 = 16.0;
