@@ -19,15 +19,7 @@ fn main() {
                 calls += 1;
                 with += usize::from(!s.strokes.is_empty());
                 shown += s.strokes.len();
-                for g in &s.strokes {
-                    let c = g.reference_point();
-                    let m = q.strokes[n..]
-                        .iter()
-                        .chain(q.beyond.iter().map(|b| &b.0))
-                        .map(|t| t.reference_point().distance(c))
-                        .fold(f64::INFINITY, f64::min);
-                    wrong += usize::from(m > 0.3 * q.step);
-                }
+                wrong += s.strokes.iter().filter(|g| q.miss(n, g.reference_point()) > 0.3 * q.step).count();
                 if s.strokes.is_empty() {
                     *reasons.entry(s.reason.unwrap_or_default().chars().take(40).collect()).or_default() += 1;
                 }

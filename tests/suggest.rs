@@ -669,15 +669,7 @@ fn points_that_shake_still_get_ghosts() {
             calls += 1;
             with += usize::from(!s.strokes.is_empty());
             shown += s.strokes.len();
-            for g in &s.strokes {
-                let c = g.reference_point();
-                let miss = q.strokes[n..]
-                    .iter()
-                    .chain(q.beyond.iter().map(|b| &b.0))
-                    .map(|t| t.reference_point().distance(c))
-                    .fold(f64::INFINITY, f64::min);
-                wrong += usize::from(miss > 0.3 * q.step);
-            }
+            wrong += s.strokes.iter().filter(|g| q.miss(n, g.reference_point()) > 0.3 * q.step).count();
         }
     }
     assert!(with as f64 >= 0.75 * calls as f64, "{with} of {calls} calls with ghosts");

@@ -45,6 +45,12 @@ impl Sequence {
         replay_each(strokes, &self.classes, self.canvas, &tol, &past)
     }
 
+    /// A family of single strokes `step` apart (its steps, classes and canvas set by
+    /// `finish`).
+    fn of_strokes(name: &str, strokes: Vec<Stroke>, step: f64) -> Sequence {
+        Sequence::of_copies(name, strokes.into_iter().map(|s| vec![s]).collect(), step)
+    }
+
     /// A family of motifs of several strokes, `copies` in drawing order (its steps,
     /// classes and canvas set by `finish`).
     fn of_copies(name: &str, copies: Vec<Vec<Stroke>>, step: f64) -> Sequence {
@@ -60,6 +66,17 @@ impl Sequence {
             parts,
             lead: 0,
         }
+    }
+
+    /// How far a ghost centred at `c`, proposed after the first `n` strokes were drawn,
+    /// lies from the nearest stroke still to draw (or past the end): over 0.3 of the
+    /// step, it is wrong.
+    pub fn miss(&self, n: usize, c: Point) -> f64 {
+        self.strokes[n..]
+            .iter()
+            .chain(self.beyond.iter().map(|b| &b.0))
+            .map(|t| t.reference_point().distance(c))
+            .fold(f64::INFINITY, f64::min)
     }
 
     /// Share of the strokes accepted after the first three copies were drawn.
@@ -240,17 +257,7 @@ fn leaves_along(
             leaf(p + jitter, phi - 0.6 + off, 36.0, &mut rng, 0.2 * wobble.0 * step)
         })
         .collect();
-    Sequence {
-        name: name.into(),
-        strokes,
-        step,
-        steps: Vec::new(),
-        beyond: Vec::new(),
-        canvas: kurbo::Rect::ZERO,
-        classes: Vec::new(),
-        parts: 1,
-        lead: 0,
-    }
+    Sequence::of_strokes(name, strokes, step)
 }
 
 /// Sites `step` apart (of arc length) along `path(t)` from `t = from.0` on in steps of
@@ -423,7 +430,6 @@ pub fn sequences(wobble: f64, seed: u64) -> Vec<Sequence> {
 pub fn drawn_by(wobble: f64, turn: HandTurn, seed: u64) -> Vec<Sequence> {
     let mut out = Vec::new();
     let centre = Point::new(300.0, 300.0);
-    let canvas = kurbo::Rect::new(0.0, 0.0, 600.0, 600.0);
     // Rings of n petals around a centre: the step is the distance between neighbours'
     // centres.
     for n in [5usize, 6, 8, 10, 12] {
@@ -438,17 +444,7 @@ pub fn drawn_by(wobble: f64, turn: HandTurn, seed: u64) -> Vec<Sequence> {
                 leaf(at, theta, len, &mut rng, 0.2 * wobble * step)
             })
             .collect();
-        out.push(Sequence {
-            name: format!("ring of {n}"),
-            strokes,
-            step,
-            steps: Vec::new(),
-            beyond: Vec::new(),
-            canvas,
-            classes: Vec::new(),
-            parts: 1,
-            lead: 0,
-        });
+        out.push(Sequence::of_strokes(&format!("ring of {n}"), strokes, step));
     }
     // A spiral: petals turning by 30° and growing by 6% a step, out from the centre.
     {
@@ -470,17 +466,7 @@ pub fn drawn_by(wobble: f64, turn: HandTurn, seed: u64) -> Vec<Sequence> {
             .collect();
         // (The step grows: `step` is the one at the middle of the spiral.)
         let steps = (0..10 + BEYOND as i32).map(|k| 120.0 * 1.06f64.powi(k) * TAU / 12.0).collect();
-        out.push(Sequence {
-            name: "spiral".into(),
-            strokes,
-            step: 120.0 * 1.06f64.powi(5) * TAU / 12.0,
-            steps,
-            beyond: Vec::new(),
-            canvas,
-            classes: Vec::new(),
-            parts: 1,
-            lead: 0,
-        });
+        out.push(Sequence { steps, ..Sequence::of_strokes("spiral", strokes, 120.0 * 1.06f64.powi(5) * TAU / 12.0) });
     }
     // Leaves along an arc of radius 260, one every 14°, each turned with the arc.
     {
@@ -495,17 +481,7 @@ pub fn drawn_by(wobble: f64, turn: HandTurn, seed: u64) -> Vec<Sequence> {
                 leaf(at + jitter, phi - 0.6 + turn.draw(&mut rng), 45.0, &mut rng, 0.2 * wobble * step)
             })
             .collect();
-        out.push(Sequence {
-            name: "leaves on an arc".into(),
-            strokes,
-            step,
-            steps: Vec::new(),
-            beyond: Vec::new(),
-            canvas,
-            classes: Vec::new(),
-            parts: 1,
-            lead: 0,
-        });
+        out.push(Sequence::of_strokes("leaves on an arc", strokes, step));
     }
     // Hatching across a contour that turns: lines 70 long, 7.2 apart along an arc of
     // radius 240, each across the arc.
@@ -526,17 +502,7 @@ pub fn drawn_by(wobble: f64, turn: HandTurn, seed: u64) -> Vec<Sequence> {
                 )
             })
             .collect();
-        out.push(Sequence {
-            name: "turning hatching".into(),
-            strokes,
-            step,
-            steps: Vec::new(),
-            beyond: Vec::new(),
-            canvas,
-            classes: Vec::new(),
-            parts: 1,
-            lead: 0,
-        });
+        out.push(Sequence::of_strokes("turning hatching", strokes, step));
     }
     // Leaves along an S: a stem that bends one way and then the other (no one similarity
     // carries every leaf onto the next), one leaf every 40 along it, each turned with it;
@@ -583,17 +549,7 @@ pub fn drawn_by(wobble: f64, turn: HandTurn, seed: u64) -> Vec<Sequence> {
                 )
             })
             .collect();
-        out.push(Sequence {
-            name: "straight hatching".into(),
-            strokes,
-            step,
-            steps: Vec::new(),
-            beyond: Vec::new(),
-            canvas,
-            classes: Vec::new(),
-            parts: 1,
-            lead: 0,
-        });
+        out.push(Sequence::of_strokes("straight hatching", strokes, step));
     }
     finish(&mut out);
     out
