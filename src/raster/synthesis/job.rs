@@ -460,8 +460,16 @@ impl Job {
 /// the peer's fell from 0.97 to 0.86 (smoke 2.18 -> 1.68, clouds 5.25 -> 3.48), but
 /// colour distance at most the peer's went from 11 of 12 to 9 (clouds 0.063 -> 0.160)
 /// and repetition within 0.05 of the exemplar's own from 11 to 10; without the quilt's
-/// balance (seeds 1-3), print's wrap was 1.31 and coins' 1.22. So tiles still grow from
-/// noise, and keep the exemplar's colours by the colour balance (`reuse::Balance`).
+/// balance (seeds 1-3), print's wrap was 1.31 and coins' 1.22. Measured again at
+/// 772de4b (the ten photographs at 128, seeds 1-3, examples/tile_quality; seeds 1-8 for
+/// the wrap, examples/seam_lines): print's wrap is no longer the quilt's (1.21 from
+/// noise, 1.21 quilted), and quilted tiles are lower in patch energy on 8 of 10 (wood
+/// 7.04 -> 6.14, tissue 8.52 -> 7.04, gravel 9.99 -> 8.92; brick 3.73 -> 4.20 and coins
+/// 6.49 -> 6.99 higher), but repeat more than their exemplar + 0.05 on 5 of 10 against 2
+/// (tissue 0.58 -> 0.85 against its own 0.65, print 0.67 -> 0.79, coins, brick, moon)
+/// and stray further in colour on 4 (coins 0.127 -> 0.214, fur 0.079 -> 0.118). A tile
+/// repeated 2 x 2 shows a repeated window at once. So tiles still grow from noise, and
+/// keep the exemplar's colours by the colour balance (`reuse::Balance`).
 fn tile_quilt() -> bool {
     cfg!(feature = "test-support") && std::env::var("PATTERNSYNTH_TILE_QUILT").is_ok_and(|v| v == "1")
 }
