@@ -308,7 +308,12 @@ pub(super) fn gap(a: &Stroke, pa: &Path, b: &Stroke, pb: &Path, cap: f64) -> f64
             _ => {}
         }
         let g = measure_gap(a, pa, b, pb, cap);
-        m.insert(pa.key, pb.key, if g >= cap { -cap } else { g });
+        // (A cap of zero says nothing, and stored as -0 it would read as a gap of 0.)
+        if g < cap {
+            m.insert(pa.key, pb.key, g);
+        } else if cap > 0.0 {
+            m.insert(pa.key, pb.key, -cap);
+        }
         g
     })
 }
@@ -468,6 +473,16 @@ mod tests {
             }
         }
         assert!(instances(&mesh, &vec![0; mesh.len()], |_| false, || None).is_none());
+    }
+
+    #[test]
+    fn a_gap_asked_with_no_reach_is_not_remembered_as_none() {
+        let (a, b) = (seg(3.7, 1.3, 10.0, 0.0), seg(3.7, 21.3, 10.0, 0.0));
+        let (pa, pb) = (Path::of(&a), Path::of(&b));
+        assert_eq!(gap(&a, &pa, &b, &pb, 0.0), 0.0);
+        let g = gap(&a, &pa, &b, &pb, 100.0);
+        assert!((g - (20.0 - a.width)).abs() < 1e-9, "gap {g}");
+        assert_eq!(gap(&a, &pa, &b, &pb, 5.0), 5.0);
     }
 
     #[test]
