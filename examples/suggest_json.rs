@@ -7,7 +7,13 @@ fn main() {
     let strokes: Vec<Stroke> = serde_json::from_str(&std::fs::read_to_string(&args[1]).unwrap()).unwrap();
     let r: Vec<f64> = args[2..].iter().filter_map(|a| a.parse().ok()).collect();
     let region = (r.len() == 4).then(|| [r[0], r[1], r[2], r[3]]);
-    let s = suggest_strokes(&strokes, &SuggestOptions { region, ..Default::default() }).unwrap();
+    let s = match suggest_strokes(&strokes, &SuggestOptions { region, ..Default::default() }) {
+        Ok(s) => s,
+        Err(e) => {
+            eprintln!("{e}");
+            std::process::exit(1);
+        }
+    };
     for (g, src) in s.strokes.iter().zip(&s.sources) {
         let c = g.reference_point();
         println!("ghost of {src} at ({:.1}, {:.1}), {} points", c.x, c.y, g.points.len());

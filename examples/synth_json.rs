@@ -10,7 +10,13 @@ fn main() {
     let size: Vec<f64> = args[2..].iter().filter_map(|a| a.parse().ok()).collect();
     let (width, height) = if size.len() == 2 { (size[0], size[1]) } else { (800.0, 600.0) };
     let opts = StrokeOptions { width, height, ..Default::default() };
-    let r = synthesize_strokes(&strokes, &opts, &mut Silent).unwrap();
+    let r = match synthesize_strokes(&strokes, &opts, &mut Silent) {
+        Ok(r) => r,
+        Err(e) => {
+            eprintln!("{e}");
+            std::process::exit(1);
+        }
+    };
     println!("{:?}: {} strokes, periods {:?}", r.structure, r.strokes.len(), r.periods);
     std::fs::create_dir_all("out").unwrap();
     std::fs::write("out/synth_json.svg", r.svg.replace("stroke=\"none\"", "stroke=\"black\"")).unwrap();
