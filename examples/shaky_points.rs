@@ -1,5 +1,6 @@
 //! Ghosts when every point of a stroke shakes (a mouse's jaggies, a tremor): each point
-//! moved at random by `p` of the step on top of the families' own wobble (1%), seeds
+//! moved at random by `p` of the step (up to a fifth: hatching 9 apart drawn with a
+//! pointer that shakes by 1.8) on top of the families' own wobble (1%), seeds
 //! 1-10, every call from three copies on. `cargo run --release --example shaky_points`
 //! (`FAMILY=spiral` for another family of `vector::sequences`).
 use patternsynth::vector::sequences::{drawn_by, shaken, HandTurn};
@@ -7,7 +8,7 @@ use patternsynth::vector::{suggest_strokes, SuggestOptions};
 
 fn main() {
     let only = std::env::var("FAMILY").unwrap_or_else(|_| "leaves on an arc".into());
-    for p in [0.0, 0.01, 0.02, 0.03, 0.05] {
+    for p in [0.0, 0.01, 0.02, 0.03, 0.05, 0.1, 0.2] {
         let (mut calls, mut with, mut shown, mut wrong) = (0, 0, 0, 0);
         let mut reasons = std::collections::BTreeMap::<String, usize>::new();
         for seed in 1..=10 {

@@ -52,8 +52,8 @@ pub(super) fn row_turn(rows: &[Vec<(i64, &Stroke)>]) -> Option<f64> {
     (s2 > 0.0).then(|| pairs.iter().map(|p| p.0 * p.1).sum::<f64>() / s2)
 }
 
-/// The turn (radians) carrying stroke `from` onto `to`, when they are one shape (up to
-/// a similarity) and it shows a turn: not a circle (see `looks_the_same_turned`), nor
+/// The least turn (radians) carrying stroke `from` onto `to`, when they are one shape
+/// (up to a similarity) and it shows a turn: not a circle (see `looks_the_same_turned`), nor
 /// a dot, a tap of the pen a few widths long whichever way it went.
 pub(super) fn turn_between(from: &Stroke, to: &Stroke) -> Option<f64> {
     let size = from.bounds().size().to_vec2().hypot();
@@ -64,7 +64,10 @@ pub(super) fn turn_between(from: &Stroke, to: &Stroke) -> Option<f64> {
     if looks_the_same_turned(&p, size) {
         return None;
     }
-    relations(&p, &q, size).into_iter().next().map(|(t, _)| t.turn())
+    // (Of the fits that pass, the least turn: a row's copies are translated, and a line
+    // shaken by a pointer's jitter may fit read backwards a little better, a half turn,
+    // which read as a row bending by 0.6 radians a step and held hatching back.)
+    relations(&p, &q, size).into_iter().map(|(t, _)| t.turn()).min_by(|x, y| x.abs().total_cmp(&y.abs()))
 }
 
 /// Whether a closed loop fits itself begun a quarter of the way round (a circle, a

@@ -130,8 +130,13 @@ const FALLOFF: f64 = 0.85;
 /// see `hand_scatter`).
 const MIN_SCATTER: f64 = 0.04;
 /// A hand places its copies more loosely than it shapes them: the prior scatter of a
-/// copy's place is this multiple of the mean square wobble of its strokes' ends.
+/// copy's place is this multiple of the mean square wobble of its strokes' ends...
 const HAND_TO_PLACEMENT: f64 = 8.0;
+/// ...and at most this fraction of the spacing: a hand judges a copy's place by the
+/// copies beside it, not by its size (hatching 80 long and 20 apart, each line turned
+/// by up to 2 degrees, read a prior of 3.6, and six lines within 0.5 of a row got no
+/// ghost).
+const MAX_SCATTER: f64 = 0.1;
 /// A copy turned by more than this (radians, about 11 degrees) from the usual copy of
 /// its place is no translated copy (a hand turns its copies by a few degrees at random).
 const TURNED: f64 = 0.2;
@@ -227,7 +232,7 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
             .unwrap_or_else(|| nothing("The drawing shows no repetition yet.")));
     };
     let prior = (HAND_TO_PLACEMENT * hand_scatter(strokes, &classification.classes, &accepted))
-        .max((MIN_SCATTER * spread.spacing).powi(2));
+        .clamp((MIN_SCATTER * spread.spacing).powi(2), (MAX_SCATTER * spread.spacing).powi(2));
     fit.certainty = fit.certainty(&elems, &weight, prior);
     let latest = motifs.instance_of()[strokes.len() - 1] as usize;
     if !whole(latest) {
