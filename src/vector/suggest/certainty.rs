@@ -3,10 +3,9 @@
 
 use super::fit::Fit;
 use super::SUGGESTED_WEIGHT;
-use crate::vector::classify::median;
 use crate::vector::element::Element;
 use crate::vector::frechet::closed_loop;
-use crate::vector::similarity::samples;
+use crate::vector::similarity::{jitter, samples};
 use crate::vector::stroke::Stroke;
 use kurbo::Vec2;
 
@@ -124,7 +123,7 @@ impl Fit {
 /// wobbles its strokes' ends by `e` gives about `e^2`, and places its copies about as
 /// loosely.
 ///
-/// Each point's own jitter (a shaky pointer, a tremor: see `jitter`) is taken out: it
+/// Each point's own jitter (a shaky pointer, a tremor: see `similarity::jitter`) is taken out: it
 /// moves the ends without moving the copy, whose place averages it away. (Hatching 80
 /// long, 20 apart, its points shaken by 1.6 at random, read a scatter of 5.4 to 7.4 and
 /// got no ghost at four to six strokes, though they lay within 0.4 of a row.)
@@ -172,48 +171,3 @@ pub(super) fn hand_scatter(strokes: &[Stroke], classes: &[u32], accepted: &[bool
 /// gets about `1.5 s^2` (their ends each off by it, their boxes' centres a little),
 /// 0.75 per stroke, and `jitter` reads `s^2` 10-30% high from so few points.
 const JITTER_AT_ENDS: f64 = 0.65;
-
-/// The variance of each point's own jitter about a smooth path, per coordinate: a
-/// smooth path's second differences `p[i-1] - 2 p[i] + p[i+1]` are about zero where its
-/// points lie close, and jitter of variance `s^2` gives them `6 s^2` per coordinate, so
-/// their squared length is `6 s^2` times a chi-square of two degrees, whose median is
-/// `2 ln 2`. The median leaves out corners (a house's, a zigzag's), where the path
-/// itself turns.
-fn jitter(points: &[[f64; 2]]) -> f64 {
-    if points.len() < 5 {
-        return 0.0;
-    }
-    let mut d2: Vec<f64> = points
-        .windows(3)
-        .map(|w| {
-            let (x, y) = (w[0][0] - 2.0 * w[1][0] + w[2][0], w[0][1] - 2.0 * w[1][1] + w[2][1]);
-            x * x + y * y
-        })
-        .collect();
-    median(&mut d2) / (12.0 * std::f64::consts::LN_2)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::jitter;
-    use crate::rng::Rng;
-
-    /// A smooth path reads next to no jitter, a shaken one about its own.
-    #[test]
-    fn jitter_reads_a_pointers_shake_and_not_a_smooth_curve() {
-        let arc: Vec<[f64; 2]> =
-            (0..40).map(|k| (k as f64 * 0.05).sin_cos()).map(|(s, c)| [60.0 * c, 60.0 * s]).collect();
-        assert!(jitter(&arc) < 0.01, "{}", jitter(&arc));
-        let mut rng = Rng::new(3);
-        for sd in [0.5, 1.6] {
-            let mut reads = Vec::new();
-            for _ in 0..50 {
-                let line: Vec<[f64; 2]> =
-                    (0..20).map(|k| [sd * rng.normal(), 4.0 * k as f64 + sd * rng.normal()]).collect();
-                reads.push(jitter(&line) / (sd * sd));
-            }
-            let mean = reads.iter().sum::<f64>() / reads.len() as f64;
-            assert!((0.9..1.4).contains(&mean), "shaken by {sd}: read {mean:.2} of its variance");
-        }
-    }
-}
