@@ -102,8 +102,8 @@ impl Similarity {
 /// A stroke's path at `SAMPLES` points, steadied first where its points shake (see
 /// `steadied`).
 pub fn samples(s: &Stroke) -> Vec<Point> {
-    let pts: Vec<Point> = s.points.iter().map(|&[x, y]| Point::new(x, y)).collect();
-    resample_count(&steadied(pts), SAMPLES)
+    let pts: Vec<Point> = steadied(s.points.clone()).into_iter().map(|[x, y]| Point::new(x, y)).collect();
+    resample_count(&pts, SAMPLES)
 }
 
 /// A path shakes when its points' jitter (a standard deviation, see `jitter`) passes
@@ -134,31 +134,34 @@ const SHAKEN: f64 = 0.015;
 /// count, against 26). A path that does not shake is left as drawn: an average rounds a motif's
 /// tips and corners, and moved hand-drawn rings' ghosts (wrong ghosts 38 to 46 of 870
 /// for a person's hand at 1% when every path was averaged).
-pub fn steadied(mut points: Vec<Point>) -> Vec<Point> {
+pub fn steadied(mut points: Vec<[f64; 2]>) -> Vec<[f64; 2]> {
     for _ in 0..2 {
         let n = points.len();
         if n < STEADIED_POINTS {
             break;
         }
-        let mut gaps: Vec<f64> = points.windows(2).map(|w| w[0].distance(w[1])).collect();
+        let point = |p: &[f64; 2]| Point::new(p[0], p[1]);
+        let mut gaps: Vec<f64> = points.windows(2).map(|w| point(&w[0]).distance(point(&w[1]))).collect();
         let spacing = median(&mut gaps);
-        let shake = jitter(&points.iter().map(|p| [p.x, p.y]).collect::<Vec<_>>()).sqrt();
-        let bounds = points.iter().fold(Rect::from_points(points[0], points[0]), |r, &p| r.union_pt(p));
+        let shake = jitter(&points).sqrt();
+        let bounds =
+            points.iter().fold(Rect::from_points(point(&points[0]), point(&points[0])), |r, p| r.union_pt(point(p)));
         let size = bounds.size().to_vec2().hypot();
         if shake <= JAGGED * spacing || shake <= SHAKEN * size {
             break;
         }
-        let closed = closed_loop(&points);
+        let closed = closed_loop(&points.iter().map(point).collect::<Vec<_>>());
         // (A closed loop's last point repeats its first.)
         let m = if closed { n - 1 } else { n };
-        let at = |k: i64| points[k.rem_euclid(m as i64) as usize].to_vec2();
+        let at = |k: i64, c: usize| points[k.rem_euclid(m as i64) as usize][c];
         points = (0..n)
             .map(|i| {
                 if !closed && (i == 0 || i == n - 1) {
                     return points[i];
                 }
                 let i = if closed && i == n - 1 { 0 } else { i as i64 };
-                ((at(i - 1) + at(i) * 2.0 + at(i + 1)) * 0.25).to_point()
+                let avg = |c: usize| (at(i - 1, c) + 2.0 * at(i, c) + at(i + 1, c)) * 0.25;
+                [avg(0), avg(1)]
             })
             .collect();
     }
@@ -344,18 +347,17 @@ mod tests {
     /// fraction of that.
     #[test]
     fn only_shaking_paths_are_steadied() {
-        let circle: Vec<Point> = (0..=24)
+        let circle: Vec<[f64; 2]> = (0..=24)
             .map(|k| (k as f64 * std::f64::consts::TAU / 24.0).sin_cos())
-            .map(|(s, c)| Point::new(40.0 * c, 40.0 * s))
+            .map(|(s, c)| [40.0 * c, 40.0 * s])
             .collect();
         assert_eq!(steadied(circle.clone()), circle);
         let mut rng = Rng::new(5);
-        let points = |s: &Stroke| s.points.iter().map(|&[x, y]| Point::new(x, y)).collect::<Vec<_>>();
-        let shake = |p: &[Point]| jitter(&p.iter().map(|p| [p.x, p.y]).collect::<Vec<_>>()).sqrt();
+        let shake = |p: &[[f64; 2]]| jitter(p).sqrt();
         for _ in 0..20 {
-            let steady = points(&petal(0.3, rng.next_f64(), 1.0, &mut rng));
+            let steady = petal(0.3, rng.next_f64(), 1.0, &mut rng).points;
             assert_eq!(steadied(steady.clone()), steady);
-            let shaken = points(&petal(0.3, rng.next_f64(), 3.5, &mut rng));
+            let shaken = petal(0.3, rng.next_f64(), 3.5, &mut rng).points;
             let after = steadied(shaken.clone());
             assert!(shake(&after) < 0.5 * shake(&shaken), "{:.2} from {:.2}", shake(&after), shake(&shaken));
             // (Closed as drawn.)
