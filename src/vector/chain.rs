@@ -23,6 +23,7 @@
 //! to translation); follows Xing et al. 2014's local similarity, read globally from all
 //! the drawn copies since synthesis sees the whole drawing at once.
 
+use super::frechet::closed_loop;
 use super::similarity::{centroid, mul, relate, samples, Similarity};
 use super::stroke::Stroke;
 use crate::rng::Rng;
@@ -79,11 +80,12 @@ const ROSETTE: f64 = 1.5;
 const MAX_STEPS: i64 = 400;
 /// The most copies round a ring.
 const MAX_RING: usize = 72;
-/// A completed copy's stroke lies on a drawn one when they are at most this share of its
-/// size `apart`. (Paired sample by sample, a petal drawn as a loop begun elsewhere on
-/// its outline than the copy carried onto it was not on it, though 0.04 of its size
-/// apart: five petals drawn whole with a shaky pointer, the fifth left out of the chain,
-/// synthesized as rosettes of six with that petal doubled.)
+/// A completed copy's stroke lies on a drawn one when their centres, and the paths
+/// themselves (`apart`), are at most this share of its size apart. (Paired sample by
+/// sample from their starts only, a petal drawn as a loop begun elsewhere on its
+/// outline than the copy carried onto it was not on it: five petals drawn whole with a
+/// shaky pointer, the fifth left out of the chain, synthesized as rosettes of six with
+/// that petal doubled.)
 const ON: f64 = 0.1;
 
 /// The drawn copies in order along the step, and the step.
@@ -420,7 +422,13 @@ impl Chain {
     pub fn complete(&self, strokes: &[Stroke], seed: Option<u64>) -> Vec<(Stroke, usize)> {
         let Some(k) = self.closes else { return Vec::new() };
         let mut rng = seed.map(Rng::new);
-        let mut placed: Vec<Vec<Point>> = strokes.iter().map(samples).collect();
+        let mut placed: Vec<(Point, Vec<Point>)> = strokes
+            .iter()
+            .map(|s| {
+                let s = samples(s);
+                (centroid(&s), s)
+            })
+            .collect();
         let mut out = Vec::new();
         // (From the first copy short of a stroke: a motif's copy being drawn.)
         let most = self.companions.iter().map(Vec::len).max().unwrap_or(0);
@@ -433,10 +441,11 @@ impl Chain {
             for (stroke, source) in copy.into_iter().skip(drawn) {
                 let s = samples(&stroke);
                 let size = stroke.bounds().size().to_vec2().hypot();
-                if placed.iter().any(|p| apart(&s, p) < ON * size) {
+                let c = centroid(&s);
+                if placed.iter().any(|(pc, p)| pc.distance(c) < ON * size && apart(&s, p) < ON * size) {
                     continue;
                 }
-                placed.push(s);
+                placed.push((c, s));
                 out.push((stroke, source));
             }
         }
@@ -508,15 +517,28 @@ impl Chain {
     }
 }
 
-/// How far apart two paths lie, wherever each begins and whichever way it runs: the
-/// mean distance from each sample of one to the nearest of the other, the larger of the
-/// two ways (a loop begun elsewhere on the same outline is 0 apart).
+/// How far apart two paths lie, point for point: the root-mean-square distance between
+/// their samples paired in order, either way round, and for two closed loops from the
+/// start along the second that pairs them best (a hand begins each loop wherever it
+/// puts the pen: a loop begun elsewhere on the same outline is 0 apart). Paired, unlike
+/// the nearest points, a vein inside its petal, or a narrow petal 2 beside the next, is
+/// not on it.
 fn apart(p: &[Point], q: &[Point]) -> f64 {
-    let one_way = |from: &[Point], to: &[Point]| {
-        from.iter().map(|a| to.iter().map(|b| a.distance_squared(*b)).fold(f64::INFINITY, f64::min).sqrt()).sum::<f64>()
-            / from.len().max(1) as f64
-    };
-    one_way(p, q).max(one_way(q, p))
+    let n = p.len().min(q.len());
+    if n == 0 {
+        return f64::INFINITY;
+    }
+    let rms =
+        |pair: &dyn Fn(usize) -> Point| ((0..n).map(|i| p[i].distance_squared(pair(i))).sum::<f64>() / n as f64).sqrt();
+    let mut best = rms(&|i| q[i]).min(rms(&|i| q[n - 1 - i]));
+    if n > 2 && closed_loop(p) && closed_loop(q) {
+        // (A closed loop's last sample repeats its first.)
+        let m = n - 1;
+        for k in 1..m {
+            best = best.min(rms(&|i| q[(i + k) % m])).min(rms(&|i| q[(m + k - i % m) % m]));
+        }
+    }
+    best
 }
 
 #[cfg(test)]
@@ -576,6 +598,41 @@ mod tests {
         let rest = chain.complete(four, None);
         assert_eq!(rest.len(), 1);
         assert!(rest[0].0.reference_point().distance(petal(c, 4.0 * TAU / 5.0, 60.0).reference_point()) < 1.0);
+    }
+
+    #[test]
+    fn a_dense_ring_is_completed_whole() {
+        // 48 petals 70 long and 10 wide, 60 from the centre, 20 drawn, each a loop begun
+        // elsewhere on its outline: the 28 completed, and their veins, lie beside their
+        // neighbours and about each other, never on them.
+        let c = Point::new(400.0, 300.0);
+        let step = TAU / 48.0;
+        let narrow = |k: usize| {
+            let (th, start) = (k as f64 * step, (k as f64 * 0.37).fract());
+            let pts = (0..=40)
+                .map(|i| {
+                    let t = TAU * (start + i as f64 / 40.0);
+                    let (x, y) = (60.0 + 35.0 * (1.0 - t.cos()), 5.0 * t.sin());
+                    [c.x + x * th.cos() - y * th.sin(), c.y + x * th.sin() + y * th.cos()]
+                })
+                .collect();
+            Stroke::new(pts, 2.0, None)
+        };
+        // (Each with a vein down its middle, drawn after it.)
+        let vein = |k: usize| {
+            let d = Vec2::new((k as f64 * step).cos(), (k as f64 * step).sin());
+            let (p, q) = (c + d * 70.0, c + d * 120.0);
+            Stroke::new(vec![[p.x, p.y], [q.x, q.y]], 2.0, None)
+        };
+        let drawn: Vec<Stroke> = (0..20).flat_map(|k| [narrow(k), vein(k)]).collect();
+        let a = Vec2::new(step.cos(), step.sin());
+        let chain = Chain {
+            members: (0..20).map(|k| 2 * k).collect(),
+            companions: (0..20).map(|k| vec![2 * k + 1]).collect(),
+            step: Similarity { a, b: c.to_vec2() - mul(a, c.to_vec2()) },
+            closes: Some(48),
+        };
+        assert_eq!(chain.complete(&drawn, None).len(), 56);
     }
 
     #[test]
