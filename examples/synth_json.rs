@@ -1,6 +1,7 @@
 //! Synthesis of a drawing saved as JSON (an array of strokes as the package takes them):
 //! `cargo run --release --example synth_json drawing.json [width height]`; prints the
-//! structure found and the output's size, and writes out/synth_json.svg.
+//! structure found and the output's size, and writes out/synth_json.svg. With `CHAIN=1`,
+//! also the chain read from the drawing (`vector::chain`) and the rings beside it.
 use patternsynth::vector::{synthesize_strokes, Stroke, StrokeOptions};
 use patternsynth::Silent;
 
@@ -17,6 +18,19 @@ fn main() {
             std::process::exit(1);
         }
     };
+    if std::env::var("CHAIN").is_ok() {
+        use patternsynth::vector::chain;
+        let show = |c: &chain::Chain| {
+            format!("members {:?}, turn {:.1}°, closes {:?}", c.members, c.step.turn().to_degrees(), c.closes)
+        };
+        match chain::find(&strokes).or_else(|| chain::find_ring(&strokes)) {
+            Some(c) => {
+                eprintln!("chain: {}", show(&c));
+                chain::rings_beside(&strokes, &c).iter().for_each(|b| eprintln!("  beside: {}", show(b)));
+            }
+            None => eprintln!("no chain"),
+        }
+    }
     println!("{:?}: {} strokes, periods {:?}", r.structure, r.strokes.len(), r.periods);
     std::fs::create_dir_all("out").unwrap();
     std::fs::write("out/synth_json.svg", r.svg.replace("stroke=\"none\"", "stroke=\"black\"")).unwrap();

@@ -687,3 +687,41 @@ fn rings_drawn_with_a_shaky_pointer_are_found() {
     eprintln!("shaky rings from four petals: {right} right, {wrong} wrong of {tried}");
     assert!(right >= 36 && wrong <= 12, "{right} right, {wrong} wrong of {tried}");
 }
+
+/// Two flowers drawn side by side, one whole and one begun with three petals, of
+/// another petal count or of the same (1% and 3%, seeds 1-3): synthesis returned the
+/// drawing as it was, the second flower unfinished (a new user's trial: 8 of 8 such
+/// drawings). Each ring is completed and the two repeat together over the output: every
+/// rosette wholly inside it holds its ring's petals, one a slot, and each flower is
+/// laid at least three times.
+#[test]
+fn two_flowers_drawn_side_by_side_each_complete_and_repeat() {
+    let bounds = |s: &[Stroke]| s.iter().skip(1).fold(s[0].bounds(), |r, t| r.union(t.bounds()));
+    for wobble in [0.01, 0.03] {
+        for seed in 1..=3 {
+            for (first, second) in [(8usize, 5usize), (8, 8), (5, 12)] {
+                let a = family(wobble, seed, &format!("ring of {first}")).strokes;
+                let b = family(wobble, seed + 10, &format!("ring of {second}")).strokes;
+                // The second flower's first three petals, a flower's width to the right.
+                let (ra, rb) = (bounds(&a), bounds(&b[..]));
+                let v = Vec2::new(ra.x1 + 0.5 * ra.width() - rb.x0, ra.center().y - rb.center().y);
+                let drawn: Vec<Stroke> =
+                    a.iter().cloned().chain(b[..3].iter().map(|s| s.translated(v.x, v.y))).collect();
+                let r = synth(&drawn);
+                let what = format!("rings of {first} and {second} (3 drawn), wobble {wobble}, seed {seed}");
+                assert_eq!(r.structure, Structure::Ring, "{what}");
+                assert!(r.periods.is_some(), "{what}: the flowers repeat on a lattice");
+                for (n, ours) in [(first, 0..first), (second, first..first + 3)] {
+                    let mut one = r.clone();
+                    let keep: Vec<bool> = r.sources.iter().map(|&s| ours.contains(&(s as usize))).collect();
+                    let mut k = keep.iter();
+                    one.strokes.retain(|_| *k.next().unwrap());
+                    let (checked, _, bad) = rosettes(&one, n, 90.0);
+                    assert!(checked >= 1, "{what}: no whole ring of {n} inside the output");
+                    assert_eq!(bad, 0, "{what}: rings of {n} with petals missing or stacked");
+                    assert!(one.strokes.len() >= 3 * n, "{what}: {} petals of the ring of {n}", one.strokes.len());
+                }
+            }
+        }
+    }
+}

@@ -20,6 +20,7 @@ mod reference;
 pub mod regularity;
 #[cfg(feature = "test-support")]
 pub mod replay;
+mod rosette;
 #[cfg(feature = "test-support")]
 pub mod sequences;
 pub mod similarity;

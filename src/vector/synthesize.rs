@@ -8,11 +8,12 @@ use super::mesh::Mesh;
 use super::motif::{self, Motifs};
 use super::period::Periods;
 use super::reference::Spread;
+use super::rosette;
 use super::stroke::Stroke;
 use super::svg::to_svg;
 use crate::error::{invalid, Error, Result};
 use crate::progress::{Progress, Throttle};
-use kurbo::{Point, Vec2};
+use kurbo::{Point, Rect, Vec2};
 use serde::{Deserialize, Serialize};
 
 /// Options of `synthesize_strokes`; every tolerance left out is proposed from the data.
@@ -251,7 +252,7 @@ pub fn synthesize_strokes(
             return along_path(strokes, classification, more, opts, max_elements, progress).map_err(explain);
         }
     }
-    let area = kurbo::Rect::new(0.0, 0.0, opts.width, opts.height);
+    let area = Rect::new(0.0, 0.0, opts.width, opts.height);
     let mut throttle = Throttle::with_range(progress, 0.02, 0.98);
     // A mesh (pieces that share their edges) is joined afresh, not placed piece by piece,
     // unless it repeats exactly (a tile repeated extends exactly as it is).
@@ -263,12 +264,20 @@ pub fn synthesize_strokes(
     // A drawing with no lattice may repeat along a similarity step: a ring, an arc, a
     // spiral (`chain`). A rosette (copies turned round a centre close by) is taken
     // before a lattice: a lattice read from a handful of petals is a chance one.
+    // (Beside a ring, the drawing's other rings: two flowers side by side.)
     let along = (joined.is_none() && periods.is_none() && motifs.copies.is_none())
-        .then(|| chain::find(strokes))
+        .then(|| chain::find(strokes).or_else(|| chain::find_ring(strokes).filter(|_| !translates(&elements))))
         .flatten()
-        .filter(|c| (c.closes.is_some() && 3 * c.strokes() >= 2 * strokes.len()) || !translates(&elements));
-    if let Some(chain) = along {
-        return along_chain(strokes, classification, chain, opts, max_elements, progress).map_err(explain);
+        .map(|c| {
+            let beside = if c.closes.is_some() { chain::rings_beside(strokes, &c) } else { Vec::new() };
+            (c, beside)
+        })
+        .filter(|(c, beside)| {
+            let held = c.strokes() + beside.iter().map(Chain::strokes).sum::<usize>();
+            (c.closes.is_some() && 3 * held >= 2 * strokes.len()) || !translates(&elements)
+        });
+    if let Some((chain, beside)) = along {
+        return along_chain(strokes, classification, chain, beside, opts, max_elements, progress).map_err(explain);
     }
     let meshed = joined.is_some();
     // A row (hatching along a straight contour) grows along its one period: a lattice
@@ -385,11 +394,6 @@ fn translates(elements: &[Element]) -> bool {
     }
 }
 
-/// The drawing repeated along its `chain`, centred in the output. A ring small beside
-/// the output (its diameter at most half the output's short side) is completed and
-/// repeated as a rosette on a hexagonal lattice its diameter and a tenth apart; a
-/// larger ring, a curve or a sequence is continued both ways across the output (a ring
-/// until it closes). Other strokes stay as drawn (in a rosette, they repeat with it).
 /// The drawing, in the middle of the output, with `more` copies along its path (each
 /// with the stroke it repeats: `suggest::along::fill`).
 fn along_path(
@@ -405,7 +409,7 @@ fn along_path(
             "This output would hold more than {max_elements} elements; the limit is {max_elements}. Use a smaller output or larger strokes."
         )));
     }
-    let area = kurbo::Rect::new(0.0, 0.0, opts.width, opts.height);
+    let area = Rect::new(0.0, 0.0, opts.width, opts.height);
     let bounds = strokes.iter().skip(1).fold(strokes[0].bounds(), |r, s| r.union(s.bounds()));
     let v = area.center() - bounds.center();
     let (out, sources): (Vec<Stroke>, Vec<u32>) = strokes
@@ -420,15 +424,21 @@ fn along_path(
     Ok(StrokeResult::new(out, classes, sources, classification, opts, Structure::Curve))
 }
 
+/// The drawing repeated along its `chain`, centred in the output. A ring is completed,
+/// and so is each of the drawing's other rings (`beside`); small beside the output, the
+/// drawing is then repeated as rosettes (`rosette::lattice`). A larger ring, a curve or
+/// a sequence is continued both ways across the output (a ring until it closes). Other
+/// strokes stay as drawn (in a rosette, they repeat with it).
 fn along_chain(
     strokes: &[Stroke],
     classification: Classification,
     chain: Chain,
+    beside: Vec<Chain>,
     opts: &StrokeOptions,
     max_elements: usize,
     progress: &mut dyn Progress,
 ) -> Result<StrokeResult> {
-    let area = kurbo::Rect::new(0.0, 0.0, opts.width, opts.height);
+    let area = Rect::new(0.0, 0.0, opts.width, opts.height);
     let bounds = strokes.iter().skip(1).fold(strokes[0].bounds(), |r, s| r.union(s.bounds()));
     let v = area.center() - bounds.center();
     let drawn: Vec<Stroke> = strokes.iter().map(|s| s.translated(v.x, v.y)).collect();
@@ -437,20 +447,21 @@ fn along_chain(
     let mut out = drawn.clone();
     let mut sources: Vec<u32> = (0..strokes.len() as u32).collect();
     if let Some(c) = chain.centre() {
-        for (s, from) in chain.complete(&drawn, seed) {
-            out.push(s);
-            sources.push(from as u32);
+        // Every ring of the drawing completed (two flowers side by side are two rings),
+        // each stroke with the ring it belongs to (none: a stroke of no ring).
+        let rings: Vec<Chain> = std::iter::once(chain.clone()).chain(beside.iter().map(|r| r.moved(v))).collect();
+        let mut ring_of: Vec<Option<usize>> = vec![None; out.len()];
+        for (i, ring) in rings.iter().enumerate() {
+            ring.held().for_each(|k| ring_of[k] = Some(i));
+            for (s, from) in ring.complete(&out.clone(), seed) {
+                out.push(s);
+                sources.push(from as u32);
+                ring_of.push(Some(i));
+            }
         }
-        let radius = out
-            .iter()
-            .flat_map(|s| s.points.iter().map(move |&[x, y]| c.distance(kurbo::Point::new(x, y)) + 0.5 * s.width))
-            .fold(0.0, f64::max);
-        if 4.0 * radius <= opts.width.min(opts.height) {
-            // (A large ring is continued across the output like a curve, below.)
-            let s = 2.2 * radius;
-            let hexagonal = [[s, 0.0], [0.5 * s, 0.5 * 3f64.sqrt() * s]];
-            let mut r =
-                synthesize_strokes(&out, &StrokeOptions { periods: Some(hexagonal), ..opts.clone() }, progress)?;
+        let lattice = rosette::lattice(&out, &ring_of, &rings, c, area);
+        if let Some(lattice) = lattice {
+            let mut r = synthesize_strokes(&out, &StrokeOptions { periods: Some(lattice), ..opts.clone() }, progress)?;
             r.sources = r.sources.iter().map(|&i| sources[i as usize]).collect();
             r.classes = r.sources.iter().map(|&i| classification.classes[i as usize]).collect();
             r.svg = to_svg(&r.strokes, &r.classes, opts.width, opts.height);
@@ -458,8 +469,15 @@ fn along_chain(
             r.structure = Structure::Ring;
             return Ok(r);
         }
-        out.truncate(strokes.len());
-        sources.truncate(strokes.len());
+        // (The first ring is completed as the chain is extended; the others stay
+        // completed.)
+        (out, sources) = out
+            .into_iter()
+            .zip(sources)
+            .enumerate()
+            .filter(|&(k, _)| k < strokes.len() || ring_of[k] != Some(0))
+            .map(|(_, kept)| kept)
+            .unzip();
     }
     // (Past the limit, an error as for a lattice, not the output cut short.)
     let (more, capped) = chain.extend(&drawn, area, seed, max_elements.saturating_sub(out.len()));

@@ -1,0 +1,357 @@
+//! Finding a chain: the step that carries the most copies onto another of their shape,
+//! the run it makes, the strokes drawn beside each copy, and whether it closes.
+
+use super::{Chain, MAX_STROKES};
+use crate::vector::similarity::{centroid, mul, relate, samples, Similarity};
+use crate::vector::stroke::Stroke;
+use kurbo::{Point, Vec2};
+use std::f64::consts::TAU;
+
+/// Same shape: the best similarity leaves an rms residual of at most this share of
+/// the stroke's size, and scales by at most `MAX_SCALE` either way.
+const SHAPE: f64 = 0.15;
+const MAX_SCALE: f64 = 1.3;
+/// Two relations are the same step when their `a` differ by at most this share of `|a|`
+/// (about 17 degrees: a person's hand turns each copy by about 2.5 degrees at random,
+/// and three petals of five read pair turns of 65.2 and 77.7 degrees; at 11 degrees, 6
+/// of 50 rings begun with three petals at 1% of the step made no chain, now 3).
+const TURN: f64 = 0.3;
+/// A step carries a copy onto another when it puts its centre within this share of the
+/// step's length.
+const PLACE: f64 = 0.3;
+/// A step turns or scales by at least this much (`|a - 1|`, about 1°): one that does
+/// not is a row's, which the lattice reads.
+const MIN_TURN: f64 = 0.02;
+/// Once the step is chosen, the chain follows it from copy to copy within this share
+/// of its length (a hand's copy may stray further than the candidates are held to:
+/// one line of sixteen hatching lines off by a third of their spacing).
+const FOLLOW: f64 = 0.5;
+/// Candidate steps relate each copy to this many of its nearest of the same shape.
+const NEAREST: usize = 4;
+/// A rosette closes when its steps round a whole turn are within this of a whole number
+/// (or a tenth of it).
+const CLOSE: f64 = 0.3;
+/// Copies whose centre of turn is within this many of their sizes are a rosette.
+const ROSETTE: f64 = 1.5;
+/// The most copies round a ring.
+const MAX_RING: usize = 72;
+
+/// The chain of `strokes`, if they repeat along a similarity step.
+pub fn find(strokes: &[Stroke]) -> Option<Chain> {
+    search(strokes, true)
+}
+
+/// A ring among `strokes`, though other strokes of its shape lie outside it: one of two
+/// flowers drawn with alike petals (`find` takes no chain that holds under two thirds
+/// of its shape's strokes).
+pub fn find_ring(strokes: &[Stroke]) -> Option<Chain> {
+    search(strokes, false).filter(|c| c.closes.is_some())
+}
+
+/// `find`, and with `whole` false, a ring that holds its share of the shape's strokes
+/// about its own centre, not of the whole drawing's.
+fn search(strokes: &[Stroke], whole: bool) -> Option<Chain> {
+    let n = strokes.len();
+    if !(3..=MAX_STROKES).contains(&n) {
+        return None;
+    }
+    let sampled: Vec<Vec<Point>> = strokes.iter().map(samples).collect();
+    let centre: Vec<Point> = sampled.iter().map(|s| centroid(s)).collect();
+    let size: Vec<f64> = strokes.iter().map(|s| s.bounds().size().to_vec2().hypot()).collect();
+    let mut rel: Vec<Option<(Similarity, bool)>> = vec![None; n * n];
+    // (A dot, a tap of the pen a few widths across, has no shape to relate: three to six
+    // points within two pixels are noise. Dots relate to one another by place alone,
+    // and to nothing else.)
+    let dot = |k: usize| strokes[k].is_dot();
+    for i in 0..n {
+        for j in 0..n {
+            let ratio = size[j] / size[i].max(1e-9);
+            if i != j && dot(i) && dot(j) {
+                let shift = Similarity { a: Vec2::new(1.0, 0.0), b: centre[j] - centre[i] };
+                rel[i * n + j] = Some((shift, false));
+            } else if i != j && !dot(i) && !dot(j) && (1.0 / MAX_SCALE..=MAX_SCALE).contains(&ratio) {
+                rel[i * n + j] = relate(&sampled[i], &sampled[j], size[i], SHAPE, MAX_SCALE).map(|(t, _, b)| (t, b));
+            }
+        }
+    }
+    // Shape groups: strokes related to one another, directly or through others.
+    let mut group: Vec<usize> = (0..n).collect();
+    fn root(g: &mut [usize], mut i: usize) -> usize {
+        while g[i] != i {
+            g[i] = g[g[i]];
+            i = g[i];
+        }
+        i
+    }
+    for i in 0..n {
+        for j in 0..n {
+            if rel[i * n + j].is_some() {
+                let (a, b) = (root(&mut group, i), root(&mut group, j));
+                group[a] = b;
+            }
+        }
+    }
+    let groups: Vec<usize> = (0..n).map(|i| root(&mut group, i)).collect();
+    // Where `t` carries copy `k`: the copy of its shape it lands on, related to it by
+    // about the same step.
+    // (A dot turns as the pen went: its copies are carried by place alone. A petal's dot
+    // at its tip was left off 23 of 58.)
+    let onto = |t: &Similarity, k: usize, reach: f64| -> Option<usize> {
+        let p = t.apply(centre[k]);
+        (0..n)
+            .filter(|&m| m != k && groups[m] == groups[k])
+            .filter(|&m| rel[k * n + m].is_some_and(|(r, _)| dot(k) || (r.a - t.a).hypot() <= TURN * t.a.hypot()))
+            .map(|m| (m, centre[m].distance(p)))
+            .filter(|&(_, d)| d <= reach)
+            .min_by(|x, y| x.1.total_cmp(&y.1))
+            .map(|(m, _)| m)
+    };
+    // The candidate step that carries the most copies onto another, the shortest first;
+    // candidates relate each copy to its nearest few of its shape (a step joins
+    // neighbours along the chain).
+    let mut best: Option<(usize, f64, Similarity)> = None;
+    for i in 0..n {
+        let mut near: Vec<usize> = (0..n).filter(|&j| rel[i * n + j].is_some()).collect();
+        near.sort_by(|&x, &y| centre[i].distance(centre[x]).total_cmp(&centre[i].distance(centre[y])));
+        for &j in near.iter().take(NEAREST) {
+            let Some((t, _)) = rel[i * n + j] else { continue };
+            let d = centre[i].distance(centre[j]);
+            if (t.a - Vec2::new(1.0, 0.0)).hypot() < MIN_TURN {
+                continue;
+            }
+            // Copies on one centre (an asterisk's bars) step by a turn alone: reach is
+            // then read from their size.
+            let d = d.max(0.1 * size[i]);
+            // (Copies of every shape: the step of a motif of several strokes carries
+            // each of them, a petal and its vein.)
+            let carried = (0..n).filter(|&k| onto(&t, k, PLACE * d).is_some()).count();
+            let better = match &best {
+                None => carried >= 2,
+                Some(b) => carried > b.0 || (carried == b.0 && d < b.1),
+            };
+            if better {
+                best = Some((carried, d, t));
+            }
+        }
+    }
+    let (_, d, t) = best?;
+    let next: Vec<Option<usize>> = (0..n).map(|k| onto(&t, k, FOLLOW * d)).collect();
+    // Every run along the step, from a copy no other steps onto (a closed ring: from its
+    // first-drawn copy); the longest is the chain.
+    let runs = runs(&next);
+    // (Of runs as long, the one of the largest strokes: the turn is read from its
+    // shapes, and a dot's says nothing.)
+    // A run of dots, which link by place alone, never leads one of larger strokes.
+    let extent = |r: &Vec<usize>| r.iter().map(|&k| size[k]).sum::<f64>();
+    let key = |r: &Vec<usize>| (r.iter().any(|&k| !dot(k)), r.len());
+    let chain = runs.iter().max_by(|x, y| key(x).cmp(&key(y)).then(extent(x).total_cmp(&extent(y))))?.clone();
+    // Runs beside it, a motif's other strokes (see `Chain::companions`).
+    let mut companions = companions(&chain, &runs);
+    // (And strokes of one shape in no run that the step carries onto one another in
+    // whole numbers of steps: the veins of the first and third petals, the second drawn
+    // bare, left four petals of six bare in every rosette.)
+    for g in (0..n).filter(|&k| groups[k] == k) {
+        let loose: Vec<usize> = (0..n)
+            .filter(|&k| groups[k] == g && !chain.contains(&k) && !companions.iter().flatten().any(|&c| c == k))
+            .collect();
+        if loose.len() < 2 {
+            continue;
+        }
+        let beside = self::companions(&chain, std::slice::from_ref(&loose));
+        let placed: Vec<(i64, usize)> =
+            beside.iter().enumerate().flat_map(|(i, c)| c.iter().map(move |&k| (i as i64, k))).collect();
+        let carried = placed.windows(2).all(|w| {
+            let ((i, a), (j, b)) = (w[0], w[1]);
+            t.power(j - i).is_some_and(|tk| tk.apply(centre[a]).distance(centre[b]) <= FOLLOW * d)
+        });
+        if placed.len() == loose.len() && carried {
+            for (c, more) in companions.iter_mut().zip(beside) {
+                c.extend(more);
+                c.sort_unstable();
+            }
+        }
+    }
+    let covered = chain.len() + companions.iter().map(Vec::len).sum::<usize>();
+    let grouped =
+        |k: usize| groups[k] == groups[chain[0]] || companions.iter().flatten().any(|&c| groups[c] == groups[k]);
+    let shape_count = (0..n).filter(|&k| grouped(k)).count();
+    if chain.len() < 3 || (whole && 3 * covered < 2 * shape_count) {
+        return None;
+    }
+    // The step: its turn and scale from the copies' shapes (the mean over consecutive
+    // pairs, each fitted on its own, so that where the hand put each copy does not
+    // leak into how it turned it), its shift from where the copies are (the mean of
+    // what each pair needs, given the turn).
+    // (Each consecutive pair's own fit is its relation, read the way round it fits.)
+    let pairs: Vec<Similarity> =
+        chain.windows(2).map(|w| rel[w[0] * n + w[1]].expect("consecutive copies are related").0).collect();
+    let shift_for = |a: Vec2| {
+        let b = chain.windows(2).fold(Vec2::ZERO, |s, w| s + centre[w[1]].to_vec2() - mul(a, centre[w[0]].to_vec2()));
+        Similarity { a, b: b / pairs.len() as f64 }
+    };
+    let mut step = shift_for(pairs.iter().fold(Vec2::ZERO, |s, t| s + t.a) / pairs.len() as f64);
+    // A turn without scale is read from where the copies are as well: the mean angle
+    // each pair of copies makes at the centre, averaged with the shapes' turn (each
+    // alone errs about as much: a petal's angle as its place round the centre).
+    let off = |c: Point| chain.iter().all(|&k| centre[k].distance(c) > 0.25 * size[k]);
+    if let (true, Some(c)) = ((step.scale() - 1.0).abs() < 0.04, step.fixed_point().filter(|&c| off(c))) {
+        let angle = |p: Point| (p.y - c.y).atan2(p.x - c.x);
+        let placed = chain
+            .windows(2)
+            .map(|w| {
+                (angle(centre[w[1]]) - angle(centre[w[0]]) + 3.0 * std::f64::consts::PI).rem_euclid(TAU)
+                    - std::f64::consts::PI
+            })
+            .sum::<f64>()
+            / pairs.len() as f64;
+        let turn = 0.5 * (step.turn() + placed);
+
+        // (Within 4%, a scale is the hand's: a curve's copies stay its size.)
+        step = shift_for(Vec2::new(turn.cos(), turn.sin()));
+    }
+    if (step.a - Vec2::new(1.0, 0.0)).hypot() < MIN_TURN {
+        return None;
+    }
+    // Every consecutive pair within reach of the fitted step.
+    let len = (chain.windows(2).map(|w| centre[w[0]].distance(centre[w[1]])).sum::<f64>() / (chain.len() - 1) as f64)
+        .max(0.1 * size[chain[0]]);
+    if chain.windows(2).any(|w| step.apply(centre[w[0]]).distance(centre[w[1]]) > FOLLOW * len) {
+        return None;
+    }
+    // A ring (`ring_steps`)?
+    let radius =
+        step.fixed_point().map(|c| chain.iter().map(|&k| centre[k].distance(c)).sum::<f64>() / chain.len() as f64);
+    let size = chain.iter().map(|&k| size[k]).sum::<f64>() / chain.len() as f64;
+    let closes = radius.and_then(|r| ring_steps(&step, r, size, chain.len()));
+    if let Some(k) = closes {
+        // The turn snapped, and the shift read again for it.
+        let turn = TAU / k as f64 * step.turn().signum();
+        step = shift_for(Vec2::new(turn.cos(), turn.sin()));
+    }
+    if !whole {
+        // Two thirds of its shape's strokes about its centre, as `find` asks of the
+        // whole drawing's: four petals of nine, drawn whole, read a ring of eleven.
+        let (Some(c), Some(r), Some(_)) = (step.fixed_point(), radius, closes) else { return None };
+        let about = (0..n).filter(|&k| grouped(k) && centre[k].distance(c) <= r + size).count();
+        if 3 * covered < 2 * about {
+            return None;
+        }
+    }
+    Some(Chain { members: chain, companions, step, closes })
+}
+
+/// Further rings among the strokes `chain` does not hold, each indexed in `strokes`:
+/// two flowers drawn side by side are two rings (`find` takes one, and the other's
+/// petals are no part of it), and each is completed. A chain among the rest that does
+/// not close ends the search.
+pub fn rings_beside(strokes: &[Stroke], chain: &Chain) -> Vec<Chain> {
+    let mut held = vec![false; strokes.len()];
+    let mut out: Vec<Chain> = Vec::new();
+    chain.held().for_each(|k| held[k] = true);
+    // Each ring's centre, radius and copy size.
+    let circle = |c: &Chain| {
+        let centre = c.centre()?;
+        let placed = c.members.iter().map(|&k| strokes[k].reference_point().distance(centre));
+        let size = c.members.iter().map(|&k| strokes[k].bounds().size().to_vec2().hypot());
+        let n = c.members.len() as f64;
+        Some((centre, placed.sum::<f64>() / n, size.sum::<f64>() / n))
+    };
+    let mut circles: Vec<(Point, f64, f64)> = circle(chain).into_iter().collect();
+    loop {
+        let rest: Vec<usize> = (0..strokes.len()).filter(|&k| !held[k]).collect();
+        let sub: Vec<Stroke> = rest.iter().map(|&k| strokes[k].clone()).collect();
+        let Some(ring) = find_ring(&sub) else { return out };
+        let ring = Chain {
+            members: ring.members.iter().map(|&k| rest[k]).collect(),
+            companions: ring.companions.iter().map(|c| c.iter().map(|&k| rest[k]).collect()).collect(),
+            ..ring
+        };
+        ring.held().for_each(|k| held[k] = true);
+        // (Petals of a ring found already, left out of its chain by a shaky hand, are
+        // on its circle: its completion takes their places. A ring round the same centre
+        // further out is a ring of its own.)
+        let Some((c, r, size)) = circle(&ring) else { continue };
+        if circles.iter().any(|&(d, q, s)| c.distance(d) < 0.5 * s.max(size) && (r - q).abs() < 0.5 * s.max(size)) {
+            continue;
+        }
+        circles.push((c, r, size));
+        out.push(ring);
+    }
+}
+
+/// The maximal runs of `next` (each stroke's successor along the step): from each copy
+/// no other steps onto, and where none starts (a ring closed whole), from the first.
+fn runs(next: &[Option<usize>]) -> Vec<Vec<usize>> {
+    let follow = |s: usize| {
+        let mut run = vec![s];
+        while let Some(m) = next[*run.last().expect("a run holds its start")] {
+            if run.contains(&m) {
+                break;
+            }
+            run.push(m);
+        }
+        run
+    };
+    let mut pointed = vec![false; next.len()];
+    for &m in next.iter().flatten() {
+        pointed[m] = true;
+    }
+    let mut out: Vec<Vec<usize>> = (0..next.len()).filter(|&s| next[s].is_some() && !pointed[s]).map(follow).collect();
+    for (s, n) in next.iter().enumerate() {
+        if n.is_some() && !out.iter().flatten().any(|&k| k == s) {
+            out.push(follow(s));
+        }
+    }
+    out
+}
+
+/// For each copy of `chain`, the strokes of the other `runs` drawn beside it: a run of
+/// two or more whose strokes each lie the same number of strokes from a copy of the
+/// chain in the drawing's order (fewer than usually separate two copies). A run may
+/// wrap round a ring where one of its strokes is missing (a petal drawn without its
+/// vein: the veins after it, round to those before), so its strokes need not come in
+/// the chain's order.
+fn companions(chain: &[usize], runs: &[Vec<usize>]) -> Vec<Vec<usize>> {
+    let mut out = vec![Vec::new(); chain.len()];
+    // (The median, not the least: a copy missing a stroke is drawn closer to the next.)
+    let mut gaps: Vec<usize> = chain.windows(2).map(|w| w[0].abs_diff(w[1])).collect();
+    gaps.sort_unstable();
+    let gap = gaps.get(gaps.len() / 2).copied().unwrap_or(0) as u64;
+    let place = |k: usize, d: i64| chain.iter().position(|&c| c as i64 + d == k as i64);
+    for r in runs.iter().filter(|r| r.len() >= 2 && r.len() <= chain.len() && r.iter().all(|k| !chain.contains(k))) {
+        let beside = chain
+            .iter()
+            .map(|&c| r[0] as i64 - c as i64)
+            .find(|&d| d.unsigned_abs() < gap && r.iter().all(|&k| place(k, d).is_some()));
+        if let Some(d) = beside {
+            for &k in r {
+                out[place(k, d).expect("checked above")].push(k);
+            }
+        }
+    }
+    for c in &mut out {
+        c.sort_unstable();
+    }
+    out
+}
+
+/// The copies round a whole ring, when copies `size` large on the orbit of `step`,
+/// `radius` from its centre, `drawn` of them, close into one: a ring round a centre
+/// close by (petals: the centre within about a copy's size) or drawn half round it, no
+/// scale, and a whole number of steps round, however the hand's wobble has put the
+/// turn (three petals of twelve at 3% of the step read the turn 4% off): the nearest
+/// whole number within a tenth of it, to which the turn is then snapped. Copies round a
+/// far centre (leaves along an arc) are a curve: snapping 25.7 steps round to 26 would
+/// put the 8th leaf on from the drawn ones 9% of a step off its arc.
+pub fn ring_steps(step: &Similarity, radius: f64, size: f64, drawn: usize) -> Option<usize> {
+    let turns = TAU / step.turn().abs();
+    let whole = turns.round();
+    // (A ring drawn half round or more, sun rays round a disc, closes however far.)
+    let rosette =
+        radius <= ROSETTE * size || drawn.saturating_sub(1) as f64 * step.turn().abs() >= std::f64::consts::PI;
+    (rosette
+        && (step.scale() - 1.0).abs() < 0.04
+        && (turns - whole).abs() <= CLOSE.max(0.1 * whole)
+        && (3.0..=MAX_RING as f64).contains(&whole))
+    .then_some(whole as usize)
+}
