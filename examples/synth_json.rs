@@ -23,9 +23,9 @@ fn main() {
         let show = |c: &chain::Chain| {
             format!("members {:?}, turn {:.1}°, closes {:?}", c.members, c.step.turn().to_degrees(), c.closes)
         };
-        match chain::find(&strokes).or_else(|| chain::find_ring(&strokes)) {
-            Some(c) => {
-                eprintln!("chain: {}", show(&c));
+        match chain::find_or_ring(&strokes) {
+            Some((c, whole)) => {
+                eprintln!("chain{}: {}", if whole { "" } else { " (a ring among others of its shape)" }, show(&c));
                 chain::rings_beside(&strokes, &c).iter().for_each(|b| eprintln!("  beside: {}", show(b)));
             }
             None => eprintln!("no chain"),

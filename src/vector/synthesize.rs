@@ -266,8 +266,10 @@ pub fn synthesize_strokes(
     // before a lattice: a lattice read from a handful of petals is a chance one.
     // (Beside a ring, the drawing's other rings: two flowers side by side.)
     let along = (joined.is_none() && periods.is_none() && motifs.copies.is_none())
-        .then(|| chain::find(strokes).or_else(|| chain::find_ring(strokes).filter(|_| !translates(&elements))))
+        .then(|| chain::find_or_ring(strokes))
         .flatten()
+        .filter(|(_, whole)| *whole || !translates(&elements))
+        .map(|(c, _)| c)
         .map(|c| {
             let beside = if c.closes.is_some() { chain::rings_beside(strokes, &c) } else { Vec::new() };
             (c, beside)

@@ -1,24 +1,27 @@
 // Petals drawn around a centre with the mouse (issue 27): after three, ghosts complete
 // the ring at the same turn; Tab accepts them; undo takes them back; synthesized, three
 // petals become rosettes of eight; petals drawn as two arcs each are completed whole.
+// Two flowers side by side, one whole and one begun, synthesize into both flowers
+// whole, repeated together.
 // Screenshots: out/ring-ghosts.png, out/ring-accepted.png, out/ring-synthesized.png,
-// out/ring-two-arcs.png, out/ring-two-arcs-accepted.png.
+// out/ring-two-arcs.png, out/ring-two-arcs-accepted.png, out/ring-two-flowers.png.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync } from 'node:fs';
 import { openEmptyCanvas } from './harness.mjs';
 
-/** Draws a petal with the mouse: a loop 110 long from the centre (400, 250) of the
- *  800 x 500 canvas along `theta`, its points wobbling by `wobble` across; begun `begin`
+/** Draws a petal with the mouse: a loop `len` long from `centre` (the middle of the
+ *  800 x 500 canvas) along `theta`, its points wobbling by `wobble` across; begun `begin`
  *  points of 28 round from its base, and drawn the other way round when `backwards`. */
-async function drawPetal(page, theta, wobble, phase = 0, begin = 0, backwards = false) {
+async function drawPetal(page, theta, wobble, phase = 0, begin = 0, backwards = false, centre = [400, 250], len = 110) {
   const box = await page.locator('#draw').boundingBox();
   const at = (x, y) => [box.x + (x * box.width) / 800, box.y + (y * box.height) / 500];
   const pts = [];
   for (let k = 0; k <= 28; k++) {
     const t = (k / 28) * 2 * Math.PI;
-    const along = 55 * (1 - Math.cos(t)), across = 18 * Math.sin(t) + ((k + phase) % 3 - 1) * wobble;
-    pts.push([400 + along * Math.cos(theta) - across * Math.sin(theta), 250 + along * Math.sin(theta) + across * Math.cos(theta)]);
+    const along = (len / 2) * (1 - Math.cos(t)), across = (len / 6) * Math.sin(t) + ((k + phase) % 3 - 1) * wobble;
+    const [cx, cy] = centre;
+    pts.push([cx + along * Math.cos(theta) - across * Math.sin(theta), cy + along * Math.sin(theta) + across * Math.cos(theta)]);
   }
   if (begin || backwards) {
     const loop = pts.slice(0, 28);
@@ -173,6 +176,31 @@ test('petals drawn as two arcs each: the ghosts complete the ring petal by petal
       sides.set(`${k}${Math.sign(off)}`, true);
     }
     assert.equal(sides.size, 16, 'both sides of every petal');
+  } finally {
+    await close();
+  }
+});
+
+test('two flowers drawn side by side, one of them begun, synthesize into both flowers whole', async () => {
+  mkdirSync('out', { recursive: true });
+  const { page, close } = await openEmptyCanvas({ height: 1000 });
+  try {
+    // Six petals round (200, 250), then three of eight round (600, 250); no ghost taken.
+    for (let k = 0; k < 6; k++) await drawPetal(page, (k * 2 * Math.PI) / 6 + 0.3, 0.6, k, 0, false, [200, 250], 90);
+    for (let k = 0; k < 3; k++) await drawPetal(page, (k * 2 * Math.PI) / 8, 0.6, k, 0, false, [600, 250], 90);
+    assert.equal(await strokeCount(page), 9);
+    await page.click('#synthesize');
+    await page.waitForFunction(() => /^(Done\.|.*error.*)$/i.test(document.querySelector('#messages').textContent) || document.querySelector('#messages .error'), null, { timeout: 120000 });
+    assert.equal(await page.textContent('#messages'), 'Done.');
+    await page.waitForFunction(() => document.querySelector('#preview canvas, #preview img'));
+    await page.screenshot({ path: 'out/ring-two-flowers.png' });
+    const info = await page.textContent('#result-info');
+    assert.match(info, /completed as a ring/, info);
+    // Each flower at least three times over the 1200 x 800 output, the second with its
+    // eight petals: (6 + 8) x 3 strokes at the least (it was the drawing as it was: 9).
+    const strokes = Number(info.split(' ')[0]);
+    assert.ok(strokes >= 3 * (6 + 8), info);
+    assert.equal(await strokeCount(page), 9, 'the drawing is kept as drawn');
   } finally {
     await close();
   }

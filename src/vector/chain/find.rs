@@ -38,19 +38,32 @@ const MAX_RING: usize = 72;
 
 /// The chain of `strokes`, if they repeat along a similarity step.
 pub fn find(strokes: &[Stroke]) -> Option<Chain> {
-    search(strokes, true)
+    search(strokes).filter(|f| f.whole).map(|f| f.chain)
 }
 
 /// A ring among `strokes`, though other strokes of its shape lie outside it: one of two
 /// flowers drawn with alike petals (`find` takes no chain that holds under two thirds
-/// of its shape's strokes).
+/// of its shape's strokes). It must hold two thirds of them about its own centre.
 pub fn find_ring(strokes: &[Stroke]) -> Option<Chain> {
-    search(strokes, false).filter(|c| c.closes.is_some())
+    search(strokes).filter(|f| f.ring).map(|f| f.chain)
 }
 
-/// `find`, and with `whole` false, a ring that holds its share of the shape's strokes
-/// about its own centre, not of the whole drawing's.
-fn search(strokes: &[Stroke], whole: bool) -> Option<Chain> {
+/// `find`'s chain, or else `find_ring`'s, from one search: with whether it is `find`'s.
+pub fn find_or_ring(strokes: &[Stroke]) -> Option<(Chain, bool)> {
+    search(strokes).filter(|f| f.whole || f.ring).map(|f| (f.chain, f.whole))
+}
+
+/// The chain the search reads, and which share of its shape's strokes it holds.
+struct Found {
+    chain: Chain,
+    /// Two thirds of its shape's strokes in the drawing (`find`).
+    whole: bool,
+    /// It closes, and holds two thirds of its shape's strokes about its centre
+    /// (`find_ring`).
+    ring: bool,
+}
+
+fn search(strokes: &[Stroke]) -> Option<Found> {
     let n = strokes.len();
     if !(3..=MAX_STROKES).contains(&n) {
         return None;
@@ -175,9 +188,10 @@ fn search(strokes: &[Stroke], whole: bool) -> Option<Chain> {
     let grouped =
         |k: usize| groups[k] == groups[chain[0]] || companions.iter().flatten().any(|&c| groups[c] == groups[k]);
     let shape_count = (0..n).filter(|&k| grouped(k)).count();
-    if chain.len() < 3 || (whole && 3 * covered < 2 * shape_count) {
+    if chain.len() < 3 {
         return None;
     }
+    let whole = 3 * covered >= 2 * shape_count;
     // The step: its turn and scale from the copies' shapes (the mean over consecutive
     // pairs, each fitted on its own, so that where the hand put each copy does not
     // leak into how it turned it), its shift from where the copies are (the mean of
@@ -228,16 +242,16 @@ fn search(strokes: &[Stroke], whole: bool) -> Option<Chain> {
         let turn = TAU / k as f64 * step.turn().signum();
         step = shift_for(Vec2::new(turn.cos(), turn.sin()));
     }
-    if !whole {
-        // Two thirds of its shape's strokes about its centre, as `find` asks of the
-        // whole drawing's: four petals of nine, drawn whole, read a ring of eleven.
-        let (Some(c), Some(r), Some(_)) = (step.fixed_point(), radius, closes) else { return None };
-        let about = (0..n).filter(|&k| grouped(k) && centre[k].distance(c) <= r + size).count();
-        if 3 * covered < 2 * about {
-            return None;
+    // (A second flower: two thirds of its shape's strokes about its centre, as `find`
+    // asks of the whole drawing's; four petals of nine drawn whole read a ring of 11.)
+    let ring = match (step.fixed_point(), radius, closes) {
+        (Some(c), Some(r), Some(_)) => {
+            let about = (0..n).filter(|&k| grouped(k) && centre[k].distance(c) <= r + size).count();
+            3 * covered >= 2 * about
         }
-    }
-    Some(Chain { members: chain, companions, step, closes })
+        _ => false,
+    };
+    Some(Found { chain: Chain { members: chain, companions, step, closes }, whole, ring })
 }
 
 /// Further rings among the strokes `chain` does not hold, each indexed in `strokes`:

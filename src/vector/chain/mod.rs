@@ -26,7 +26,7 @@
 mod carry;
 mod find;
 
-pub use find::{find, find_ring, ring_steps, rings_beside};
+pub use find::{find, find_or_ring, find_ring, ring_steps, rings_beside};
 
 use super::similarity::{mul, Similarity};
 use kurbo::{Point, Vec2};
