@@ -21,7 +21,8 @@ fn main() {
     if std::env::var("CHAIN").is_ok() {
         use patternsynth::vector::chain;
         let show = |c: &chain::Chain| {
-            format!("members {:?}, turn {:.1}°, closes {:?}", c.members, c.step.turn().to_degrees(), c.closes)
+            let turn = c.step.turn().to_degrees();
+            format!("members {:?}, companions {:?}, turn {turn:.1}°, closes {:?}", c.members, c.companions, c.closes)
         };
         match chain::find_or_ring(&strokes) {
             Some((c, whole)) => {

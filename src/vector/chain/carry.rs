@@ -77,7 +77,10 @@ impl Chain {
                 let s = samples(&stroke);
                 let size = stroke.bounds().size().to_vec2().hypot();
                 let c = centroid(&s);
-                let on = (ON * size).max((ON_MOST * size).min(ON_STEP * self.step.apply(c).distance(c)));
+                // (A dot, a few pixels across, is on a drawn dot anywhere within the share
+                // of the step: a shaky hand's dot 3 off its completed copy was doubled.)
+                let most = if stroke.is_dot() { f64::INFINITY } else { ON_MOST * size };
+                let on = (ON * size).max(most.min(ON_STEP * self.step.apply(c).distance(c)));
                 if placed.iter().any(|(pc, p)| pc.distance(c) < on && apart(&s, p) < on) {
                     continue;
                 }

@@ -2,7 +2,7 @@
 //! the run it makes, the strokes drawn beside each copy, and whether it closes.
 
 use super::{Chain, MAX_STROKES};
-use crate::vector::similarity::{centroid, mul, relate, samples, Similarity};
+use crate::vector::similarity::{centroid, mul, relations, samples, Similarity};
 use crate::vector::stroke::Stroke;
 use kurbo::{Point, Vec2};
 use std::f64::consts::TAU;
@@ -71,7 +71,10 @@ fn search(strokes: &[Stroke]) -> Option<Found> {
     let sampled: Vec<Vec<Point>> = strokes.iter().map(samples).collect();
     let centre: Vec<Point> = sampled.iter().map(|s| centroid(s)).collect();
     let size: Vec<f64> = strokes.iter().map(|s| s.bounds().size().to_vec2().hypot()).collect();
-    let mut rel: Vec<Option<(Similarity, bool)>> = vec![None; n * n];
+    // Each pair's fits as good as its best, the smallest turn first (`relations`: a
+    // petal symmetric under a half turn, an ellipse, fits turned either way, and four
+    // ellipses round a centre read turns of 90 and -90 degrees by the hand's noise).
+    let mut fits: Vec<Vec<Similarity>> = vec![Vec::new(); n * n];
     // (A dot, a tap of the pen a few widths across, has no shape to relate: three to six
     // points within two pixels are noise. Dots relate to one another by place alone,
     // and to nothing else.)
@@ -80,10 +83,11 @@ fn search(strokes: &[Stroke]) -> Option<Found> {
         for j in 0..n {
             let ratio = size[j] / size[i].max(1e-9);
             if i != j && dot(i) && dot(j) {
-                let shift = Similarity { a: Vec2::new(1.0, 0.0), b: centre[j] - centre[i] };
-                rel[i * n + j] = Some((shift, false));
+                fits[i * n + j] = vec![Similarity { a: Vec2::new(1.0, 0.0), b: centre[j] - centre[i] }];
             } else if i != j && !dot(i) && !dot(j) && (1.0 / MAX_SCALE..=MAX_SCALE).contains(&ratio) {
-                rel[i * n + j] = relate(&sampled[i], &sampled[j], size[i], SHAPE, MAX_SCALE).map(|(t, _, b)| (t, b));
+                let all = relations(&sampled[i], &sampled[j], size[i], SHAPE, MAX_SCALE);
+                let best = all.iter().map(|f| f.1).fold(f64::INFINITY, f64::min);
+                fits[i * n + j] = all.into_iter().filter(|f| f.1 <= (1.5 * best).max(0.02)).map(|f| f.0).collect();
             }
         }
     }
@@ -98,7 +102,7 @@ fn search(strokes: &[Stroke]) -> Option<Found> {
     }
     for i in 0..n {
         for j in 0..n {
-            if rel[i * n + j].is_some() {
+            if !fits[i * n + j].is_empty() {
                 let (a, b) = (root(&mut group, i), root(&mut group, j));
                 group[a] = b;
             }
@@ -113,7 +117,7 @@ fn search(strokes: &[Stroke]) -> Option<Found> {
         let p = t.apply(centre[k]);
         (0..n)
             .filter(|&m| m != k && groups[m] == groups[k])
-            .filter(|&m| rel[k * n + m].is_some_and(|(r, _)| dot(k) || (r.a - t.a).hypot() <= TURN * t.a.hypot()))
+            .filter(|&m| fits[k * n + m].iter().any(|r| dot(k) || (r.a - t.a).hypot() <= TURN * t.a.hypot()))
             .map(|m| (m, centre[m].distance(p)))
             .filter(|&(_, d)| d <= reach)
             .min_by(|x, y| x.1.total_cmp(&y.1))
@@ -122,12 +126,15 @@ fn search(strokes: &[Stroke]) -> Option<Found> {
     // The candidate step that carries the most copies onto another, the shortest first;
     // candidates relate each copy to its nearest few of its shape (a step joins
     // neighbours along the chain).
-    let mut best: Option<(usize, f64, Similarity)> = None;
+    // (Within a tenth of the most, or one, the shortest: a double step carries as many
+    // round a ring, and its reach, a share of its length, forgives a shaky petal the
+    // single step does not. Nine ellipses, each related either way round, were read as
+    // a step of two petals, 80 degrees, that closes no ring.)
+    let mut candidates: Vec<(usize, f64, Similarity)> = Vec::new();
     for i in 0..n {
-        let mut near: Vec<usize> = (0..n).filter(|&j| rel[i * n + j].is_some()).collect();
+        let mut near: Vec<usize> = (0..n).filter(|&j| !fits[i * n + j].is_empty()).collect();
         near.sort_by(|&x, &y| centre[i].distance(centre[x]).total_cmp(&centre[i].distance(centre[y])));
-        for &j in near.iter().take(NEAREST) {
-            let Some((t, _)) = rel[i * n + j] else { continue };
+        for (j, &t) in near.iter().take(NEAREST).flat_map(|&j| fits[i * n + j].iter().map(move |t| (j, t))) {
             let d = centre[i].distance(centre[j]);
             if (t.a - Vec2::new(1.0, 0.0)).hypot() < MIN_TURN {
                 continue;
@@ -138,16 +145,23 @@ fn search(strokes: &[Stroke]) -> Option<Found> {
             // (Copies of every shape: the step of a motif of several strokes carries
             // each of them, a petal and its vein.)
             let carried = (0..n).filter(|&k| onto(&t, k, PLACE * d).is_some()).count();
-            let better = match &best {
-                None => carried >= 2,
-                Some(b) => carried > b.0 || (carried == b.0 && d < b.1),
-            };
-            if better {
-                best = Some((carried, d, t));
+            if carried >= 2 {
+                candidates.push((carried, d, t));
             }
         }
     }
-    let (_, d, t) = best?;
+    let most = candidates.iter().map(|c| c.0).max()?;
+    let enough = most - (most / 10).max(1).min(most - 2);
+    let shortest = candidates.iter().filter(|c| c.0 >= enough).map(|c| c.1).fold(f64::INFINITY, f64::min);
+    // (Then, of the steps about that long, the one that carries the most: each is one
+    // pair's relation, and a shaky pair's leaves a petal's dot behind.)
+    let (_, d, t) = candidates.into_iter().filter(|c| c.1 <= 1.25 * shortest).reduce(|b, c| {
+        if c.0 > b.0 || (c.0 == b.0 && c.1 < b.1) {
+            c
+        } else {
+            b
+        }
+    })?;
     let next: Vec<Option<usize>> = (0..n).map(|k| onto(&t, k, FOLLOW * d)).collect();
     // Every run along the step, from a copy no other steps onto (a closed ring: from its
     // first-drawn copy); the longest is the chain.
@@ -197,8 +211,10 @@ fn search(strokes: &[Stroke]) -> Option<Found> {
     // leak into how it turned it), its shift from where the copies are (the mean of
     // what each pair needs, given the turn).
     // (Each consecutive pair's own fit is its relation, read the way round it fits.)
-    let pairs: Vec<Similarity> =
-        chain.windows(2).map(|w| rel[w[0] * n + w[1]].expect("consecutive copies are related").0).collect();
+    let pairs: Vec<Similarity> = chain
+        .windows(2)
+        .map(|w| nearest_fit(&fits[w[0] * n + w[1]], t).expect("consecutive copies are related"))
+        .collect();
     let shift_for = |a: Vec2| {
         let b = chain.windows(2).fold(Vec2::ZERO, |s, w| s + centre[w[1]].to_vec2() - mul(a, centre[w[0]].to_vec2()));
         Similarity { a, b: b / pairs.len() as f64 }
@@ -242,6 +258,13 @@ fn search(strokes: &[Stroke]) -> Option<Found> {
         let turn = TAU / k as f64 * step.turn().signum();
         step = shift_for(Vec2::new(turn.cos(), turn.sin()));
     }
+    // A chain that does not close turns each copy less than a right angle from the last
+    // (leaves along a curve, hatching that turns, a spiral): nine open petal loops, each
+    // fitting its neighbours either way round, read a step of 157 degrees that left the
+    // drawing as it was.
+    if closes.is_none() && step.turn().abs() > std::f64::consts::FRAC_PI_2 {
+        return None;
+    }
     // (A second flower: two thirds of its shape's strokes about its centre, as `find`
     // asks of the whole drawing's; four petals of nine drawn whole read a ring of 11.)
     let ring = match (step.fixed_point(), radius, closes) {
@@ -252,6 +275,11 @@ fn search(strokes: &[Stroke]) -> Option<Found> {
         _ => false,
     };
     Some(Found { chain: Chain { members: chain, companions, step, closes }, whole, ring })
+}
+
+/// Of `fits`, the one whose turn and scale are nearest `t`'s.
+fn nearest_fit(fits: &[Similarity], t: Similarity) -> Option<Similarity> {
+    fits.iter().copied().min_by(|x, y| (x.a - t.a).hypot().total_cmp(&(y.a - t.a).hypot()))
 }
 
 /// Further rings among the strokes `chain` does not hold, each indexed in `strokes`:
