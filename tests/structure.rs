@@ -710,7 +710,11 @@ fn two_flowers_drawn_side_by_side_each_complete_and_repeat() {
                 let r = synth(&drawn);
                 let what = format!("rings of {first} and {second} (3 drawn), wobble {wobble}, seed {seed}");
                 assert_eq!(r.structure, Structure::Ring, "{what}");
-                assert!(r.periods.is_some(), "{what}: the flowers repeat on a lattice");
+                // Spaced as drawn: each copy of the drawing at least its width and the
+                // drawn gap (half the first flower's width) from the next in its row.
+                let [a, _] = r.periods.expect("the flowers repeat on a lattice");
+                let wide = bounds(&drawn).width() + 0.5 * ra.width();
+                assert!(a[0].hypot(a[1]) >= 0.95 * wide, "{what}: copies {a:?} apart, drawn {wide:.0}");
                 for (n, ours) in [(first, 0..first), (second, first..first + 3)] {
                     let mut one = r.clone();
                     let keep: Vec<bool> = r.sources.iter().map(|&s| ours.contains(&(s as usize))).collect();

@@ -1,12 +1,13 @@
 //! The lattice a drawing of rings repeats on, once each ring is completed (issue 27):
 //! rosettes side by side over the output.
 //!
-//! A ring with all else drawn close round it (a flower with its stem, or rings round
-//! one centre) is one rosette: it repeats on a hexagonal lattice its diameter and a
-//! tenth apart. Rings drawn apart from one another, or from other strokes (a second
-//! flower, a sprig), repeat together: the drawing's box, in rows each offset by half a
-//! box, the boxes as far apart as the drawn rings are from the rest (two flowers drawn
-//! a flower apart stay so, rather than pair off). A ring large beside the output (its
+//! Rings round one centre, with all else within half again the largest's reach (a
+//! sprig across a petal), are one rosette: it repeats on a hexagonal lattice its
+//! diameter and a tenth apart. Rings drawn apart from one another, or from other
+//! strokes (a second flower, a sprig, a long stem), repeat together: the drawing's box,
+//! in rows each offset by half a box, the boxes as far apart as the drawn rings are
+//! from the rest (two flowers drawn a flower apart stay so, rather than pair off; a
+//! flower's disc or stem, which meets its ring, is part of it, not a gap of nothing). A ring large beside the output (its
 //! diameter over half the output's short side), or a drawing larger than the output,
 //! is no rosette: it is continued across the output as a curve.
 
@@ -34,34 +35,45 @@ pub fn lattice(
             .fold(0.0, f64::max)
     };
     let radius = reach(centre, &|_| true);
-    if 4.0 * radius <= short {
-        let s = 2.2 * radius;
-        return Some([[s, 0.0], [0.5 * s, 0.5 * 3f64.sqrt() * s]]);
-    }
     let radii: Vec<f64> = rings
         .iter()
         .enumerate()
         .map(|(i, ring)| ring.centre().map_or(f64::INFINITY, |c| reach(c, &|k| ring_of[k] == Some(i))))
         .collect();
+    // (One rosette: the rings round one centre, and all else within half again the
+    // largest's reach: a sprig across a petal, not a second flower.)
+    let largest = radii.iter().copied().fold(0.0, f64::max);
+    let concentric = rings.iter().all(|r| r.centre().is_some_and(|c| c.distance(centre) <= 0.25 * radii[0]));
+    if concentric && radius <= 1.5 * largest && 4.0 * radius <= short {
+        let s = 2.2 * radius;
+        return Some([[s, 0.0], [0.5 * s, 0.5 * 3f64.sqrt() * s]]);
+    }
     let pen = 0.5 * out.iter().map(|s| s.width).fold(0.0, f64::max);
     let bounds = out.iter().skip(1).fold(out.first()?.bounds(), |r, s| r.union(s.bounds())).inflate(pen, pen);
     if radii.iter().any(|&r| 4.0 * r > short) || bounds.width() > area.width() || bounds.height() > area.height() {
         return None;
     }
+    // The drawing in clusters: each ring's box, grown by the other strokes that meet it
+    // (a flower's disc or stem, petals the ring's chain left out), and the rest.
     let mut boxes: Vec<Option<Rect>> = vec![None; rings.len()];
     for (s, ring) in out.iter().zip(ring_of) {
         if let Some(i) = *ring {
             boxes[i] = Some(boxes[i].map_or(s.bounds(), |b| b.union(s.bounds())));
         }
     }
-    let boxes: Vec<Rect> = boxes.into_iter().flatten().collect();
-    let loose: Vec<Rect> = out.iter().zip(ring_of).filter(|(_, r)| r.is_none()).map(|(s, _)| s.bounds()).collect();
-    let drawn_gap = boxes
-        .iter()
-        .enumerate()
-        .flat_map(|(i, &a)| boxes[i + 1..].iter().chain(&loose).map(move |&b| apart(a, b)))
+    let mut clusters: Vec<Rect> = boxes.into_iter().flatten().collect();
+    let rings_held = clusters.len();
+    for (s, _) in out.iter().zip(ring_of).filter(|(_, r)| r.is_none()) {
+        match clusters[..rings_held].iter_mut().find(|b| apart(**b, s.bounds()) == 0.0) {
+            Some(b) => *b = b.union(s.bounds()),
+            None => clusters.push(s.bounds()),
+        }
+    }
+    let drawn_gap = (0..rings_held)
+        .flat_map(|i| clusters.iter().enumerate().filter(move |&(j, _)| j != i).map(move |(_, &b)| (i, b)))
+        .map(|(i, b)| apart(clusters[i], b))
         .fold(f64::INFINITY, f64::min);
-    let gap = (0.2 * radii.iter().copied().fold(0.0, f64::max)).max(drawn_gap.min(short));
+    let gap = (0.2 * largest).max(drawn_gap.min(short));
     let (w, h) = (bounds.width() + gap, bounds.height() + gap);
     Some([[w, 0.0], [0.5 * w, h]])
 }

@@ -198,6 +198,10 @@ pub fn synthesize_strokes(
     opts: &StrokeOptions,
     progress: &mut dyn Progress,
 ) -> Result<StrokeResult> {
+    // (Checked here as well as in growth: a ring or a curve never reaches it.)
+    if !(opts.width.is_finite() && opts.height.is_finite() && opts.width > 0.0 && opts.height > 0.0) {
+        return invalid("Output width and height must be positive numbers.");
+    }
     if !(opts.support.is_finite() && opts.support > 0.0 && opts.support <= 1.0) {
         return invalid("The support ratio must be in (0, 1].");
     }

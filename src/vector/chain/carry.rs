@@ -18,8 +18,8 @@ const MAX_STEPS: i64 = 400;
 /// shaky pointer, the fifth left out of the chain, synthesized as rosettes of six with
 /// that petal doubled.)
 const ON: f64 = 0.1;
-/// Where the ring's copies stand well apart, a drawn stroke nearer than this share of
-/// the step between them (and than `ON_MOST` of its size) is on the copy as well: a
+/// Where the ring's copies stand well apart, a drawn petal nearer a copy's than this
+/// share of the step between them (and than `ON_MOST` of its size) is on it as well: a
 /// shaky hand turns a petal 5 degrees off its place, and its centre lay 0.102 of its
 /// size from the copy carried there, which was drawn over it.
 const ON_STEP: f64 = 0.3;
@@ -57,11 +57,12 @@ impl Chain {
     pub fn complete(&self, strokes: &[Stroke], seed: Option<u64>) -> Vec<(Stroke, usize)> {
         let Some(k) = self.closes else { return Vec::new() };
         let mut rng = seed.map(Rng::new);
-        let mut placed: Vec<(Point, Vec<Point>)> = strokes
+        // Each stroke placed: its centre, samples, size and whether it is a dot.
+        let mut placed: Vec<(Point, Vec<Point>, f64, bool)> = strokes
             .iter()
             .map(|s| {
-                let s = samples(s);
-                (centroid(&s), s)
+                let p = samples(s);
+                (centroid(&p), p, s.bounds().size().to_vec2().hypot(), s.is_dot())
             })
             .collect();
         let mut out = Vec::new();
@@ -71,20 +72,35 @@ impl Chain {
         for t in first.unwrap_or(self.members.len())..k {
             let from = self.source(t as i64, &mut rng);
             let Some(copy) = self.copy(strokes, t as i64, from) else { continue };
+            let before = placed.len();
             // (A drawn copy short of a stroke gets that stroke only: its member is drawn.)
             let drawn = usize::from(t < self.members.len());
             for (stroke, source) in copy.into_iter().skip(drawn) {
                 let s = samples(&stroke);
                 let size = stroke.bounds().size().to_vec2().hypot();
                 let c = centroid(&s);
-                // (A dot, a few pixels across, is on a drawn dot anywhere within the share
-                // of the step: a shaky hand's dot 3 off its completed copy was doubled.)
-                let most = if stroke.is_dot() { f64::INFINITY } else { ON_MOST * size };
-                let on = (ON * size).max(most.min(ON_STEP * self.step.apply(c).distance(c)));
-                if placed.iter().any(|(pc, p)| pc.distance(c) < on && apart(&s, p) < on) {
+                let dot = stroke.is_dot();
+                let on = |q: &(Point, Vec<Point>, f64, bool), within: f64| {
+                    q.0.distance(c) < within && apart(&s, &q.1) < within
+                };
+                // Where the copies stand apart, a stroke is on a drawn one of about its
+                // size within `ON_STEP` of the step, and a dot on a drawn dot (a few
+                // pixels across, its own size says nothing); never on a stroke of its own
+                // copy, nor a vein on its petal.
+                let step = ON_STEP * self.step.apply(c).distance(c);
+                let wide = if dot { step } else { (ON_MOST * size).min(step) };
+                let alike = |q: &(Point, Vec<Point>, f64, bool)| {
+                    let ratio = q.2 / size.max(1e-9);
+                    if dot || q.3 {
+                        (0.5..=2.0).contains(&ratio)
+                    } else {
+                        (0.8..=1.25).contains(&ratio)
+                    }
+                };
+                if placed.iter().any(|q| on(q, ON * size)) || placed[..before].iter().any(|q| alike(q) && on(q, wide)) {
                     continue;
                 }
-                placed.push((c, s));
+                placed.push((c, s, size, dot));
                 out.push((stroke, source));
             }
         }

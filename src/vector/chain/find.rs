@@ -1,5 +1,6 @@
-//! Finding a chain: the step that carries the most copies onto another of their shape,
-//! the run it makes, the strokes drawn beside each copy, and whether it closes.
+//! Finding a chain: the shortest step that carries about the most copies onto another
+//! of their shape, the run it makes, the strokes drawn beside each copy, whether it
+//! closes; and the drawing's other rings.
 
 use super::{Chain, MAX_STROKES};
 use crate::vector::similarity::{centroid, mul, relations, samples, Similarity};

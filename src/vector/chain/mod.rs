@@ -3,16 +3,20 @@
 //! Each copy is the one before under one step `z -> a z + b` (`similarity`); the step
 //! turns (a ring, or an arc: a turn about a far centre) or scales (a spiral).
 //!
-//! Finding it: strokes of one shape up to rotation and scale are related pairwise; each
-//! relation between two of them is a candidate step, and the step kept is the one that
-//! carries the most strokes onto another of their shape (the shortest such, so that a
-//! double step is not taken for the step). Strokes carried beside the chain's copies,
-//! drawn with them, are their motif's other strokes (`Chain::companions`). Following it from a copy no other copy steps onto gives the
+//! Finding it (`find`): strokes of one shape up to rotation and scale are related
+//! pairwise, each pair by every fit as good as its best (an ellipse fits its neighbour
+//! turned either way round); each fit is a candidate step. Of the steps that carry
+//! within a tenth of the most strokes onto another of their shape, the shortest is
+//! kept (a double step carries as many round a ring). Strokes carried beside the
+//! chain's copies, drawn with them, are their motif's other strokes
+//! (`Chain::companions`). Following it from a copy no other copy steps onto gives the
 //! chain; it must hold at least three copies and two thirds of its shape's strokes (the
-//! petals of one flower among several are a flower's, not the drawing's, repetition).
-//! The step is then fitted by least squares over every consecutive pair, and where its
-//! turn is close to a whole fraction of a turn (and it does not scale) the ring closes:
-//! the turn is snapped to it.
+//! petals of one flower among several are a flower's, not the drawing's, repetition:
+//! `find_ring` asks two thirds of those about the ring's own centre, and
+//! `rings_beside` finds a drawing's other flowers). The step is then fitted by least
+//! squares over every consecutive pair, and where its turn is close to a whole
+//! fraction of a turn (and it does not scale) the ring closes: the turn is snapped to
+//! it. A chain that does not close turns under a right angle a step.
 //!
 //! Continuing it: copies further along, both ways, each a drawn copy carried by the step
 //! as many times as it lies from it (with variation, a random drawn copy, so the hand's
