@@ -116,11 +116,11 @@ fn search(strokes: &[Stroke]) -> Option<Found> {
     // at its tip was left off 23 of 58.)
     let onto = |t: &Similarity, k: usize, reach: f64| -> Option<usize> {
         let p = t.apply(centre[k]);
+        // (Where it lands first: the cheap test, before the fits.)
         (0..n)
-            .filter(|&m| m != k && groups[m] == groups[k])
-            .filter(|&m| fits[k * n + m].iter().any(|r| dot(k) || (r.a - t.a).hypot() <= TURN * t.a.hypot()))
             .map(|m| (m, centre[m].distance(p)))
-            .filter(|&(_, d)| d <= reach)
+            .filter(|&(m, d)| d <= reach && m != k && groups[m] == groups[k])
+            .filter(|&(m, _)| fits[k * n + m].iter().any(|r| dot(k) || (r.a - t.a).hypot() <= TURN * t.a.hypot()))
             .min_by(|x, y| x.1.total_cmp(&y.1))
             .map(|(m, _)| m)
     };
