@@ -734,7 +734,7 @@ fn two_flowers_drawn_side_by_side_each_complete_and_repeat() {
 /// each begun anywhere, shaken by 1.5 and turned up to 3 degrees off its place (seeds
 /// 1-10): each ring is read with its count and synthesizes as rosettes. An ellipse
 /// fits its neighbour turned either way round, and with the smaller turn alone four
-/// ellipses read turns of 90 and -90 degrees by the hand's noise: 4 of a new user's 6
+/// ellipses read turns of 90 and -90 degrees by the hand's noise: 4 of a new user's 7
 /// such drawings came out a scatter, a lattice or the drawing as it was.
 #[test]
 fn ellipses_round_a_centre_make_rings() {

@@ -7,9 +7,10 @@
 //! strokes (a second flower, a sprig, a long stem), repeat together: the drawing's box,
 //! in rows each offset by half a box, the boxes as far apart as the drawn rings are
 //! from the rest (two flowers drawn a flower apart stay so, rather than pair off; a
-//! flower's disc or stem, which meets its ring, is part of it, not a gap of nothing). A ring large beside the output (its
-//! diameter over half the output's short side), or a drawing larger than the output,
-//! is no rosette: it is continued across the output as a curve.
+//! flower's disc or stem, which meets its ring, is part of it, not a gap of nothing).
+//! A ring large beside the output (its diameter over half the output's short side), or
+//! a drawing larger than the output, is no rosette: it is continued across the output
+//! as a curve.
 
 use super::chain::Chain;
 use super::stroke::Stroke;
@@ -64,14 +65,14 @@ pub fn lattice(
     let mut clusters: Vec<Rect> = boxes.into_iter().flatten().collect();
     let rings_held = clusters.len();
     for (s, _) in out.iter().zip(ring_of).filter(|(_, r)| r.is_none()) {
-        match clusters[..rings_held].iter_mut().find(|b| apart(**b, s.bounds()) == 0.0) {
+        match clusters[..rings_held].iter_mut().find(|b| box_gap(**b, s.bounds()) == 0.0) {
             Some(b) => *b = b.union(s.bounds()),
             None => clusters.push(s.bounds()),
         }
     }
     let drawn_gap = (0..rings_held)
         .flat_map(|i| clusters.iter().enumerate().filter(move |&(j, _)| j != i).map(move |(_, &b)| (i, b)))
-        .map(|(i, b)| apart(clusters[i], b))
+        .map(|(i, b)| box_gap(clusters[i], b))
         .fold(f64::INFINITY, f64::min);
     let gap = (0.2 * largest).max(drawn_gap.min(short));
     let (w, h) = (bounds.width() + gap, bounds.height() + gap);
@@ -79,7 +80,7 @@ pub fn lattice(
 }
 
 /// The distance between two boxes (0 where they meet).
-fn apart(a: Rect, b: Rect) -> f64 {
+fn box_gap(a: Rect, b: Rect) -> f64 {
     let dx = (a.x0 - b.x1).max(b.x0 - a.x1).max(0.0);
     let dy = (a.y0 - b.y1).max(b.y0 - a.y1).max(0.0);
     dx.hypot(dy)

@@ -269,18 +269,20 @@ pub fn synthesize_strokes(
     // spiral (`chain`). A rosette (copies turned round a centre close by) is taken
     // before a lattice: a lattice read from a handful of petals is a chance one.
     // (Beside a ring, the drawing's other rings: two flowers side by side.)
+    // (Whether the elements translate is asked once, and only where it decides.)
+    let translated = std::cell::OnceCell::new();
+    let lattice = || *translated.get_or_init(|| translates(&elements));
     let along = (joined.is_none() && periods.is_none() && motifs.copies.is_none())
         .then(|| chain::find_or_ring(strokes))
         .flatten()
-        .filter(|(_, whole)| *whole || !translates(&elements))
-        .map(|(c, _)| c)
-        .map(|c| {
+        .filter(|(_, whole)| *whole || !lattice())
+        .map(|(c, _)| {
             let beside = if c.closes.is_some() { chain::rings_beside(strokes, &c) } else { Vec::new() };
             (c, beside)
         })
         .filter(|(c, beside)| {
             let held = c.strokes() + beside.iter().map(Chain::strokes).sum::<usize>();
-            (c.closes.is_some() && 3 * held >= 2 * strokes.len()) || !translates(&elements)
+            (c.closes.is_some() && 3 * held >= 2 * strokes.len()) || !lattice()
         });
     if let Some((chain, beside)) = along {
         return along_chain(strokes, classification, chain, beside, opts, max_elements, progress).map_err(explain);
