@@ -696,37 +696,60 @@ fn rings_drawn_with_a_shaky_pointer_are_found() {
 /// laid at least three times.
 #[test]
 fn two_flowers_drawn_side_by_side_each_complete_and_repeat() {
-    let bounds = |s: &[Stroke]| s.iter().skip(1).fold(s[0].bounds(), |r, t| r.union(t.bounds()));
     for wobble in [0.01, 0.03] {
         for seed in 1..=3 {
             for (first, second) in [(8usize, 5usize), (8, 8), (5, 12)] {
-                let a = family(wobble, seed, &format!("ring of {first}")).strokes;
-                let b = family(wobble, seed + 10, &format!("ring of {second}")).strokes;
-                // The second flower's first three petals, a flower's width to the right.
-                let (ra, rb) = (bounds(&a), bounds(&b[..]));
-                let v = Vec2::new(ra.x1 + 0.5 * ra.width() - rb.x0, ra.center().y - rb.center().y);
-                let drawn: Vec<Stroke> =
-                    a.iter().cloned().chain(b[..3].iter().map(|s| s.translated(v.x, v.y))).collect();
-                let r = synth(&drawn);
-                let what = format!("rings of {first} and {second} (3 drawn), wobble {wobble}, seed {seed}");
-                assert_eq!(r.structure, Structure::Ring, "{what}");
-                // Spaced as drawn: each copy of the drawing at least its width and the
-                // drawn gap (half the first flower's width) from the next in its row.
-                let [a, _] = r.periods.expect("the flowers repeat on a lattice");
-                let wide = bounds(&drawn).width() + 0.5 * ra.width();
-                assert!(a[0].hypot(a[1]) >= 0.95 * wide, "{what}: copies {a:?} apart, drawn {wide:.0}");
-                for (n, ours) in [(first, 0..first), (second, first..first + 3)] {
-                    let mut one = r.clone();
-                    let keep: Vec<bool> = r.sources.iter().map(|&s| ours.contains(&(s as usize))).collect();
-                    let mut k = keep.iter();
-                    one.strokes.retain(|_| *k.next().unwrap());
-                    let (checked, _, bad) = rosettes(&one, n, 90.0);
-                    assert!(checked >= 1, "{what}: no whole ring of {n} inside the output");
-                    assert_eq!(bad, 0, "{what}: rings of {n} with petals missing or stacked");
-                    assert!(one.strokes.len() >= 3 * n, "{what}: {} petals of the ring of {n}", one.strokes.len());
-                }
+                two_flowers(first, second, 3, wobble, seed);
             }
         }
+    }
+}
+
+/// The same flower drawn twice, the second begun with all but two petals or half of
+/// them and one more (1% and 3%, seeds 1-3). A flower of an even count is its own copy
+/// turned half round, so the half turn about the point between the two flowers carried
+/// more petals onto petals than the ring's step did; it makes no chain, and a new
+/// user's drawing came back as it was (6 of 10 seeds of six and four petals). Both
+/// flowers are completed and repeat.
+#[test]
+fn the_same_flower_twice_the_second_begun_completes_both() {
+    for wobble in [0.01, 0.03] {
+        for seed in 1..=3 {
+            for (n, drawn) in [(6usize, 4usize), (8, 6), (8, 5), (10, 6), (12, 10), (5, 3)] {
+                two_flowers(n, n, drawn, wobble, seed);
+            }
+        }
+    }
+}
+
+/// A ring of `first` drawn whole, and `drawn` petals of a ring of `second` (of the
+/// same family, other noise) a flower's width to its right: the synthesis is a ring
+/// structure, the flowers repeat spaced as drawn, and each is whole, one petal a slot,
+/// and laid at least three times.
+fn two_flowers(first: usize, second: usize, drawn: usize, wobble: f64, seed: u64) {
+    let bounds = |s: &[Stroke]| s.iter().skip(1).fold(s[0].bounds(), |r, t| r.union(t.bounds()));
+    let a = family(wobble, seed, &format!("ring of {first}")).strokes;
+    let b = family(wobble, seed + 10, &format!("ring of {second}")).strokes;
+    let (ra, rb) = (bounds(&a), bounds(&b[..]));
+    let v = Vec2::new(ra.x1 + 0.5 * ra.width() - rb.x0, ra.center().y - rb.center().y);
+    let strokes: Vec<Stroke> = a.iter().cloned().chain(b[..drawn].iter().map(|s| s.translated(v.x, v.y))).collect();
+    let r = synth(&strokes);
+    let what = format!("rings of {first} and {second} ({drawn} drawn), wobble {wobble}, seed {seed}");
+    assert_eq!(r.structure, Structure::Ring, "{what}");
+    // Spaced as drawn: each copy of the drawing at least its width and the drawn gap
+    // (half the first flower's width) from the next in its row.
+    let [p, _] = r.periods.expect("the flowers repeat on a lattice");
+    let wide = bounds(&strokes).width() + 0.5 * ra.width();
+    assert!(p[0].hypot(p[1]) >= 0.95 * wide, "{what}: copies {p:?} apart, drawn {wide:.0}");
+    for (n, ours) in [(first, 0..first), (second, first..first + drawn)] {
+        let mut one = r.clone();
+        let keep: Vec<bool> = r.sources.iter().map(|&s| ours.contains(&(s as usize))).collect();
+        let mut k = keep.iter();
+        one.strokes.retain(|_| *k.next().unwrap());
+        let (checked, _, bad) = rosettes(&one, n, 90.0);
+        assert!(checked >= 1, "{what}: no whole ring of {n} inside the output");
+        assert_eq!(bad, 0, "{what}: rings of {n} with petals missing or stacked");
+        assert!(one.strokes.len() >= 3 * n, "{what}: {} petals of the ring of {n}", one.strokes.len());
     }
 }
 

@@ -23,6 +23,12 @@ const PLACE: f64 = 0.3;
 /// A step turns or scales by at least this much (`|a - 1|`, about 1°): one that does
 /// not is a row's, which the lattice reads.
 const MIN_TURN: f64 = 0.02;
+/// A step turns by at most this much (135 degrees): a ring of three turns 120, and a
+/// half turn is its own inverse, which carries copies in pairs and makes no chain. Two
+/// flowers of six alike petals, the second begun with four, are carried onto each other
+/// by the half turn about the point between them: it carried 8 copies to the ring's 6,
+/// and the drawing came back as it was.
+const MAX_TURN: f64 = 0.75 * std::f64::consts::PI;
 /// Once the step is chosen, the chain follows it from copy to copy within this share
 /// of its length (a hand's copy may stray further than the candidates are held to:
 /// one line of sixteen hatching lines off by a third of their spacing).
@@ -137,7 +143,7 @@ fn search(strokes: &[Stroke]) -> Option<Found> {
         near.sort_by(|&x, &y| centre[i].distance(centre[x]).total_cmp(&centre[i].distance(centre[y])));
         for (j, &t) in near.iter().take(NEAREST).flat_map(|&j| fits[i * n + j].iter().map(move |t| (j, t))) {
             let d = centre[i].distance(centre[j]);
-            if (t.a - Vec2::new(1.0, 0.0)).hypot() < MIN_TURN {
+            if (t.a - Vec2::new(1.0, 0.0)).hypot() < MIN_TURN || t.turn().abs() > MAX_TURN {
                 continue;
             }
             // Copies on one centre (an asterisk's bars) step by a turn alone: reach is
