@@ -753,6 +753,45 @@ fn two_flowers(first: usize, second: usize, drawn: usize, wobble: f64, seed: u64
     }
 }
 
+/// A flower with a long stem from its centre (rings of 5 and 8, drawn whole or with
+/// three petals, 1% and 3%, seeds 1-3): the drawing is one cluster, with no drawn gap
+/// to keep, and repeats packed as a rosette does. The gap was taken as the output's
+/// side, and a new user's clover with its stem was laid once.
+#[test]
+fn a_flower_with_a_long_stem_repeats_packed() {
+    let bounds = |s: &[Stroke]| s.iter().skip(1).fold(s[0].bounds(), |r, t| r.union(t.bounds()));
+    for wobble in [0.01, 0.03] {
+        for seed in 1..=3 {
+            for (n, drawn) in [(5usize, 5usize), (5, 3), (8, 8), (8, 3)] {
+                let petals = family(wobble, seed, &format!("ring of {n}")).strokes;
+                let reach = bounds(&petals).width().max(bounds(&petals).height()) / 2.0;
+                let c = petals[0].points[0];
+                let stem: Vec<[f64; 2]> = (0..=20)
+                    .map(|k| [c[0] + 3.0 * (k as f64 * 0.7).sin(), c[1] + 2.2 * reach * k as f64 / 20.0])
+                    .collect();
+                let stem = Stroke::new(stem, petals[0].width, None);
+                let whole = bounds(&petals).union(stem.bounds());
+                let strokes: Vec<Stroke> = petals[..drawn].iter().cloned().chain([stem]).collect();
+                let what = format!("a ring of {n} ({drawn} drawn) with a stem, wobble {wobble}, seed {seed}");
+                let r = synth(&strokes);
+                assert_eq!(r.structure, Structure::Ring, "{what}");
+                let [a, b] = r.periods.expect("the flower repeats on a lattice");
+                assert!(
+                    a[0].hypot(a[1]) <= 1.5 * whole.width() && b[1].abs() <= 1.5 * whole.height(),
+                    "{what}: periods {a:?} {b:?}"
+                );
+                let stems = r.sources.iter().filter(|&&s| s as usize == drawn).count();
+                assert!(stems >= 6, "{what}: the flower laid {stems} times");
+                let mut petals_out = r.clone();
+                let mut stem_of = r.sources.iter().map(|&s| s as usize == drawn);
+                petals_out.strokes.retain(|_| !stem_of.next().unwrap());
+                let (checked, _, bad) = rosettes(&petals_out, n, 90.0);
+                assert!(checked >= 1 && bad == 0, "{what}: {checked} rosettes inside, {bad} not whole");
+            }
+        }
+    }
+}
+
 /// Ellipses round a centre (a four-leaf clover, a daisy), drawn whole or three of them,
 /// each begun anywhere, shaken by 1.5 and turned up to 3 degrees off its place (seeds
 /// 1-10): each ring is read with its count and synthesizes as rosettes. An ellipse

@@ -7,7 +7,8 @@
 //! strokes (a second flower, a sprig, a long stem), repeat together: the drawing's box,
 //! in rows each offset by half a box, the boxes as far apart as the drawn rings are
 //! from the rest (two flowers drawn a flower apart stay so, rather than pair off; a
-//! flower's disc or stem, which meets its ring, is part of it, not a gap of nothing).
+//! flower's disc or stem, which meets its ring, is part of it, not a gap of nothing;
+//! a drawing all in one cluster, a flower and its long stem, packs as a rosette).
 //! A ring large beside the output (its diameter over half the output's short side), or
 //! a drawing larger than the output, is no rosette: it is continued across the output
 //! as a curve.
@@ -74,7 +75,9 @@ pub fn lattice(
         .flat_map(|i| clusters.iter().enumerate().filter(move |&(j, _)| j != i).map(move |(_, &b)| (i, b)))
         .map(|(i, b)| box_gap(clusters[i], b))
         .fold(f64::INFINITY, f64::min);
-    let gap = (0.2 * largest).max(drawn_gap.min(short));
+    // (One cluster, a clover and its long stem, has no drawn gap to keep: it packs as a
+    // rosette does. Taken as the output's side, it was laid once.)
+    let gap = if drawn_gap.is_finite() { (0.2 * largest).max(drawn_gap.min(short)) } else { 0.2 * largest };
     let (w, h) = (bounds.width() + gap, bounds.height() + gap);
     Some([[w, 0.0], [0.5 * w, h]])
 }
