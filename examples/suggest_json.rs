@@ -19,4 +19,5 @@ fn main() {
         println!("ghost of {src} at ({:.1}, {:.1}), {} points", c.x, c.y, g.points.len());
     }
     println!("reason: {:?}", s.reason);
+    println!("periods: {:?}", s.periods);
 }

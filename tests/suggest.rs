@@ -387,6 +387,38 @@ fn a_finished_ring_is_reported_complete() {
     }
 }
 
+/// Petals drawn round a disc, by a new user's generator (tests/fixtures/rings: six
+/// teardrops or leaves, jittered, each turned off a little; the disc drawn first). Six
+/// petals round a disc lie on a triangular lattice with it, and 15 of 25 such complete
+/// rings got lattice ghosts outside the ring, as did four petals of six. Every ghost
+/// now lies on the ring's circle, off the drawn petals, and a complete ring gets none.
+#[test]
+fn petals_round_a_disc_get_the_ring_s_ghosts_not_a_lattice_s() {
+    for name in ["ring6_disc_teardrop", "ring6_disc_leaf", "ring6_disc_four_petals"] {
+        let path = format!("{}/tests/fixtures/rings/{name}.json", env!("CARGO_MANIFEST_DIR"));
+        let all: Vec<Stroke> = serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
+        let centre = all[0].reference_point();
+        let radius =
+            all[1..].iter().map(|s| s.reference_point().distance(centre)).sum::<f64>() / (all.len() - 1) as f64;
+        for drawn in 5..=all.len() {
+            let s = suggest_strokes(&all[..drawn], &SuggestOptions::default()).unwrap();
+            for g in &s.strokes {
+                let p = g.reference_point();
+                let r = p.distance(centre);
+                assert!(
+                    (0.75 * radius..=1.25 * radius).contains(&r),
+                    "{name} ({drawn}): a ghost {r:.0} from the disc, the ring's radius {radius:.0}"
+                );
+                let on = all[1..drawn].iter().any(|t| t.reference_point().distance(p) < 0.3 * radius);
+                assert!(!on, "{name} ({drawn}): a ghost on a drawn petal at {p:?}");
+            }
+            if drawn == 7 {
+                assert!(s.strokes.is_empty(), "{name}: {} ghosts on a complete ring", s.strokes.len());
+            }
+        }
+    }
+}
+
 /// Petals and leaves begun anywhere round their loop, either way round (issue 27: a
 /// hand starts each copy where the pen lands, and only petals begun alike got ghosts):
 /// rings of 5-12 and leaves along an arc at 1% and 3%, seeds 1-3, each loop rebegun at

@@ -23,12 +23,15 @@ const PLACE: f64 = 0.3;
 /// A step turns or scales by at least this much (`|a - 1|`, about 1°): one that does
 /// not is a row's, which the lattice reads.
 const MIN_TURN: f64 = 0.02;
-/// A step turns by at most this much (135 degrees): a ring of three turns 120, and a
-/// half turn is its own inverse, which carries copies in pairs and makes no chain. Two
-/// flowers of six alike petals, the second begun with four, are carried onto each other
-/// by the half turn about the point between them: it carried 8 copies to the ring's 6,
-/// and the drawing came back as it was.
+/// A ring's step turns by at most this much (135 degrees): a ring of three turns 120,
+/// and a half turn is its own inverse, which carries copies in pairs and makes no
+/// chain. Two flowers of six alike petals, the second begun with four, are carried
+/// onto each other by the half turn about the point between them: it carried 8 copies
+/// to the ring's 6, and the drawing came back as it was. (`find` still weighs every
+/// turn: plus signs touching on a lattice, without their half turns, read a ring of
+/// their bars that held most of the drawing, and grew as rosettes.)
 const MAX_TURN: f64 = 0.75 * std::f64::consts::PI;
+const HALF_TURN: f64 = std::f64::consts::PI + 0.01;
 /// Once the step is chosen, the chain follows it from copy to copy within this share
 /// of its length (a hand's copy may stray further than the candidates are held to:
 /// one line of sixteen hatching lines off by a third of their spacing).
@@ -45,19 +48,23 @@ const MAX_RING: usize = 72;
 
 /// The chain of `strokes`, if they repeat along a similarity step.
 pub fn find(strokes: &[Stroke]) -> Option<Chain> {
-    search(strokes).filter(|f| f.whole).map(|f| f.chain)
+    search(strokes, HALF_TURN).filter(|f| f.whole).map(|f| f.chain)
 }
 
 /// A ring among `strokes`, though other strokes of its shape lie outside it: one of two
 /// flowers drawn with alike petals (`find` takes no chain that holds under two thirds
 /// of its shape's strokes). It must hold two thirds of them about its own centre.
 pub fn find_ring(strokes: &[Stroke]) -> Option<Chain> {
-    search(strokes).filter(|f| f.ring).map(|f| f.chain)
+    search(strokes, MAX_TURN).filter(|f| f.ring).map(|f| f.chain)
 }
 
-/// `find`'s chain, or else `find_ring`'s, from one search: with whether it is `find`'s.
+/// `find`'s chain, or else `find_ring`'s: with whether it is `find`'s.
 pub fn find_or_ring(strokes: &[Stroke]) -> Option<(Chain, bool)> {
-    search(strokes).filter(|f| f.whole || f.ring).map(|f| (f.chain, f.whole))
+    match search(strokes, HALF_TURN) {
+        Some(f) if f.whole => Some((f.chain, true)),
+        Some(f) if f.ring => Some((f.chain, false)),
+        _ => find_ring(strokes).map(|c| (c, false)),
+    }
 }
 
 /// The chain the search reads, and which share of its shape's strokes it holds.
@@ -70,7 +77,8 @@ struct Found {
     ring: bool,
 }
 
-fn search(strokes: &[Stroke]) -> Option<Found> {
+/// The search, taking candidate steps that turn by at most `max_turn`.
+fn search(strokes: &[Stroke], max_turn: f64) -> Option<Found> {
     let n = strokes.len();
     if !(3..=MAX_STROKES).contains(&n) {
         return None;
@@ -143,7 +151,7 @@ fn search(strokes: &[Stroke]) -> Option<Found> {
         near.sort_by(|&x, &y| centre[i].distance(centre[x]).total_cmp(&centre[i].distance(centre[y])));
         for (j, &t) in near.iter().take(NEAREST).flat_map(|&j| fits[i * n + j].iter().map(move |t| (j, t))) {
             let d = centre[i].distance(centre[j]);
-            if (t.a - Vec2::new(1.0, 0.0)).hypot() < MIN_TURN || t.turn().abs() > MAX_TURN {
+            if (t.a - Vec2::new(1.0, 0.0)).hypot() < MIN_TURN || t.turn().abs() > max_turn {
                 continue;
             }
             // Copies on one centre (an asterisk's bars) step by a turn alone: reach is

@@ -231,6 +231,13 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
         return Ok(sequence::propose(strokes, &accepted, &ask(true))
             .unwrap_or_else(|| nothing("The drawing shows no repetition yet.")));
     };
+    // A ring round a centre that holds the latest stroke turns its copies: they carry
+    // on by turns, whatever lattice their places also fit (six petals round a drawn
+    // disc lie on a triangular lattice with it, and a new user's complete rings of six
+    // got lattice ghosts outside them in 15 of 25).
+    if ring_holds_latest(strokes) {
+        return Ok(sequence::propose(strokes, &accepted, &ask(true)).unwrap_or_else(|| nothing(sequence::UNFOLLOWED)));
+    }
     let prior = (HAND_TO_PLACEMENT * hand_scatter(strokes, &classification.classes, &accepted))
         .clamp((MIN_SCATTER * spread.spacing).powi(2), (MAX_SCATTER * spread.spacing).powi(2));
     fit.certainty = fit.certainty(&elems, &weight, prior);
@@ -405,6 +412,29 @@ const USUAL: usize = 16;
 /// the median turn of its latest `USUAL` hand-drawn copies against its first. One copy
 /// drawn askew, or a hand that turns its copies a little at random, is not; a dot,
 /// whose turn is its pen's, says nothing (see `drift::turn_between`).
+/// Strokes looked back over for a ring that holds the latest (rings are drawn
+/// petal after petal: the ring is among the latest strokes).
+const RING_LOOK_BACK: usize = 32;
+
+/// Whether the latest strokes make a closed ring round a centre (`chain::find`: two
+/// thirds of their shape's strokes there) that holds the latest stroke, as a petal or
+/// a part of one (a stroke beside a petal, within its size: its vein or its dot; not
+/// a petal of a second flower, which the lattice of flowers places whole), with no
+/// other ring beside it (flowers on a lattice: the lattice places them).
+fn ring_holds_latest(strokes: &[Stroke]) -> bool {
+    let recent = &strokes[strokes.len().saturating_sub(RING_LOOK_BACK)..];
+    let latest = recent.len() - 1;
+    let Some(ring) = crate::vector::chain::find(recent).filter(|c| c.closes.is_some()) else { return false };
+    let near = |k: usize, m: usize| {
+        recent[k].reference_point().distance(recent[m].reference_point()) <= recent[m].bounds().size().to_vec2().hypot()
+    };
+    ring.members
+        .iter()
+        .zip(&ring.companions)
+        .any(|(&m, parts)| m == latest || (parts.contains(&latest) && near(latest, m)))
+        && crate::vector::chain::rings_beside(recent, &ring).is_empty()
+}
+
 fn turned_away(fit: &Fit, strokes: &[Stroke], instances: &[Vec<u32>], weight: &[f64]) -> bool {
     let hand = |x: usize| weight[x] >= 1.0 && instances[x].len() == 1;
     let Some(last) = (0..fit.cell.len()).rev().find(|&x| hand(x)) else { return false };

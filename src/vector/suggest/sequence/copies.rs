@@ -10,6 +10,16 @@ use kurbo::Vec2;
 /// The two steps agree when their `a` differ by at most this share of `|a|` (about 5°
 /// of turn or 5% of scale)...
 const TURN: f64 = 0.09;
+/// ...or, round a centre near the copies (petals: both steps turn about one point
+/// within `ROSETTE` of the latest copy's size, and within `ROSETTE_CENTRE` of it of
+/// each other), within this share (about 8.5 degrees). A person's hand turns each
+/// petal about 2.5 degrees off its place, so that two steps of three petals disagree by
+/// about 6 degrees (the sum of three turns, the middle twice): at 5 degrees 5 of 6
+/// rings of five begun with three petals at 5% of the step got no ghost. The places
+/// round the centre bear the ring out where its petals' shapes turn loosely.
+const ROSETTE_TURN: f64 = 0.15;
+const ROSETTE: f64 = 1.5;
+const ROSETTE_CENTRE: f64 = 0.3;
 /// ...and the first step puts the third copy within this share of the step.
 const PLACE: f64 = 0.2;
 /// How the latest copy follows the two before it, taken every `stride`-th of its shape
@@ -81,7 +91,12 @@ pub(super) fn begin(d: &Drawing, chain: &[usize], at: usize, stride: usize) -> O
         return None;
     }
     let agree = (two.a - one.a).hypot();
-    let local = agree <= TURN * one.a.hypot()
+    let size = d.size(last);
+    let rosette = match (one.fixed_point(), two.fixed_point()) {
+        (Some(p), Some(q)) => p.distance(q) <= ROSETTE_CENTRE * size && q.distance(centre(last)) <= ROSETTE * size,
+        _ => false,
+    };
+    let local = agree <= if rosette { ROSETTE_TURN } else { TURN } * one.a.hypot()
         && one.carry(&d.strokes[second]).reference_point().distance(centre(last)) <= PLACE * step;
     Some(Begun { stride, one, two, step, local, disagree: agree / one.a.hypot().max(1e-9) })
 }
