@@ -35,7 +35,7 @@ use super::drift::drift;
 use super::{Suggestions, TOLERANCE};
 use crate::rng::Rng;
 use crate::vector::similarity::{self, centroid, mul, samples, Similarity};
-use crate::vector::stroke::Stroke;
+use crate::vector::stroke::{Stroke, DOT};
 use kurbo::{Point, Rect, Vec2};
 use std::f64::consts::TAU;
 
@@ -205,14 +205,27 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
     if n - 1 - last > LOOK_BACK {
         return None;
     }
-    // (A dot says nothing of how its copies turn: where it is the latest stroke and
-    // carries nothing on, the larger stroke drawn before it in its copy may.)
-    let (found, parts) = follow(&d, ask, last).or_else(|| {
-        let dot = strokes[last].is_dot();
+    // (A dot says nothing of how its copies turn, nor does a small circle a few pen
+    // widths across, whose hand's wobble is a large share of its size: where it is
+    // the latest stroke and carries nothing on, the larger stroke drawn before it in
+    // its copy may. Petals each with a small circle drawn in it got no ghost after
+    // three or four of them, in a new user's 20 of 20 rings.)
+    let own = follow(&d, ask, last);
+    let larger = || {
         let before =
             (last.saturating_sub(MAX_STRIDE)..last).rev().find(|&i| d.hand(i) && d.size(i) > LARGER * d.size(last));
-        before.filter(|_| dot).and_then(|b| follow(&d, ask, b))
-    })?;
+        before.and_then(|b| follow(&d, ask, b))
+    };
+    let (found, parts) = match own {
+        Some(o) if !o.0.strokes.is_empty() || strokes[last].is_dot() => o,
+        // (Where a small circle's own copies propose nothing, the larger's may. A pen
+        // tap's own answer stands: its copies go by place, and say when to wait.)
+        o => match (o, larger()) {
+            (_, Some(l)) if !l.0.strokes.is_empty() => l,
+            (Some(o), _) => o,
+            (None, l) => l?,
+        },
+    };
     // A motif's largest stroke shows its turn best (a stalk a few pixels long reads it
     // loosely, and put ghosts over the top of a Bézier arch 15-25 off at a step of 41,
     // where its leaves showed the turn changing): where the latest copy holds a
@@ -224,6 +237,10 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
         None => Some(found),
     }
 }
+
+/// A stroke under this many pen widths across is small: its shape is mostly the hand's
+/// wobble (a circle drawn in a petal).
+const SMALL: f64 = 2.0 * DOT;
 
 /// A motif's stroke is followed in place of the latest when it is this many times the
 /// latest's size.
@@ -363,10 +380,14 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
         near.peek().is_some() && {
             let (mine, size) = (samples(g), g.bounds().size().to_vec2().hypot());
             let c = centroid(&mine);
-            // (A dot turns as the pen went: its place alone says it is drawn.)
-            let dot = g.is_dot();
+            // (A dot turns as the pen went, and a circle a few pen widths across as the
+            // hand's wobble does: its place alone says it is drawn, the circle's where
+            // a small stroke is there. A petal's small circle was proposed again on the
+            // one drawn.)
+            let small = |s: &Stroke| s.bounds().size().to_vec2().hypot() < SMALL * s.width;
+            let (dot, circle) = (g.is_dot(), small(g));
             near.any(|s| {
-                if dot {
+                if dot || (circle && small(s)) {
                     return s.reference_point().distance(p) < DRAWN * here;
                 }
                 relations(&mine, &samples(s), size).iter().any(|(t, _)| {
@@ -470,7 +491,12 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
     // copy before the latest: each ghost copy carried the one before's, and the last
     // copy proposed gets its own here (not past a ring's closing copy, which got what
     // was left of it).
-    let trails = || trailing(d, &run[..=h], &parts, &|t| orbit.turn(h as i64, t).atan2(), step);
+    // (Where the stroke followed is not the latest, and a part's like was drawn after
+    // it, that part of its copy came after it: a petal, then its dot, the latest. The
+    // places alone misread it where a person's hand turned the petals, and the last
+    // ghost petal of three was proposed bare.)
+    let after = (last + 1..n).any(|i| d.hand(i) && parts.iter().any(|&c| d.alike(c, i)));
+    let trails = || after || trailing(d, &run[..=h], &parts, &|t| orbit.turn(h as i64, t).atan2(), step);
     if let Some((t, k)) = proposed.filter(|_| why != RING_COMPLETE && trails()) {
         for (g, c) in parts_at(t + 1, orbit.at(t + 1).distance(orbit.at(t))) {
             push(&mut out, g, c, k);
