@@ -407,11 +407,6 @@ pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Sugg
 /// Copies of the latest hand-drawn copy's place looked at for its usual turn.
 const USUAL: usize = 16;
 
-/// Whether the latest two hand-drawn copies (of one stroke) of the latest one's motif
-/// position are both turned by more than `TURNED` one way from the place's usual copy:
-/// the median turn of its latest `USUAL` hand-drawn copies against its first. One copy
-/// drawn askew, or a hand that turns its copies a little at random, is not; a dot,
-/// whose turn is its pen's, says nothing (see `drift::turn_between`).
 /// Strokes looked back over for a ring that holds the latest (rings are drawn
 /// petal after petal: the ring is among the latest strokes).
 const RING_LOOK_BACK: usize = 32;
@@ -435,6 +430,11 @@ fn ring_holds_latest(strokes: &[Stroke]) -> bool {
         && crate::vector::chain::rings_beside(recent, &ring).is_empty()
 }
 
+/// Whether the latest two hand-drawn copies (of one stroke) of the latest one's motif
+/// position are both turned by more than `TURNED` one way from the place's usual copy:
+/// the median turn of its latest `USUAL` hand-drawn copies against its first. One copy
+/// drawn askew, or a hand that turns its copies a little at random, is not; a dot,
+/// whose turn is its pen's, says nothing (see `drift::turn_between`).
 fn turned_away(fit: &Fit, strokes: &[Stroke], instances: &[Vec<u32>], weight: &[f64]) -> bool {
     let hand = |x: usize| weight[x] >= 1.0 && instances[x].len() == 1;
     let Some(last) = (0..fit.cell.len()).rev().find(|&x| hand(x)) else { return false };
