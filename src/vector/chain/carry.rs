@@ -18,8 +18,8 @@ const MAX_STEPS: i64 = 400;
 /// shaky pointer, the fifth left out of the chain, synthesized as rosettes of six with
 /// that petal doubled.)
 const ON: f64 = 0.1;
-/// Where the ring's copies stand well apart, a drawn petal nearer a copy's than this
-/// share of the step between them (and than `ON_MOST` of its size) is on it as well: a
+/// Where the ring's copies stand well apart, a petal placed before the copy (drawn, or
+/// completed earlier) nearer the copy's than this share of the step between them (and than `ON_MOST` of its size) is on it as well: a
 /// shaky hand turns a petal 5 degrees off its place, and its centre lay 0.102 of its
 /// size from the copy carried there, which was drawn over it.
 const ON_STEP: f64 = 0.3;

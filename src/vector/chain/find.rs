@@ -31,6 +31,8 @@ const MIN_TURN: f64 = 0.02;
 /// turn: plus signs touching on a lattice, without their half turns, read a ring of
 /// their bars that held most of the drawing, and grew as rosettes.)
 const MAX_TURN: f64 = 0.75 * std::f64::consts::PI;
+/// No limit (a turn is at most a half turn): `find`'s search. A closed ring's step
+/// turns at most 120 degrees and a little, so a ring it reads is one `find_ring` could.
 const HALF_TURN: f64 = std::f64::consts::PI + 0.01;
 /// Once the step is chosen, the chain follows it from copy to copy within this share
 /// of its length (a hand's copy may stray further than the candidates are held to:

@@ -218,8 +218,10 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
     };
     let (found, parts) = match own {
         Some(o) if !o.0.strokes.is_empty() || strokes[last].is_dot() => o,
-        // (Where a small circle's own copies propose nothing, the larger's may. A pen
-        // tap's own answer stands: its copies go by place, and say when to wait.)
+        // (Where the latest stroke's own copies propose nothing, those of a stroke
+        // half again its size drawn just before it in its copy may: a small circle in
+        // a petal. A pen tap's own answer stands: its copies go by place, and say when
+        // to wait.)
         o => match (o, larger()) {
             (_, Some(l)) if !l.0.strokes.is_empty() => l,
             (Some(o), _) => o,
