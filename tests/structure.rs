@@ -604,6 +604,10 @@ fn leaves_drawn_on_a_stem_go_all_along_it() {
             // The stem and the first three leaves (of sixteen the stem carries).
             let r = synth(&q.strokes[..4]);
             assert_eq!(r.structure, Structure::Curve, "{name}");
+            // (The vine continued is the first copy; where the output holds it twice it
+            // repeats, a stem a copy: see the next test.)
+            let copies = r.sources.iter().filter(|&&s| s == 0).count();
+            let r = StrokeResult { strokes: r.strokes[..r.strokes.len() / copies].to_vec(), ..r };
             let stem: Vec<Point> = r.strokes[0].points.iter().map(|p| Point::new(p[0], p[1])).collect();
             let off = |p: Point| {
                 stem.windows(2)
@@ -640,6 +644,57 @@ fn leaves_drawn_on_a_stem_go_all_along_it() {
     offsets.sort_by(f64::total_cmp);
     let median = offsets[offsets.len() / 2];
     assert!(median < 0.05 * step, "the median leaf begins {median:.1} off the stem");
+}
+
+/// Leaves drawn on a stem across the drawing canvas (a new user's trial, in
+/// tests/fixtures/curves: leaves on a drawn arc and on a drawn S; and the generator's
+/// drawn stems, from a stem and three leaves), synthesized at the page's default output
+/// of 1200 x 800: the vine, continued, repeats over the output, at least three copies,
+/// each whole (its stem and every leaf), no copy's box over another's, and no quarter
+/// of the output left bare. (Each was laid once in the middle of the output.)
+#[test]
+fn a_vine_repeats_over_a_large_output() {
+    use patternsynth::vector::sequences::{along_drawn, HandTurn};
+    let page = StrokeOptions { width: 1200.0, height: 800.0, ..Default::default() };
+    let mut drawings: Vec<(String, Vec<Stroke>)> = ["leaves_on_a_drawn_arc", "leaves_on_a_drawn_s_curve"]
+        .iter()
+        .map(|name| {
+            let path = format!("{}/tests/fixtures/curves/{name}.json", env!("CARGO_MANIFEST_DIR"));
+            (name.to_string(), serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap())
+        })
+        .collect();
+    for seed in 1..=2 {
+        for q in
+            along_drawn(0.03, HandTurn::PERSON, seed).into_iter().filter(|q| q.name.starts_with("leaves on a drawn"))
+        {
+            drawings.push((format!("{}, seed {seed}", q.name), q.strokes[..4].to_vec()));
+        }
+    }
+    for (name, drawn) in &drawings {
+        let r = synthesize_strokes(drawn, &page, &mut Silent).unwrap();
+        assert_eq!(r.structure, Structure::Curve, "{name}");
+        // The stem is the first stroke drawn: one a copy.
+        let copies = r.sources.iter().filter(|&&s| s == 0).count();
+        let n = r.strokes.len() / copies;
+        assert!(copies >= 3 && n * copies == r.strokes.len(), "{name}: {} strokes, {copies} stems", r.strokes.len());
+        let boxes: Vec<Rect> =
+            r.strokes.chunks(n).map(|c| c.iter().skip(1).fold(c[0].bounds(), |b, s| b.union(s.bounds()))).collect();
+        for (k, chunk) in r.sources.chunks(n).enumerate() {
+            assert_eq!(chunk, &r.sources[..n], "{name}: copy {k} is not the whole vine");
+        }
+        for (i, a) in boxes.iter().enumerate() {
+            for b in &boxes[i + 1..] {
+                let apart = (a.x0 - b.x1).max(b.x0 - a.x1).max((a.y0 - b.y1).max(b.y0 - a.y1));
+                assert!(apart > 0.0, "{name}: two copies overlap ({a:?}, {b:?})");
+            }
+        }
+        for (x, y) in [(0.0, 0.0), (600.0, 0.0), (0.0, 400.0), (600.0, 400.0)] {
+            let quarter = Rect::new(x, y, x + 600.0, y + 400.0);
+            let held = r.strokes.iter().flat_map(|s| &s.points).any(|p| quarter.contains(Point::new(p[0], p[1])));
+            assert!(held, "{name}: the quarter at ({x}, {y}) is bare");
+        }
+        eprintln!("{name}: {copies} copies of {n} strokes");
+    }
 }
 
 /// Rings as a new user drew them (a helper's trial): petals 90 long and 50 wide, each

@@ -14,6 +14,7 @@ pub mod lattice;
 mod mesh;
 mod mosaic;
 pub mod motif;
+mod pack;
 pub mod period;
 mod reference;
 #[cfg(feature = "test-support")]

@@ -6,6 +6,7 @@ use super::classify::{classify, median, propose_tolerances, Tolerances};
 use super::grow::{find_periods, fit_lattice, grow, Element, GrowOptions, Grown};
 use super::mesh::Mesh;
 use super::motif::{self, Motifs};
+use super::pack;
 use super::period::Periods;
 use super::reference::Spread;
 use super::rosette;
@@ -413,9 +414,7 @@ fn along_path(
     progress: &mut dyn Progress,
 ) -> Result<StrokeResult> {
     if strokes.len() + more.len() > max_elements {
-        return Err(Error::TooLarge(format!(
-            "This output would hold more than {max_elements} elements; the limit is {max_elements}. Use a smaller output or larger strokes."
-        )));
+        return Err(too_large(max_elements));
     }
     let area = Rect::new(0.0, 0.0, opts.width, opts.height);
     let bounds = strokes.iter().skip(1).fold(strokes[0].bounds(), |r, s| r.union(s.bounds()));
@@ -427,9 +426,7 @@ fn along_path(
         .chain(more.into_iter().map(|(s, from)| (from, s)))
         .map(|(from, s)| (s.translated(v.x, v.y), from as u32))
         .unzip();
-    let classes: Vec<u32> = sources.iter().map(|&i| classification.classes[i as usize]).collect();
-    Throttle::new(progress).tick(1.0)?;
-    Ok(StrokeResult::new(out, classes, sources, classification, opts, Structure::Curve))
+    continued(out, sources, classification, opts, Structure::Curve, max_elements, progress)
 }
 
 /// The drawing repeated along its `chain`, centred in the output. A ring is completed,
@@ -467,15 +464,8 @@ fn along_chain(
                 ring_of.push(Some(i));
             }
         }
-        let lattice = rosette::lattice(&out, &ring_of, &rings, c, area);
-        if let Some(lattice) = lattice {
-            let mut r = synthesize_strokes(&out, &StrokeOptions { periods: Some(lattice), ..opts.clone() }, progress)?;
-            r.sources = r.sources.iter().map(|&i| sources[i as usize]).collect();
-            r.classes = r.sources.iter().map(|&i| classification.classes[i as usize]).collect();
-            r.svg = to_svg(&r.strokes, &r.classes, opts.width, opts.height);
-            r.classification = classification;
-            r.structure = Structure::Ring;
-            return Ok(r);
+        if let Some(lattice) = rosette::lattice(&out, &ring_of, &rings, c, area) {
+            return repeated(&out, &sources, lattice, classification, opts, Structure::Ring, progress);
         }
         // (The first ring is completed as the chain is extended; the others stay
         // completed.)
@@ -490,15 +480,81 @@ fn along_chain(
     // (Past the limit, an error as for a lattice, not the output cut short.)
     let (more, capped) = chain.extend(&drawn, area, seed, max_elements.saturating_sub(out.len()));
     if capped || out.len() > max_elements {
-        return Err(Error::TooLarge(format!(
-            "This output would hold more than {max_elements} elements; the limit is {max_elements}. Use a smaller output or larger strokes."
-        )));
+        return Err(too_large(max_elements));
     }
     for (s, from) in more {
         out.push(s);
         sources.push(from as u32);
     }
+    continued(out, sources, classification, opts, chain.structure(), max_elements, progress)
+}
+
+/// A curve continued as far as it goes (`out`, each stroke with the drawn one it
+/// repeats), repeated over the output where the output holds it at least twice along a
+/// side (`pack::curve`), the rows as far apart as its copies along it, each copy whole
+/// (`pack::moves`): leaves on a drawn arc were one arc in the middle of the page's
+/// 1200 x 800 output, and a vine drawn across the page one vine. The periods are
+/// reported where copies lie side by side (bricked rows); rows of one copy each repeat
+/// on one period only, as a row does.
+fn continued(
+    out: Vec<Stroke>,
+    sources: Vec<u32>,
+    classification: Classification,
+    opts: &StrokeOptions,
+    structure: Structure,
+    max_elements: usize,
+    progress: &mut dyn Progress,
+) -> Result<StrokeResult> {
     let classes: Vec<u32> = sources.iter().map(|&i| classification.classes[i as usize]).collect();
+    let area = Rect::new(0.0, 0.0, opts.width, opts.height);
+    let pen = 0.5 * out.iter().map(|s| s.width).fold(0.0, f64::max);
+    let bounds = out.iter().skip(1).fold(out[0].bounds(), |r, s| r.union(s.bounds())).inflate(pen, pen);
+    let Some(lattice) = pack::spacing(&out, &classes).and_then(|gap| pack::curve(bounds, gap, area)) else {
+        Throttle::new(progress).tick(1.0)?;
+        return Ok(StrokeResult::new(out, classes, sources, classification, opts, structure));
+    };
+    let moves = pack::moves(bounds, lattice, area);
+    if moves.len().saturating_mul(out.len()) > max_elements {
+        return Err(too_large(max_elements));
+    }
+    let (mut all, mut from, mut of) = (Vec::new(), Vec::new(), Vec::new());
+    for v in moves {
+        all.extend(out.iter().map(|s| s.translated(v.x, v.y)));
+        from.extend_from_slice(&sources);
+        of.extend_from_slice(&classes);
+    }
     Throttle::new(progress).tick(1.0)?;
-    Ok(StrokeResult::new(out, classes, sources, classification, opts, chain.structure()))
+    let bricked = lattice[0][0] < opts.width;
+    Ok(StrokeResult {
+        periods: bricked.then_some(lattice),
+        ..StrokeResult::new(all, of, from, classification, opts, structure)
+    })
+}
+
+/// The error of an output past `max_elements`, as a lattice's says it.
+fn too_large(max_elements: usize) -> Error {
+    Error::TooLarge(format!(
+        "This output would hold more than {max_elements} elements; the limit is {max_elements}. Use a smaller output or larger strokes."
+    ))
+}
+
+/// The finished drawing `out` (each stroke with the drawn one it repeats, `sources`)
+/// repeated on `lattice` over the output (the lattice engine's, with periods given),
+/// reported as `structure`, with the drawing's own classes.
+fn repeated(
+    out: &[Stroke],
+    sources: &[u32],
+    lattice: [[f64; 2]; 2],
+    classification: Classification,
+    opts: &StrokeOptions,
+    structure: Structure,
+    progress: &mut dyn Progress,
+) -> Result<StrokeResult> {
+    let mut r = synthesize_strokes(out, &StrokeOptions { periods: Some(lattice), ..opts.clone() }, progress)?;
+    r.sources = r.sources.iter().map(|&i| sources[i as usize]).collect();
+    r.classes = r.sources.iter().map(|&i| classification.classes[i as usize]).collect();
+    r.svg = to_svg(&r.strokes, &r.classes, opts.width, opts.height);
+    r.classification = classification;
+    r.structure = structure;
+    Ok(r)
 }
