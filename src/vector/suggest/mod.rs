@@ -40,6 +40,7 @@ pub(crate) mod along;
 mod certainty;
 mod drift;
 mod fit;
+mod hatching;
 mod lattice;
 mod orbit;
 mod sequence;
@@ -147,8 +148,28 @@ fn nothing(reason: &str) -> Suggestions {
     Suggestions { reason: Some(reason.into()), ..Suggestions::default() }
 }
 
-/// Proposes the next strokes of the repetition in `strokes` (in drawing order).
+/// Proposes the next strokes of the repetition in `strokes` (in drawing order). Where
+/// the structures read propose nothing, the latest strokes may still be hatching drawn
+/// by hand, spaced by eye (`hatching`).
 pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Suggestions> {
+    let found = suggest_found(strokes, opts)?;
+    if !found.strokes.is_empty() || opts.fill || strokes.len() < 3 {
+        return Ok(found);
+    }
+    let skip = strokes.len().saturating_sub(MAX_STROKES);
+    let accepted: Vec<bool> = (skip..strokes.len()).map(|i| opts.suggested.contains(&(i as u32))).collect();
+    let ask = sequence::Ask { count: opts.count, region: found_region(opts), offset: skip, seed: None, rows: true };
+    Ok(hatching::propose(&strokes[skip..], &accepted, &ask).unwrap_or(found))
+}
+
+/// The region asked for, once `suggest_found` has checked it.
+fn found_region(opts: &SuggestOptions) -> Option<Rect> {
+    opts.region.map(|[x, y, w, h]| Rect::new(x, y, x + w, y + h))
+}
+
+/// `suggest_strokes` by the structures the drawing shows: a drawn path, a lattice, a
+/// ring or a sequence.
+fn suggest_found(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Suggestions> {
     if opts.count > 64 {
         return invalid("count can be at most 64 copies; use fill to propose the whole region.");
     }
