@@ -34,19 +34,26 @@ pub fn curve(bounds: Rect, gap: f64, area: Rect) -> Option<[[f64; 2]; 2]> {
 
 /// The moves carrying a drawing of box `bounds` to each site of `lattice` (periods as
 /// `curve` gives them: the first along the rows, the second's `y` positive) at which
-/// its box meets `area`, the drawing's own (no move) first. Each copy goes whole: a
-/// vine's leaves are not laid without their stem where the stem's centre falls
-/// outside.
-pub fn moves(bounds: Rect, [a, b]: [[f64; 2]; 2], area: Rect) -> Vec<Vec2> {
+/// its box meets `area`, the drawing's own (no move) first; none where there are more
+/// than `max` (found out before they are listed: an output far larger than the
+/// drawing). Each copy goes whole: a vine's leaves are not laid without their stem
+/// where the stem's centre falls outside.
+pub fn moves(bounds: Rect, [a, b]: [[f64; 2]; 2], area: Rect, max: usize) -> Option<Vec<Vec2>> {
     let (a, b) = (Vec2::new(a[0], a[1]), Vec2::new(b[0], b[1]));
     let meets = |v: Vec2| {
         let r = bounds + v;
         r.x1 > area.x0 && r.x0 < area.x1 && r.y1 > area.y0 && r.y0 < area.y1
     };
+    // (Rows from the lowest whose box can reach the area to the highest; in each, the
+    // copies from the leftmost that can to the rightmost. Bounds past `max` are refused
+    // as floats, before any loop runs that long.)
+    let (low, high) = (((area.y0 - bounds.y1) / b.y).floor(), ((area.y1 - bounds.y0) / b.y).ceil());
+    let across = (area.width() + bounds.width() + b.x.abs()) / a.x + 2.0;
+    if !(high - low + 1.0).is_finite() || (high - low + 1.0) * across > 2.0 * (max as f64 + 1.0) {
+        return None;
+    }
     let mut out = vec![Vec2::ZERO];
-    // (Rows from the lowest whose box can reach the area to the highest.)
-    let rows = ((area.y0 - bounds.y1) / b.y).floor() as i64..=((area.y1 - bounds.y0) / b.y).ceil() as i64;
-    for l in rows {
+    for l in low as i64..=high as i64 {
         let shift = b * l as f64;
         let first = ((area.x0 - bounds.x1 - shift.x) / a.x).floor() as i64;
         let last = ((area.x1 - bounds.x0 - shift.x) / a.x).ceil() as i64;
@@ -56,8 +63,11 @@ pub fn moves(bounds: Rect, [a, b]: [[f64; 2]; 2], area: Rect) -> Vec<Vec2> {
                 out.push(v);
             }
         }
+        if out.len() > max {
+            return None;
+        }
     }
-    out
+    Some(out)
 }
 
 /// How far apart a curve's copies lie along it: the median distance from each stroke
@@ -115,7 +125,11 @@ mod tests {
         let area = Rect::new(0.0, 0.0, 1200.0, 800.0);
         let bounds = Rect::new(450.0, 300.0, 750.0, 500.0);
         let lattice = curve(bounds, 50.0, area).unwrap();
-        let moves = moves(bounds, lattice, area);
+        let moves = moves(bounds, lattice, area, 1000).expect("a dozen copies");
+        assert_eq!(super::moves(bounds, lattice, area, moves.len() - 1), None);
+        // An output a billion across is refused before its copies are counted.
+        let huge = Rect::new(0.0, 0.0, 1e9, 1e9);
+        assert_eq!(super::moves(Rect::new(0.0, 0.0, 10.0, 10.0), brick(12.0, 12.0), huge, 1000), None);
         assert_eq!(moves[0], Vec2::ZERO);
         // Every copy meets the output, none twice, and every site whose box meets it is
         // there (searched wide).

@@ -513,10 +513,9 @@ fn continued(
         Throttle::new(progress).tick(1.0)?;
         return Ok(StrokeResult::new(out, classes, sources, classification, opts, structure));
     };
-    let moves = pack::moves(bounds, lattice, area);
-    if moves.len().saturating_mul(out.len()) > max_elements {
+    let Some(moves) = pack::moves(bounds, lattice, area, max_elements / out.len()) else {
         return Err(too_large(max_elements));
-    }
+    };
     let (mut all, mut from, mut of) = (Vec::new(), Vec::new(), Vec::new());
     for v in moves {
         all.extend(out.iter().map(|s| s.translated(v.x, v.y)));
