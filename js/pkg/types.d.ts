@@ -190,7 +190,8 @@ export interface SeamlessResult {
 export interface StrokeResult {
   strokes: Stroke[]; classes: number[]; sources: number[]; classification: Classification; svg: string;
   /** The periods the output repeats on (found, fitted or given; a ring's rosettes are
-   *  laid on a hexagonal lattice); null when grown freely or along a curve. */
+   *  laid on a hexagonal lattice; a curve's copies in bricked rows); null when grown
+   *  freely, along a curve the output holds once, or in rows of one copy each. */
   periods: Periods | null;
   /** What the drawing was repeated on: 'lattice' (translations: a grid, or a row, as
    *  three hatching lines grow into one), 'ring' (copies turned
