@@ -682,6 +682,15 @@ fn a_vine_repeats_over_a_large_output() {
         for (k, chunk) in r.sources.chunks(n).enumerate() {
             assert_eq!(chunk, &r.sources[..n], "{name}: copy {k} is not the whole vine");
         }
+        // Copies side by side in rows: the periods reported, and each copy a whole
+        // number of them from the first.
+        let [a, b] = r.periods.unwrap_or_else(|| panic!("{name}: no periods reported"));
+        let det = a[0] * b[1] - a[1] * b[0];
+        for c in r.strokes.chunks(n) {
+            let v = c[0].reference_point() - r.strokes[0].reference_point();
+            let (k, l) = ((v.x * b[1] - v.y * b[0]) / det, (a[0] * v.y - a[1] * v.x) / det);
+            assert!((k - k.round()).abs() < 1e-6 && (l - l.round()).abs() < 1e-6, "{name}: a copy off the periods");
+        }
         for (i, a) in boxes.iter().enumerate() {
             for b in &boxes[i + 1..] {
                 let apart = (a.x0 - b.x1).max(b.x0 - a.x1).max((a.y0 - b.y1).max(b.y0 - a.y1));
@@ -693,7 +702,7 @@ fn a_vine_repeats_over_a_large_output() {
             let held = r.strokes.iter().flat_map(|s| &s.points).any(|p| quarter.contains(Point::new(p[0], p[1])));
             assert!(held, "{name}: the quarter at ({x}, {y}) is bare");
         }
-        eprintln!("{name}: {copies} copies of {n} strokes");
+        eprintln!("{name}: {copies} copies of {n} strokes, periods {:?}", r.periods);
     }
 }
 

@@ -853,7 +853,8 @@ fn hatching_drawn_with_a_shaky_pointer_goes_on() {
 /// Hatching as a hand draws it (issue 27, "draw four or five hatching strokes"): lines
 /// 100 long, each begun 1-5% of the spacing off its place and turned up to 2 degrees
 /// about its start, a fifth drawn the other way and a tenth past its end by 15-40%,
-/// spaced 25 or 40 (across them, at 70 degrees), seeds 1-12. After five lines, a ghost
+/// begun 25 or 40 apart along a level baseline (23.5 and 37.6 across the lines, at 70
+/// degrees), seeds 1-12. After five lines, a ghost
 /// on the sixth in most drawings (lattice, sequence or hatching: the lattice and the
 /// sequence read a line drawn past its end as another shape or a zoom), and a ghost
 /// off every line still to draw in few (measured: 22 of 24 and none; without
@@ -899,5 +900,5 @@ fn hand_drawn_hatching_gets_its_next_line() {
         }
     }
     eprintln!("hatching by hand: a ghost on the next line in {hit} of {runs}, one off every line in {wrong}");
-    assert!(hit * 3 >= runs * 2 && wrong * 6 <= runs, "{hit} of {runs} on the next line, {wrong} off every line");
+    assert!(hit * 6 >= runs * 5 && wrong <= 1, "{hit} of {runs} on the next line, {wrong} off every line");
 }

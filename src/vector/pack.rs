@@ -1,8 +1,8 @@
-//! How a finished drawing repeats over the output (issue 27): a rosette, or a curve
-//! continued as far as it goes (leaves round a wreath, a vine along its stem, hatching
-//! round its fan). The drawing's box, grown by a gap, is laid in rows, each row offset
-//! by half a box (a brick bond), so copies side by side keep the gap between their
-//! boxes and no two rows line up into columns.
+//! How a finished drawing repeats over the output (issue 27): a curve continued as far
+//! as it goes (leaves round an open wreath, a vine along its stem, hatching round its
+//! fan), and the rosettes' rows (`brick`). The drawing's box, grown by a gap, is laid
+//! in rows, each row offset by half a box (a brick bond), so copies side by side keep
+//! the gap between their boxes and no two rows line up into columns.
 
 use super::stroke::Stroke;
 use kurbo::{Point, Rect, Vec2};
@@ -17,12 +17,12 @@ pub fn brick(w: f64, h: f64) -> [[f64; 2]; 2] {
 /// `area`, where the output holds it at least twice along a side (else none: a curve
 /// the output holds once, a wreath, is the output as continued): in bricked rows where
 /// a copy fits across the output, copies at the rows' ends cut by its edge as a
-/// wallpaper's are; where none fits (a vine continued across the whole output), one to
-/// a row, the rows stacked a box and a gap apart.
+/// wallpaper's are; where none fits with its gap (a vine continued across the whole
+/// output), one to a row, the rows stacked a box and a gap apart.
 pub fn curve(bounds: Rect, gap: f64, area: Rect) -> Option<[[f64; 2]; 2]> {
     let (w, h) = (bounds.width() + gap, bounds.height() + gap);
     let twice = 2.0 * w <= area.width() || 2.0 * h <= area.height();
-    if bounds.width() <= area.width() && twice {
+    if w <= area.width() && twice {
         Some(brick(w, h))
     } else if 2.0 * h <= area.height() {
         // (The row's period past the output and the box: a row holds one copy.)
@@ -30,6 +30,11 @@ pub fn curve(bounds: Rect, gap: f64, area: Rect) -> Option<[[f64; 2]; 2]> {
     } else {
         None
     }
+}
+
+/// Whether `curve`'s periods lay copies side by side (bricked rows), not one to a row.
+pub fn side_by_side(lattice: [[f64; 2]; 2]) -> bool {
+    lattice[1][0] != 0.0
 }
 
 /// The moves carrying a drawing of box `bounds` to each site of `lattice` (periods as
@@ -44,20 +49,23 @@ pub fn moves(bounds: Rect, [a, b]: [[f64; 2]; 2], area: Rect, max: usize) -> Opt
         let r = bounds + v;
         r.x1 > area.x0 && r.x0 < area.x1 && r.y1 > area.y0 && r.y0 < area.y1
     };
-    // (Rows from the lowest whose box can reach the area to the highest; in each, the
-    // copies from the leftmost that can to the rightmost. Bounds past `max` are refused
-    // as floats, before any loop runs that long.)
+    // (Rows from the lowest whose box can reach the area to the highest, each holding
+    // a copy that meets it; in each, the copies from the leftmost that can to the
+    // rightmost, all but the end ones meeting it: counts past `max` are refused as
+    // floats, before any loop runs that long.)
     let (low, high) = (((area.y0 - bounds.y1) / b.y).floor(), ((area.y1 - bounds.y0) / b.y).ceil());
-    let across = (area.width() + bounds.width() + b.x.abs()) / a.x + 2.0;
-    if !(high - low + 1.0).is_finite() || (high - low + 1.0) * across > 2.0 * (max as f64 + 1.0) {
+    if !(high - low).is_finite() || high - low > max as f64 + 2.0 {
         return None;
     }
     let mut out = vec![Vec2::ZERO];
     for l in low as i64..=high as i64 {
         let shift = b * l as f64;
-        let first = ((area.x0 - bounds.x1 - shift.x) / a.x).floor() as i64;
-        let last = ((area.x1 - bounds.x0 - shift.x) / a.x).ceil() as i64;
-        for k in first..=last {
+        let first = ((area.x0 - bounds.x1 - shift.x) / a.x).floor();
+        let last = ((area.x1 - bounds.x0 - shift.x) / a.x).ceil();
+        if !(last - first).is_finite() || last - first > max as f64 + 2.0 {
+            return None;
+        }
+        for k in first as i64..=last as i64 {
             let v = shift + a * k as f64;
             if (k, l) != (0, 0) && meets(v) {
                 out.push(v);
@@ -116,6 +124,9 @@ mod tests {
         let vine = curve(Rect::new(-10.0, 250.0, 1210.0, 550.0), 40.0, area).expect("stacked");
         assert_eq!(vine[1], [0.0, 340.0]);
         assert!(vine[0][0] > area.width() + 1220.0);
+        // A vine a little narrower than the output but not with its gap: stacked, not
+        // bricked rows of half vines.
+        assert_eq!(curve(Rect::new(0.0, 0.0, 1180.0, 200.0), 40.0, area), Some([[2420.0, 0.0], [0.0, 240.0]]));
         // A wreath the output holds once.
         assert_eq!(curve(Rect::new(0.0, 0.0, 700.0, 700.0), 50.0, area), None);
     }
@@ -127,6 +138,12 @@ mod tests {
         let lattice = curve(bounds, 50.0, area).unwrap();
         let moves = moves(bounds, lattice, area, 1000).expect("a dozen copies");
         assert_eq!(super::moves(bounds, lattice, area, moves.len() - 1), None);
+        assert_eq!(super::moves(bounds, lattice, area, moves.len()).map(|m| m.len()), Some(moves.len()));
+        // Stacked rows of one: three copies are three, not refused at three.
+        let vine = Rect::new(-10.0, 250.0, 1210.0, 550.0);
+        let stacked = curve(vine, 40.0, area).unwrap();
+        assert!(!side_by_side(stacked));
+        assert_eq!(super::moves(vine, stacked, area, 3).map(|m| m.len()), Some(3));
         // An output a billion across is refused before its copies are counted.
         let huge = Rect::new(0.0, 0.0, 1e9, 1e9);
         assert_eq!(super::moves(Rect::new(0.0, 0.0, 10.0, 10.0), brick(12.0, 12.0), huge, 1000), None);

@@ -490,7 +490,8 @@ fn along_chain(
 }
 
 /// A curve continued as far as it goes (`out`, each stroke with the drawn one it
-/// repeats), repeated over the output where the output holds it at least twice along a
+/// repeats; a ring or a spiral is returned as it is), repeated over the output where
+/// the output holds it at least twice along a
 /// side (`pack::curve`), the rows as far apart as its copies along it, each copy whole
 /// (`pack::moves`): leaves on a drawn arc were one arc in the middle of the page's
 /// 1200 x 800 output, and a vine drawn across the page one vine. The periods are
@@ -509,7 +510,13 @@ fn continued(
     let area = Rect::new(0.0, 0.0, opts.width, opts.height);
     let pen = 0.5 * out.iter().map(|s| s.width).fold(0.0, f64::max);
     let bounds = out.iter().skip(1).fold(out[0].bounds(), |r, s| r.union(s.bounds())).inflate(pen, pen);
-    let Some(lattice) = pack::spacing(&out, &classes).and_then(|gap| pack::curve(bounds, gap, area)) else {
+    // (A curve only: a ring is a rosette or the output's, by `rosette::lattice`; a
+    // spiral is one. And only where even with no gap the output would hold it twice:
+    // the spacing reads every copy.)
+    let repeats = structure == Structure::Curve && pack::curve(bounds, 0.0, area).is_some();
+    let lattice =
+        repeats.then(|| pack::spacing(&out, &classes)).flatten().and_then(|gap| pack::curve(bounds, gap, area));
+    let Some(lattice) = lattice else {
         Throttle::new(progress).tick(1.0)?;
         return Ok(StrokeResult::new(out, classes, sources, classification, opts, structure));
     };
@@ -523,9 +530,8 @@ fn continued(
         of.extend_from_slice(&classes);
     }
     Throttle::new(progress).tick(1.0)?;
-    let bricked = lattice[0][0] < opts.width;
     Ok(StrokeResult {
-        periods: bricked.then_some(lattice),
+        periods: pack::side_by_side(lattice).then_some(lattice),
         ..StrokeResult::new(all, of, from, classification, opts, structure)
     })
 }

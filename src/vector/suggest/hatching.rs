@@ -30,6 +30,8 @@ const FEWEST: usize = 4;
 /// The most lines looked back over, and the most steps averaged for the next.
 const LOOK_BACK: usize = 8;
 const MEAN_OF: usize = 3;
+/// Lengths changing by this factor each way by turns, twice running, are two motifs.
+const ALTERNATE: f64 = 1.25;
 /// A line: its points all within this share of its length of its chord...
 const STRAIGHT: f64 = 0.06;
 /// ...and at least this many pen widths long.
@@ -180,16 +182,25 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
     }
     gaps.iter_mut().for_each(|g| *g = g.abs());
     let median = crate::vector::classify::median(&mut gaps.clone());
-    if gaps.iter().any(|&g| g > MAX_GAP * median || g < median / MAX_GAP) {
+    if median <= 0.0 || gaps.iter().any(|&g| g > MAX_GAP * median || g < median / MAX_GAP) {
         return None;
     }
-    // (A gap read over several steps is known that many times better: weighted by its
-    // span, the spread is one step's.)
+    // Lines long and short by turns are a rhythm of two motifs, not hatching: the
+    // lattice's (a ghost would repeat the latest's length where the other's is due).
+    let alternate = steps.windows(2).filter(|w| w[0].0.grow * w[1].0.grow < -(ALTERNATE.ln().powi(2))).count();
+    if alternate >= 2 {
+        return None;
+    }
+    // (A gap read over `s` steps holds the two lines' misses once, not `s` times: its
+    // per-step deviation weighs `s^2` in the spread of one step's.)
     let spans: f64 = steps.iter().map(|s| s.1).sum();
     let mean = gaps.iter().zip(&steps).map(|(g, s)| g * s.1).sum::<f64>() / spans;
     let n = gaps.len() as f64;
     let spread =
-        (gaps.iter().zip(&steps).map(|(g, s)| s.1 * (g - mean).powi(2)).sum::<f64>() / (n - 1.0)).sqrt() / mean;
+        (gaps.iter().zip(&steps).map(|(g, s)| (s.1 * (g - mean)).powi(2)).sum::<f64>() / (n - 1.0)).sqrt() / mean;
+    if !spread.is_finite() {
+        return None;
+    }
     // The next step: across, the mean gap; along, the mean of the latest few steps';
     // the turn and the lengthening, each the slope of the hand-drawn lines' own (turn,
     // log length) against their place in the run, taken only where it is clear of its
@@ -348,6 +359,18 @@ mod tests {
         // Spaced anyhow: no ghost, or one.
         let uneven = hatching(6, 15.0, 0.35, 5.0, 3);
         assert!(propose(&uneven, &[], &ask(3)).is_none_or(|s| s.strokes.len() <= 1));
+        // Long and short by turns: two motifs.
+        let mut rhythm = hatching(6, 15.0, 0.0, 0.0, 1);
+        for l in rhythm.iter_mut().skip(1).step_by(2) {
+            let (p, q) = (l.points[0], l.points[1]);
+            l.points[1] = [p[0] + 1.5 * (q[0] - p[0]), p[1] + 1.5 * (q[1] - p[1])];
+        }
+        assert!(propose(&rhythm, &[], &ask(3)).is_none());
+        // Accepted lines back and forth on two places: no gap to go on by.
+        let zigzag: Vec<Stroke> = (0..5)
+            .map(|k| Stroke::new(vec![[10.0 * (k % 2) as f64, 0.0], [10.0 * (k % 2) as f64, 100.0]], 2.0, None))
+            .collect();
+        assert!(propose(&zigzag, &[false, true, false, true, false], &ask(3)).is_none());
         // Three lines are too few.
         assert!(propose(&hatching(3, 15.0, 0.0, 0.0, 1), &[], &ask(3)).is_none());
         // Dashes at random places and turns.

@@ -144,6 +144,12 @@ const TURNED: f64 = 0.2;
 /// Weight of an accepted proposal in the periods' fit (a hand-drawn stroke's is 1).
 const SUGGESTED_WEIGHT: f64 = 0.05;
 
+/// Why nothing is proposed where no repetition is read yet, or none carries on.
+const NO_SPACING: &str = "The strokes have no spacing to repeat.";
+const NO_REPETITION: &str = "The drawing shows no repetition yet.";
+const NOT_REPEATED: &str = "The latest stroke does not repeat the pattern.";
+pub(super) const UNCERTAIN: &str = "The copies drawn so far leave the next ones too uncertain: draw one more.";
+
 fn nothing(reason: &str) -> Suggestions {
     Suggestions { reason: Some(reason.into()), ..Suggestions::default() }
 }
@@ -153,7 +159,12 @@ fn nothing(reason: &str) -> Suggestions {
 /// by hand, spaced by eye (`hatching`).
 pub fn suggest_strokes(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Suggestions> {
     let found = suggest_found(strokes, opts)?;
-    if !found.strokes.is_empty() || opts.fill || strokes.len() < 3 {
+    // (Only where nothing was read or nothing carried on: a ring complete, a path at its
+    // end, a copy being drawn or every copy in the region drawn is an answer that
+    // stands: rays round a centre are no hatching, nor ties along a rail past its end.)
+    let open = [NO_SPACING, NO_REPETITION, NOT_REPEATED, UNCERTAIN, sequence::UNFOLLOWED];
+    let unread = found.reason.as_deref().is_some_and(|r| open.contains(&r));
+    if !found.strokes.is_empty() || !unread || opts.fill || strokes.len() < 3 {
         return Ok(found);
     }
     let skip = strokes.len().saturating_sub(MAX_STROKES);
@@ -242,15 +253,13 @@ fn suggest_found(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Suggestion
     let Ok(mut spread) = Spread::new(&elems) else {
         // (Petals drawn from one centre touch there: one motif, no spacing; they may
         // still carry on one another.)
-        return Ok(sequence::propose(strokes, &accepted, &ask(true))
-            .unwrap_or_else(|| nothing("The strokes have no spacing to repeat.")));
+        return Ok(sequence::propose(strokes, &accepted, &ask(true)).unwrap_or_else(|| nothing(NO_SPACING)));
     };
     spread.spacing = spread.apart(&elems);
     let Some(mut fit) = Fit::find(&elems, &weight, &parts, &spread) else {
         // No lattice: the latest strokes may still repeat one another by turns (a ring
         // of petals, hatching that bends: see `sequence`).
-        return Ok(sequence::propose(strokes, &accepted, &ask(true))
-            .unwrap_or_else(|| nothing("The drawing shows no repetition yet.")));
+        return Ok(sequence::propose(strokes, &accepted, &ask(true)).unwrap_or_else(|| nothing(NO_REPETITION)));
     };
     // A ring round a centre that holds the latest stroke turns its copies: they carry
     // on by turns, whatever lattice their places also fit (six petals round a drawn
@@ -274,8 +283,7 @@ fn suggest_found(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Suggestion
     if fit.motif[fit.cell[latest].0].members.len() < 2 {
         // The lattice of the earlier copies does not hold the latest, but they may carry
         // on one another (a row that turns a corner: the leaves past it).
-        return Ok(sequence::propose(strokes, &accepted, &ask(true))
-            .unwrap_or_else(|| nothing("The latest stroke does not repeat the pattern.")));
+        return Ok(sequence::propose(strokes, &accepted, &ask(true)).unwrap_or_else(|| nothing(NOT_REPEATED)));
     }
     // A lattice carries its copies on by translation: where the latest two hand-drawn
     // copies of a place are both turned one way from its usual copy (leaves past the
@@ -417,7 +425,7 @@ fn suggest_found(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Suggestion
     }
     if out.strokes.is_empty() {
         out.reason = Some(if uncertain > 0 {
-            "The copies drawn so far leave the next ones too uncertain: draw one more.".into()
+            UNCERTAIN.into()
         } else {
             "Every copy of the repetition in the region is drawn.".into()
         });

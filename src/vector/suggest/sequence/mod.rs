@@ -65,7 +65,7 @@ const MAX_RUN: usize = 8;
 /// put one 15.6 off at a step of 41; an arc's noise reads up to 0.003).
 const CLEAR_BEND: f64 = 0.012;
 /// Why nothing (more) is proposed while the sequence goes on.
-const UNCERTAIN: &str = "The copies drawn so far leave the next ones too uncertain: draw one more.";
+use super::UNCERTAIN;
 const RING_COMPLETE: &str = "The ring is complete: draw the next one.";
 /// Why nothing is proposed where copies repeat but do not yet show the next step.
 pub(super) const UNFOLLOWED: &str = "The copies drawn so far do not yet show where the next one goes: draw one more.";
