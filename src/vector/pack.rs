@@ -7,6 +7,14 @@
 use super::stroke::Stroke;
 use kurbo::{Point, Rect, Vec2};
 
+/// The box `strokes` cover with their pen (half the widest stroke's width round their
+/// points), or none for no strokes.
+pub fn inked_bounds(strokes: &[Stroke]) -> Option<Rect> {
+    let pen = 0.5 * strokes.iter().map(|s| s.width).fold(0.0, f64::max);
+    let bounds = strokes.iter().skip(1).fold(strokes.first()?.bounds(), |r, s| r.union(s.bounds()));
+    Some(bounds.inflate(pen, pen))
+}
+
 /// Periods `[[ax, ay], [bx, by]]` laying boxes `w` wide and `h` high (gaps included)
 /// in rows, each row offset by half a box.
 pub fn brick(w: f64, h: f64) -> [[f64; 2]; 2] {

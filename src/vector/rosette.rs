@@ -14,6 +14,7 @@
 //! as a curve.
 
 use super::chain::Chain;
+use super::pack;
 use super::stroke::Stroke;
 use kurbo::{Point, Rect};
 
@@ -50,8 +51,7 @@ pub fn lattice(
         let s = 2.2 * radius;
         return Some([[s, 0.0], [0.5 * s, 0.5 * 3f64.sqrt() * s]]);
     }
-    let pen = 0.5 * out.iter().map(|s| s.width).fold(0.0, f64::max);
-    let bounds = out.iter().skip(1).fold(out.first()?.bounds(), |r, s| r.union(s.bounds())).inflate(pen, pen);
+    let bounds = pack::inked_bounds(out)?;
     if radii.iter().any(|&r| 4.0 * r > short) || bounds.width() > area.width() || bounds.height() > area.height() {
         return None;
     }
@@ -78,8 +78,7 @@ pub fn lattice(
     // (One cluster, a clover and its long stem, has no drawn gap to keep: it packs as a
     // rosette does. Taken as the output's side, it was laid once.)
     let gap = if drawn_gap.is_finite() { (0.2 * largest).max(drawn_gap.min(short)) } else { 0.2 * largest };
-    let (w, h) = (bounds.width() + gap, bounds.height() + gap);
-    Some([[w, 0.0], [0.5 * w, h]])
+    Some(pack::brick(bounds.width() + gap, bounds.height() + gap))
 }
 
 /// The distance between two boxes (0 where they meet).

@@ -508,8 +508,9 @@ fn continued(
 ) -> Result<StrokeResult> {
     let classes: Vec<u32> = sources.iter().map(|&i| classification.classes[i as usize]).collect();
     let area = Rect::new(0.0, 0.0, opts.width, opts.height);
-    let pen = 0.5 * out.iter().map(|s| s.width).fold(0.0, f64::max);
-    let bounds = out.iter().skip(1).fold(out[0].bounds(), |r, s| r.union(s.bounds())).inflate(pen, pen);
+    let Some(bounds) = pack::inked_bounds(&out) else {
+        return Ok(StrokeResult::new(out, classes, sources, classification, opts, structure));
+    };
     // (A curve only: a ring is a rosette or the output's, by `rosette::lattice`; a
     // spiral is one. And only where even with no gap the output would hold it twice:
     // the spacing reads every copy.)
