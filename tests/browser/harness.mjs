@@ -30,6 +30,23 @@ export async function openEmptyCanvas(options) {
   return opened;
 }
 
+/** Waits until the autocomplete has answered the latest stroke. */
+export const settled = (page) => page.waitForFunction(() => document.querySelector('#suggest-status').getAttribute('aria-busy') === 'false', null, { timeout: 15000 });
+
+/** The strokes on the canvas, as the page counts them. */
+export const strokeCount = async (page) => Number((await page.textContent('#stroke-count')).split(' ')[0]);
+
+/** Draws the polyline `pts` (in the canvas's 800 x 500 units) with the mouse, `steps`
+ *  pointer moves between points. */
+export async function drawPolyline(page, pts, steps = 3) {
+  const box = await page.locator('#draw').boundingBox();
+  const at = (x, y) => [box.x + (x * box.width) / 800, box.y + (y * box.height) / 500];
+  await page.mouse.move(...at(...pts[0]));
+  await page.mouse.down();
+  for (const p of pts.slice(1)) await page.mouse.move(...at(...p), { steps });
+  await page.mouse.up();
+}
+
 /** RMS over sampled pixels of the best 7x7 match in the exemplar (as the benchmark). */
 export function patchEnergy(out, ex, rows, samples = 60) {
   let seed = 7;

@@ -2,23 +2,12 @@
 // hatching strokes"): five lines side by side, spaced by eye, one drawn the other way
 // and two run past their end. Ghosts go on by the spacing across the lines; Tab accepts
 // them, each a line about a gap on from the last and parallel to it; undo takes them
-// back. Screenshots: out/hatching-ghosts.png, out/hatching-accepted.png.
+// back; with both ghosts taken, the status says the hatching goes on from the next line
+// drawn. Screenshots: out/hatching-ghosts.png, out/hatching-accepted.png.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync } from 'node:fs';
-import { openEmptyCanvas } from './harness.mjs';
-
-const settled = (page) => page.waitForFunction(() => document.querySelector('#suggest-status').getAttribute('aria-busy') === 'false', null, { timeout: 15000 });
-const strokeCount = async (page) => Number((await page.textContent('#stroke-count')).split(' ')[0]);
-
-async function drawPolyline(page, pts) {
-  const box = await page.locator('#draw').boundingBox();
-  const at = (x, y) => [box.x + (x * box.width) / 800, box.y + (y * box.height) / 500];
-  await page.mouse.move(...at(...pts[0]));
-  await page.mouse.down();
-  for (const p of pts.slice(1)) await page.mouse.move(...at(...p), { steps: 3 });
-  await page.mouse.up();
-}
+import { drawPolyline, openEmptyCanvas, settled, strokeCount } from './harness.mjs';
 
 /** The lines' direction (70 degrees down from the x axis) and the normal across them. */
 const DIR = [Math.cos((70 * Math.PI) / 180), Math.sin((70 * Math.PI) / 180)];
@@ -66,6 +55,11 @@ test('hatching drawn by hand with the mouse: ghosts go on at its spacing, Tab ac
       assert.ok(sin < Math.sin((5 * Math.PI) / 180), `a ghost turned ${((Math.asin(sin) * 180) / Math.PI).toFixed(1)} degrees`);
       assert.ok(len > 140 && len < 200, `a ghost ${len.toFixed(0)} long`);
       last = across(mid(g));
+    }
+    // Both ghosts taken, the hatching waits for the hand, and says so.
+    if (ghosts.length === 2) {
+      const waiting = await page.textContent('#suggest-status');
+      assert.match(waiting, /hatching goes on from the lines you draw/, waiting);
     }
     await page.click('#undo');
     assert.equal(await strokeCount(page), drawn.length, 'undo takes the accepted lines back');

@@ -8,7 +8,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync } from 'node:fs';
-import { openEmptyCanvas } from './harness.mjs';
+import { openEmptyCanvas, settled, strokeCount } from './harness.mjs';
 
 /** Draws a petal with the mouse: a loop `len` long from `centre` (the middle of the
  *  800 x 500 canvas) along `theta`, its points wobbling by `wobble` across; begun `begin`
@@ -54,8 +54,6 @@ async function drawArc(page, theta, bulge, wobble, phase = 0) {
 }
 
 /** Waits for the ghosts' request to settle. */
-const settled = (page) => page.waitForFunction(() => document.querySelector('#suggest-status').getAttribute('aria-busy') === 'false', null, { timeout: 15000 });
-const strokeCount = async (page) => Number((await page.textContent('#stroke-count')).split(' ')[0]);
 
 /** Accepts ghosts (Tab just after drawing, then Enter on the canvas) until none are
  *  left, and checks that eight petals lie on the ring (each centre about 55 units from

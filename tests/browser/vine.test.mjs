@@ -6,7 +6,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync } from 'node:fs';
-import { openEmptyCanvas } from './harness.mjs';
+import { drawPolyline, openEmptyCanvas, settled, strokeCount } from './harness.mjs';
 
 /** The stem: a sine across the 800 x 500 canvas, from x = 60 to 740. */
 const stem = (x) => [x, 250 + 60 * Math.sin((x - 400) / 70)];
@@ -28,15 +28,6 @@ function sites(from, gap, count) {
   return out;
 }
 
-async function drawPolyline(page, pts) {
-  const box = await page.locator('#draw').boundingBox();
-  const at = (x, y) => [box.x + (x * box.width) / 800, box.y + (y * box.height) / 500];
-  await page.mouse.move(...at(...pts[0]));
-  await page.mouse.down();
-  for (const p of pts.slice(1)) await page.mouse.move(...at(...p), { steps: 2 });
-  await page.mouse.up();
-}
-
 /** A leaf: a loop 40 long from its base `p`, leaning 0.6 off the stem's direction
  *  `phi`, its points wobbling by `wobble` across. */
 function leaf([p, phi], wobble, phase) {
@@ -47,9 +38,6 @@ function leaf([p, phi], wobble, phase) {
     return [p[0] + along * Math.cos(theta) - across * Math.sin(theta), p[1] + along * Math.sin(theta) + across * Math.cos(theta)];
   });
 }
-
-const settled = (page) => page.waitForFunction(() => document.querySelector('#suggest-status').getAttribute('aria-busy') === 'false', null, { timeout: 15000 });
-const strokeCount = async (page) => Number((await page.textContent('#stroke-count')).split(' ')[0]);
 
 /** The distance from `p` to the drawn stem. */
 function offStem(p) {
@@ -67,9 +55,9 @@ test('a stem and three leaves drawn with the mouse: ghosts follow the stem to it
   mkdirSync('out', { recursive: true });
   const { page, close } = await openEmptyCanvas({ height: 1000 });
   try {
-    await drawPolyline(page, STEM);
+    await drawPolyline(page, STEM, 2);
     const at = sites(80, 50, 3);
-    for (let k = 0; k < 3; k++) await drawPolyline(page, leaf(at[k], 0.6, k));
+    for (let k = 0; k < 3; k++) await drawPolyline(page, leaf(at[k], 0.6, k), 2);
     await settled(page);
     const status = await page.textContent('#suggest-status');
     assert.match(status, /^[1-9]\d* suggested stroke/, status);

@@ -36,8 +36,8 @@ const ALTERNATE: f64 = 1.25;
 const STRAIGHT: f64 = 0.06;
 /// ...and at least this many pen widths long.
 const LONG: f64 = 6.0;
-/// Lines of one hatching turn by at most this much a step (radians, 12 degrees)...
-const MAX_TURN: f64 = 0.21;
+/// Lines of one hatching turn by at most this much a step (radians, 20 degrees)...
+const MAX_TURN: f64 = 0.35;
 /// ...change length by at most this factor either way...
 const MAX_LENGTH: f64 = 1.6;
 /// ...move along the line by at most this share of its length...
@@ -57,6 +57,9 @@ const SPREAD: f64 = 0.15;
 /// (a fan's turn read loosely, a spacing that grows) takes the ghosts off its lines: a
 /// third ghost on made 24-50 of about 200 wrong in the replay's hatching.
 const AHEAD: usize = 2;
+/// Why nothing more is proposed once the ghosts ahead of the hand are accepted.
+pub(super) const AHEAD_OF_HAND: &str =
+    "The hatching goes on from the lines you draw: draw the next line and the ones after it are proposed.";
 /// A ghost is on a drawn line of the hatching where their midpoints lie within this
 /// share of the spacing (and the line is about as turned).
 const DRAWN: f64 = 0.3;
@@ -132,8 +135,9 @@ impl Step {
     }
 }
 
-/// Proposals continuing the hatching that ends with the latest stroke, or `None` where
-/// the latest strokes are no hatching (fewer than `FEWEST` lines side by side, turning,
+/// Proposals continuing the hatching that ends with the latest stroke (none, with the
+/// reason, where the ghosts ahead of the hand are taken), or `None` where the latest
+/// strokes are no hatching (fewer than `FEWEST` lines side by side, turning,
 /// lengthening and spaced alike) or it is too unevenly spaced to go on from.
 pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Option<Suggestions> {
     let hand = |i: usize| !accepted.get(i).copied().unwrap_or(false);
@@ -233,6 +237,7 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
             continue;
         }
         if j > AHEAD {
+            out.reason = out.strokes.is_empty().then(|| AHEAD_OF_HAND.to_string());
             break;
         }
         if spread * (1.0 + (j as f64 / spans).powi(2)).sqrt() > SPREAD {
@@ -259,7 +264,7 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
         out.sources.push((source + ask.offset) as u32);
         out.cells.push([k, 0]);
     }
-    (!out.strokes.is_empty()).then_some(out)
+    (!out.strokes.is_empty() || out.reason.is_some()).then_some(out)
 }
 
 /// A slope is taken where it passes this many standard errors...
@@ -345,7 +350,8 @@ mod tests {
             let mut drawn = lines[..5].to_vec();
             drawn.extend(s.strokes.iter().cloned());
             let accepted = [false, false, false, false, false, true, true];
-            assert!(propose(&drawn, &accepted, &ask(3)).is_none(), "seed {seed}");
+            let waits = propose(&drawn, &accepted, &ask(3)).expect("the hatching still read");
+            assert!(waits.strokes.is_empty() && waits.reason.as_deref() == Some(AHEAD_OF_HAND), "seed {seed}");
             drawn.push(lines[7].clone());
             let next = propose(&drawn, &[false, false, false, false, false, true, true, false], &ask(3)).expect("on");
             let from = Line::of(&lines[7]).unwrap().mid;
