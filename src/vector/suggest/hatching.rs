@@ -211,6 +211,15 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
     // standard error (`SURE`): a hand turns each line a few degrees at random, read
     // from three steps as the fan of a turning contour, and ghosts three steps on went
     // 0.3 of the gap along their line.
+    // Lines whose places bend along them, each step moving further along than the one
+    // before (fence posts along an arc), are a row that bends, the sequence's: hatching
+    // goes on by its latest steps, and the ghosts went straight on off the arc.
+    let mean_len = hands.iter().map(|(_, l)| l.len).sum::<f64>() / hands.len() as f64;
+    let alongs: Vec<(f64, f64)> =
+        hands.windows(2).zip(&steps).map(|(w, s)| (0.5 * (w[0].0 + w[1].0) as f64, s.0.along)).collect();
+    if clear_slope(&alongs, HAND_ALONG * mean_len) != 0.0 {
+        return None;
+    }
     let recent = &steps[steps.len().saturating_sub(MEAN_OF)..];
     let m: f64 = recent.iter().map(|s| s.1).sum();
     let latest_dir = hands.last()?.1.dir;
@@ -275,6 +284,9 @@ const SURE: f64 = 2.0;
 const PRIOR_LINES: f64 = 2.0;
 const HAND_TURN: f64 = 0.0436;
 const HAND_LENGTH: f64 = 0.1;
+/// A hand moves each line along itself by about this share of its length at random
+/// (where it begins and ends it).
+const HAND_ALONG: f64 = 0.1;
 
 /// The least-squares slope of `y` on `x` over `points` (a line's turn or log length
 /// against its place in the run), where it is clear of its standard error (`SURE`),

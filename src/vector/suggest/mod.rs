@@ -49,6 +49,7 @@ mod turning;
 use self::certainty::hand_scatter;
 use self::fit::Fit;
 use super::classify::median;
+use super::element::Element;
 use super::reference::Spread;
 use super::spatial::Grid;
 use super::stroke::Stroke;
@@ -301,8 +302,10 @@ fn suggest_found(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Suggestion
     // A lattice carries its copies on by translation: where the latest two hand-drawn
     // copies of a place are both turned one way from its usual copy (leaves past the
     // corner of a row that turns, read as a lattice of the periods before and after it),
-    // they may carry on one another by turns instead.
-    if turned_away(&fit, strokes, &motifs.instances, &weight) {
+    // they may carry on one another by turns instead; so too where the row's latest
+    // copies bend steadily as they go (fence posts along an arc: the row's ghosts went
+    // straight on off it).
+    if turned_away(&fit, strokes, &motifs.instances, &weight) || row_bends(&fit, &elems, &weight) {
         return Ok(by_turns(strokes, &accepted, &ask(true)).unwrap_or_else(|| nothing(sequence::UNFOLLOWED)));
     }
     let points = strokes.iter().map(|s| s.points.len().max(1)).sum::<usize>();
@@ -506,6 +509,26 @@ fn turned_away(fit: &Fit, strokes: &[Stroke], instances: &[Vec<u32>], weight: &[
         _ => false,
     }
 }
+
+/// Whether a lattice of one period is a row that bends: the latest hand-drawn copies of
+/// its latest place, in drawing order, each move turned from the one before alike
+/// (`turning::steady_bend`).
+fn row_bends(fit: &Fit, elems: &[Element], weight: &[f64]) -> bool {
+    let Some(last) = (0..fit.cell.len()).rev().find(|&x| weight[x] >= 1.0) else { return false };
+    if fit.b.is_some() {
+        return false;
+    }
+    let copies: Vec<Point> =
+        fit.motif[fit.cell[last].0].members.iter().filter(|&&x| weight[x] >= 1.0).map(|&x| elems[x].pos).collect();
+    let recent = &copies[copies.len().saturating_sub(BENDS_OVER)..];
+    let turns = turning::move_turns(recent);
+    turns.len() >= BENDS_READ && turning::steady_bend(&turns).is_some()
+}
+
+/// A row's bend is read over this many of its latest copies, from at least this many
+/// turns (a shaky hand's hatching, read from two, bent off its row).
+const BENDS_OVER: usize = 6;
+const BENDS_READ: usize = 3;
 
 /// Where a proposed stroke would stack on a drawn one: a stroke of its class within
 /// half the distance at which the hand puts two strokes of that class (the median of

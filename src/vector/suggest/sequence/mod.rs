@@ -23,6 +23,12 @@
 //! followed by one of its strokes, its largest, and its latest copy's other strokes are
 //! carried on with it (`copies`).
 //!
+//! Copies that keep their pose while their places bend (fence posts along an arc,
+//! upright; `upright` in `follow`) step by a translation, which carries nothing round
+//! the bend: their step's turn is read from their places (each move against the one
+//! before, `model::place_relations`), and they are carried to the orbit's sites
+//! unturned.
+//!
 //! Departs from the lattice model and from the seed paper: shapes are compared up to
 //! rotation and scale here (a petal turned is the same petal).
 
@@ -64,6 +70,12 @@ const MAX_RUN: usize = 8;
 /// on missed by 17-27 at a step of 44; a bend of 0.013, read where the places say it,
 /// put one 15.6 off at a step of 41; an arc's noise reads up to 0.003).
 const CLEAR_BEND: f64 = 0.012;
+/// Copies keep their pose as the run bends (`upright`) where each of the run's shape
+/// steps turns by less than this (radians, about 6 degrees: a hand's own turn of a
+/// copy) while their places bend steadily (`turning::steady_bend`), and the latest two
+/// together by less than `UPRIGHT` of the places' turn.
+const UPRIGHT_TURN: f64 = 0.1;
+const UPRIGHT: f64 = 0.4;
 /// Why nothing (more) is proposed while the sequence goes on.
 use super::UNCERTAIN;
 const RING_COMPLETE: &str = "The ring is complete: draw the next one.";
@@ -347,7 +359,21 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
             && moves.windows(2).all(|w| w[0].cross(w[1]).atan2(w[0].dot(w[1])).abs() < UNFOLLOWED_TURN);
         spaced.then(|| Suggestions { reason: Some(UNFOLLOWED.into()), ..Default::default() })
     };
-    let Some(Model { orbit, closes, bend_error }) = model(d, &run, step, [one.a, two.a], lead) else {
+    // Copies that keep their pose while their places bend (fence posts along an arc,
+    // upright): the shapes step by a translation, which carries nothing round the bend,
+    // and the places say how the step turns. Their copies are carried on unturned.
+    // (The shapes' turn is a hand's few degrees at random; the places' is the bend's,
+    // alike at every step.)
+    let bend = place_turn(d, &run);
+    let upright = rows
+        && [one.a, two.a].iter().all(|a| a.atan2().abs() < UPRIGHT_TURN)
+        && run.windows(2).all(|w| d.near(w[0], w[1], 0.0).is_some_and(|(t, _)| t.turn().abs() < UPRIGHT_TURN))
+        && bend.is_some_and(|a| (one.a + two.a).atan2().abs() < UPRIGHT * a.atan2().abs());
+    let shapes = match bend.filter(|_| upright) {
+        Some(a) => [a; 2],
+        None => [one.a, two.a],
+    };
+    let Some(Model { orbit, closes, bend_error }) = model(d, &run, step, shapes, lead, upright) else {
         return unfollowed().map(|s| (s, Vec::new()));
     };
     // A step turning by more than a ring of two and a half copies would (about half a
@@ -365,7 +391,9 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
             return unfollowed().map(|s| (s, Vec::new()));
         }
     }
-    let inflate = backtest(d, &run, step, [one.a, two.a], lead);
+    let inflate = backtest(d, &run, step, shapes, lead, upright);
+    // The turn a copy takes from copy `from` to copy `to`: the orbit's, or none.
+    let turn_of = |from: i64, to: i64| if upright { Vec2::new(1.0, 0.0) } else { orbit.turn(from, to) };
     let reach = super::certainty::reach(orbit.copies);
     let mut out = Suggestions::default();
     let end = run.len() as i64 - 1;
@@ -373,7 +401,7 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
     // The latest copy's other strokes, carried on with it; a ghost is on a drawn stroke
     // within half the step or half the nearest two of the copy's strokes lie apart.
     let h = run.iter().position(|&i| i == last)?;
-    let parts = companions(d, &run, h, step, orbit.turn(h as i64 - 1, h as i64));
+    let parts = companions(d, &run, h, step, turn_of(h as i64 - 1, h as i64));
     // (A copy's strokes may share a centre, a leaf's two halves and its midrib: a ghost
     // is on a drawn stroke that it carries onto about unturned, unscaled and unmoved.)
     let drawn = |g: &Stroke, here: f64| {
@@ -401,7 +429,7 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
     // The latest copy's other strokes carried to copy `t`, where none is drawn yet (the
     // copy that closes a ring may lack one).
     let parts_at = |t: i64, here: f64| -> Vec<(Stroke, usize)> {
-        let turn = orbit.turn(h as i64, t);
+        let turn = turn_of(h as i64, t);
         let to = Similarity { a: turn, b: orbit.at(t).to_vec2() - mul(turn, d.z(last).to_vec2()) };
         parts
             .iter()
@@ -465,7 +493,7 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
             Some(r) => hands[r.below(hands.len())],
             None => *hands.last()?,
         };
-        let turn = orbit.turn(from as i64, t);
+        let turn = turn_of(from as i64, t);
         let src = run[from];
         let ghost = Similarity { a: turn, b: site.to_vec2() - mul(turn, d.z(src).to_vec2()) }.carry(&strokes[src]);
         let c = ghost.reference_point();
@@ -498,7 +526,7 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
     // places alone misread it where a person's hand turned the petals, and the last
     // ghost petal of three was proposed bare.)
     let after = (last + 1..n).any(|i| d.hand(i) && parts.iter().any(|&c| d.alike(c, i)));
-    let trails = || after || trailing(d, &run[..=h], &parts, &|t| orbit.turn(h as i64, t).atan2(), step);
+    let trails = || after || trailing(d, &run[..=h], &parts, &|t| turn_of(h as i64, t).atan2(), step);
     if let Some((t, k)) = proposed.filter(|_| why != RING_COMPLETE && trails()) {
         for (g, c) in parts_at(t + 1, orbit.at(t + 1).distance(orbit.at(t))) {
             push(&mut out, g, c, k);
@@ -509,6 +537,16 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
         out.reason = Some(why.into());
     }
     Some((out, parts))
+}
+
+/// The step of the run's places where they bend steadily (`turning::steady_bend`, each
+/// move against the one before where the three copies are hand-drawn): its turn, and
+/// the moves' mean change of length.
+fn place_turn(d: &Drawing, run: &[usize]) -> Option<Vec2> {
+    let relations = model::place_relations(d, run);
+    let turn = super::turning::steady_bend(&relations.iter().map(|r| r.turn).collect::<Vec<_>>())?;
+    let scale = (relations.iter().map(|r| r.scale.ln()).sum::<f64>() / relations.len() as f64).exp();
+    Some(Vec2::new(turn.cos(), turn.sin()) * scale)
 }
 
 /// `points` averaged over five along the path (fewer at an open path's ends; round a

@@ -10,7 +10,7 @@ use super::Drawing;
 use crate::vector::chain::ring_steps;
 use crate::vector::classify::median;
 use crate::vector::similarity::Similarity;
-use kurbo::Vec2;
+use kurbo::{Point, Vec2};
 use std::f64::consts::TAU;
 
 /// The hand's prior scatter of a copy's place, as a share of the step.
@@ -82,15 +82,37 @@ pub(super) struct Model {
     pub(super) bend_error: f64,
 }
 
+/// What the places of `run` say of its step, for copies that keep their pose as the run
+/// bends (`upright`): each step's move against the one before (its turn and scale), where
+/// the three copies are hand-drawn.
+pub(super) fn place_relations(d: &Drawing, run: &[usize]) -> Vec<Relation> {
+    (1..run.len().saturating_sub(1))
+        .filter(|&t| (t - 1..=t + 1).all(|k| d.hand(run[k])))
+        .filter_map(|t| {
+            let (u, v) = (d.z(run[t]) - d.z(run[t - 1]), d.z(run[t + 1]) - d.z(run[t]));
+            let r = Similarity::fit(&[u.to_point(), Point::ZERO], &[v.to_point(), Point::ZERO]).0;
+            (u.hypot() > 0.0).then(|| Relation {
+                from: t as i64 - 1,
+                span: 1,
+                turn: r.turn(),
+                scale: r.scale(),
+                residual: 0.0,
+            })
+        })
+        .collect()
+}
+
 /// The orbit through `run` (copies in order along the step, `step` apart), with its
-/// step read from the hand-drawn copies' shapes and places; `fallback` is the step to
-/// read the shapes' turn from when no two consecutive copies are hand-drawn.
+/// step read from the hand-drawn copies' shapes (or, where they keep their pose as the
+/// run bends, `upright`, from their places' moves) and places; `fallback` is the step to
+/// read the turn from when no two consecutive copies are hand-drawn.
 pub(super) fn model(
     d: &Drawing,
     run: &[usize],
     step: f64,
     fallback: [Vec2; 2],
     lead: Option<(usize, usize)>,
+    upright: bool,
 ) -> Option<Model> {
     let copies: Vec<Placed> = run
         .iter()
@@ -107,19 +129,23 @@ pub(super) fn model(
     // it was proposed with, and says nothing of it).
     let hands: Vec<usize> = (0..run.len()).filter(|&k| d.hand(run[k])).collect();
     let expected = ((fallback[0] + fallback[1]) * 0.5).atan2();
-    let mut relations: Vec<Relation> = hands
-        .windows(2)
-        .filter_map(|w| {
-            let span = w[1] - w[0];
-            let (t, _) = d.near(run[w[0]], run[w[1]], span as f64 * expected)?;
-            // (Unwrapped to the whole turns `span` steps of about the expected turn make.)
-            let turn = t.turn() + TAU * ((span as f64 * expected - t.turn()) / TAU).round();
-            let residual = d.shape_wobble(run[w[0]], run[w[1]], &t);
-            Some(Relation { from: w[0] as i64, span, turn, scale: t.scale(), residual })
-        })
-        .collect();
+    let mut relations: Vec<Relation> = if upright {
+        place_relations(d, run)
+    } else {
+        hands
+            .windows(2)
+            .filter_map(|w| {
+                let span = w[1] - w[0];
+                let (t, _) = d.near(run[w[0]], run[w[1]], span as f64 * expected)?;
+                // (Unwrapped to the whole turns `span` steps of about the expected turn make.)
+                let turn = t.turn() + TAU * ((span as f64 * expected - t.turn()) / TAU).round();
+                let residual = d.shape_wobble(run[w[0]], run[w[1]], &t);
+                Some(Relation { from: w[0] as i64, span, turn, scale: t.scale(), residual })
+            })
+            .collect()
+    };
     // (The lead-in's turn onto the run's first hand-drawn copy, for the bend only.)
-    let lead_in = lead.zip(hands.first()).and_then(|((p, back), &h)| {
+    let lead_in = lead.filter(|_| !upright).zip(hands.first()).and_then(|((p, back), &h)| {
         let span = h + back;
         let (t, _) = d.near(p, run[h], span as f64 * expected)?;
         let turn = t.turn() + TAU * ((span as f64 * expected - t.turn()) / TAU).round();
@@ -246,6 +272,7 @@ pub(super) fn backtest(
     step: f64,
     fallback: [Vec2; 2],
     lead: Option<(usize, usize)>,
+    upright: bool,
 ) -> f64 {
     let hands: Vec<usize> = (0..run.len()).filter(|&k| d.hand(run[k])).collect();
     let mut worst: f64 = 1.0;
@@ -256,7 +283,7 @@ pub(super) fn backtest(
         if sub.iter().filter(|&&i| d.hand(i)).count() + usize::from(lead.is_some()) < 3 {
             continue;
         }
-        let Some(m) = model(d, sub, step, fallback, lead) else { continue };
+        let Some(m) = model(d, sub, step, fallback, lead, upright) else { continue };
         let ratio = m.orbit.at(k as i64).distance(d.z(run[k])) / m.orbit.miss(k as i64).max(1e-9);
         if ratio > BACKTEST {
             worst = worst.max(ratio / BACKTEST);
