@@ -2,7 +2,7 @@
 //! `suggest_strokes`; the figures are in `cargo run --release --example replay_suggest`.
 use patternsynth::vector::exemplar::{family_list, freehand_sketch, irregular_dashes};
 use patternsynth::vector::replay::replay;
-use patternsynth::vector::sequences::{begun_at, circle_grid, drawn_by, HandTurn};
+use patternsynth::vector::sequences::{begun_at, circle_grid, drawn_by, posts, HandTurn};
 use patternsynth::vector::{suggest_strokes, Stroke, SuggestOptions};
 
 fn replayed(name: &str, jitter: f64) -> (patternsynth::vector::replay::Replay, usize) {
@@ -985,37 +985,6 @@ fn hatching_that_turns_with_its_contour_gets_its_next_line() {
     }
     eprintln!("turning hatching: a ghost on the next line in {hit} of {runs}, one off every line in {wrong}");
     assert!(hit * 10 >= runs * 9 && wrong * 25 <= runs, "{hit} of {runs} on the next line, {wrong} off every line");
-}
-
-/// Fence posts along an arc (issue 27: "a row of fence posts along an arc: autocomplete
-/// proposes nothing"): posts 40 long, `step` apart along an arc of radius `radius`,
-/// each placed `jitter` of the step off at random and turned 2 degrees, upright (a
-/// fence seen from the side: the posts keep their pose as the row bends) or turned with
-/// the arc.
-fn posts(radius: f64, step: f64, upright: bool, jitter: f64, seed: u64) -> (Vec<Stroke>, Vec<(kurbo::Point, f64)>) {
-    use patternsynth::rng::Rng;
-    let mut rng = Rng::new(seed * 7919 + radius as u64);
-    let centre = kurbo::Point::new(400.0, 250.0 + radius);
-    let mut sites = Vec::new();
-    let strokes = (0..12)
-        .map(|k| {
-            let phi = -std::f64::consts::FRAC_PI_2 + (k as f64 - 4.0) * step / radius;
-            let base = centre + kurbo::Vec2::new(phi.cos(), phi.sin()) * radius;
-            let base = base + kurbo::Vec2::new(rng.normal(), rng.normal()) * (jitter * step);
-            let pose = if upright { -std::f64::consts::FRAC_PI_2 } else { phi + std::f64::consts::PI };
-            let ang = pose + 2f64.to_radians() * rng.normal();
-            let len = 40.0;
-            sites.push((base + kurbo::Vec2::new(pose.cos(), pose.sin()) * (len / 2.0), pose));
-            let pts = (0..=4)
-                .map(|i| {
-                    let t = len * i as f64 / 4.0;
-                    [base.x + t * ang.cos() + 0.5 * rng.normal(), base.y + t * ang.sin() + 0.5 * rng.normal()]
-                })
-                .collect();
-            Stroke::new(pts, 3.0, None)
-        })
-        .collect();
-    (strokes, sites)
 }
 
 /// After four to seven posts, a ghost at the next post's site (within 0.3 of the step,

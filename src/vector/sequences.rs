@@ -592,6 +592,37 @@ fn arc(from: Point, to: Point, bulge: f64, rng: &mut Rng, noise: f64) -> Stroke 
     Stroke::new(pts, 2.0, None)
 }
 
+/// Fence posts along an arc (issue 27: "a row of fence posts along an arc: autocomplete
+/// proposes nothing"): posts 40 long, `step` apart along an arc of radius `radius`,
+/// each placed `jitter` of the step off at random and turned 2 degrees, upright (a
+/// fence seen from the side: the posts keep their pose as the row bends) or turned with
+/// the arc. Twelve posts, from four steps before the arc's top; each with its site (the
+/// middle of the post where the hand placed it) and pose.
+pub fn posts(radius: f64, step: f64, upright: bool, jitter: f64, seed: u64) -> (Vec<Stroke>, Vec<(Point, f64)>) {
+    let mut rng = Rng::new(seed * 7919 + radius as u64);
+    let centre = Point::new(400.0, 250.0 + radius);
+    let mut sites = Vec::new();
+    let strokes = (0..12)
+        .map(|k| {
+            let phi = -std::f64::consts::FRAC_PI_2 + (k as f64 - 4.0) * step / radius;
+            let base = centre + Vec2::new(phi.cos(), phi.sin()) * radius;
+            let base = base + Vec2::new(rng.normal(), rng.normal()) * (jitter * step);
+            let pose = if upright { -std::f64::consts::FRAC_PI_2 } else { phi + std::f64::consts::PI };
+            let ang = pose + 2f64.to_radians() * rng.normal();
+            let len = 40.0;
+            sites.push((base + Vec2::new(pose.cos(), pose.sin()) * (len / 2.0), pose));
+            let pts = (0..=4)
+                .map(|i| {
+                    let t = len * i as f64 / 4.0;
+                    [base.x + t * ang.cos() + 0.5 * rng.normal(), base.y + t * ang.sin() + 0.5 * rng.normal()]
+                })
+                .collect();
+            Stroke::new(pts, 3.0, None)
+        })
+        .collect();
+    (strokes, sites)
+}
+
 /// A leaf of three strokes from `at` along `theta`, `len` long: its left and right
 /// halves (arcs, mirror images of one another) and its midrib, in that order.
 fn three_stroke_leaf(at: Point, theta: f64, len: f64, rng: &mut Rng, noise: f64) -> Vec<Stroke> {

@@ -283,7 +283,7 @@ pub fn synthesize_strokes(
         })
         .filter(|(c, beside)| {
             let held = c.strokes() + beside.iter().map(Chain::strokes).sum::<usize>();
-            (c.closes.is_some() && 3 * held >= 2 * strokes.len()) || !lattice()
+            (c.closes.is_some() && 3 * held >= 2 * strokes.len()) || c.upright || !lattice()
         });
     if let Some((chain, beside)) = along {
         return along_chain(strokes, classification, chain, beside, opts, max_elements, progress).map_err(explain);

@@ -32,6 +32,12 @@ impl Chain {
     fn copy(&self, strokes: &[Stroke], t: i64, from: usize) -> Option<Vec<(Stroke, usize)>> {
         let step = self.step.power(t - from as i64)?;
         let parts = std::iter::once(self.members[from]).chain(self.companions.get(from).into_iter().flatten().copied());
+        if self.upright {
+            // (The copy moved whole to where the step carries its member's place.)
+            let c = strokes[self.members[from]].reference_point();
+            let v = step.apply(c) - c;
+            return Some(parts.map(|k| (strokes[k].translated(v.x, v.y), k)).collect());
+        }
         Some(parts.map(|k| (step.carry(&strokes[k]), k)).collect())
     }
 

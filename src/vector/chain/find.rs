@@ -60,14 +60,85 @@ pub fn find_ring(strokes: &[Stroke]) -> Option<Chain> {
     search(strokes, MAX_TURN).filter(|f| f.ring).map(|f| f.chain)
 }
 
-/// `find`'s chain, or else `find_ring`'s: with whether it is `find`'s.
+/// `find`'s chain, or else `find_ring`'s, or else `find_upright`'s: with whether it is
+/// `find`'s (or, upright, holds the drawing whole).
 pub fn find_or_ring(strokes: &[Stroke]) -> Option<(Chain, bool)> {
     match search(strokes, HALF_TURN) {
         Some(f) if f.whole => Some((f.chain, true)),
         Some(f) if f.ring => Some((f.chain, false)),
-        _ => find_ring(strokes).map(|c| (c, false)),
+        _ => find_ring(strokes).map(|c| (c, false)).or_else(|| find_upright(strokes).map(|c| (c, true))),
     }
 }
+
+/// Copies of one stroke that keep their pose while their places bend (fence posts along
+/// an arc, upright): every stroke of the drawing one shape, each a translation of the
+/// others (turned by at most `UPRIGHT_TURN`, scaled by at most `UPRIGHT_SCALE`), their
+/// places in order along the row each a move on from the last (within `UPRIGHT_MOVE`
+/// either way of the median), bending steadily (`bend::steady_bend`). The step is the
+/// turn that carries each place onto the next, fitted to all of them; the chain
+/// carries its copies by it unturned. (`search` takes no step that only translates:
+/// those are the lattice's, and a row that bends is none.)
+pub fn find_upright(strokes: &[Stroke]) -> Option<Chain> {
+    let n = strokes.len();
+    if !(4..=MAX_STROKES).contains(&n) || strokes.iter().any(Stroke::is_dot) {
+        return None;
+    }
+    let sampled: Vec<Vec<Point>> = strokes.iter().map(samples).collect();
+    let size = |k: usize| strokes[k].bounds().size().to_vec2().hypot();
+    let alike = |i: usize, j: usize| {
+        relations(&sampled[i], &sampled[j], size(i), SHAPE, MAX_SCALE)
+            .iter()
+            .any(|(t, _, _)| t.turn().abs() <= UPRIGHT_TURN && (t.scale() - 1.0).abs() <= UPRIGHT_SCALE)
+    };
+    if !(1..n).all(|j| alike(0, j)) {
+        return None;
+    }
+    // In order along the row: by their places along its chord's direction (the row's
+    // principal axis; an arc bending less than a half turn keeps that order).
+    let centre: Vec<Point> = sampled.iter().map(|s| centroid(s)).collect();
+    let mean = centre.iter().fold(Vec2::ZERO, |s, p| s + p.to_vec2()) / n as f64;
+    let (sxx, sxy, syy) = centre.iter().fold((0.0, 0.0, 0.0), |(a, b, c), p| {
+        let d = p.to_vec2() - mean;
+        (a + d.x * d.x, b + d.x * d.y, c + d.y * d.y)
+    });
+    let theta = 0.5 * (2.0 * sxy).atan2(sxx - syy);
+    let axis = Vec2::new(theta.cos(), theta.sin());
+    let mut order: Vec<usize> = (0..n).collect();
+    order.sort_by(|&x, &y| centre[x].to_vec2().dot(axis).total_cmp(&centre[y].to_vec2().dot(axis)));
+    let places: Vec<Point> = order.iter().map(|&k| centre[k]).collect();
+    let mut moves: Vec<f64> = places.windows(2).map(|w| w[0].distance(w[1])).collect();
+    let lengths = moves.clone();
+    let median = crate::vector::classify::median(&mut moves);
+    if median <= 0.0 || lengths.iter().any(|&l| l > UPRIGHT_MOVE * median || l < median / UPRIGHT_MOVE) {
+        return None;
+    }
+    super::bend::steady_bend(&super::bend::move_turns(&places))?;
+    // The turn about the circle through the places (least squares), by their mean angle
+    // a step: a pure turn, since copies that keep their pose keep their size (a scale
+    // read from four places is their scatter's, and made a spiral of posts), and read
+    // from the circle rather than from each place onto the next, whose scatter in both
+    // carried the posts a quarter of a step off the arc round its far side.
+    let c = super::bend::circle_through(&places)?;
+    let angle = |p: Point| (p.y - c.y).atan2(p.x - c.x);
+    let turns: f64 = places
+        .windows(2)
+        .map(|w| (angle(w[1]) - angle(w[0]) + 3.0 * std::f64::consts::PI).rem_euclid(TAU) - std::f64::consts::PI)
+        .sum();
+    let turn = turns / (n - 1) as f64;
+    let a = Vec2::new(turn.cos(), turn.sin());
+    let step = Similarity { a, b: c.to_vec2() - mul(a, c.to_vec2()) };
+    if places.windows(2).any(|w| step.apply(w[0]).distance(w[1]) > PLACE * median) {
+        return None;
+    }
+    Some(Chain { members: order, companions: vec![Vec::new(); n], step, upright: true, closes: None })
+}
+
+/// An upright chain's copies turn by at most this (radians, about 9 degrees: a hand's
+/// own), scale by at most this share, and lie a move apart within this factor of the
+/// median move either way.
+const UPRIGHT_TURN: f64 = 0.15;
+const UPRIGHT_SCALE: f64 = 0.25;
+const UPRIGHT_MOVE: f64 = 1.5;
 
 /// The chain the search reads, and which share of its shape's strokes it holds.
 struct Found {
@@ -291,7 +362,7 @@ fn search(strokes: &[Stroke], max_turn: f64) -> Option<Found> {
         }
         _ => false,
     };
-    Some(Found { chain: Chain { members: chain, companions, step, closes }, whole, ring })
+    Some(Found { chain: Chain { members: chain, companions, step, upright: false, closes }, whole, ring })
 }
 
 /// Of `fits`, the one whose turn and scale are nearest `t`'s.

@@ -27,10 +27,11 @@
 //! to translation); follows Xing et al. 2014's local similarity, read globally from all
 //! the drawn copies since synthesis sees the whole drawing at once.
 
+pub mod bend;
 mod carry;
 mod find;
 
-pub use find::{find, find_or_ring, find_ring, ring_steps, rings_beside};
+pub use find::{find, find_or_ring, find_ring, find_upright, ring_steps, rings_beside};
 
 use super::similarity::{mul, Similarity};
 use kurbo::{Point, Vec2};
@@ -67,6 +68,9 @@ pub struct Chain {
     /// stroke, and for a copy short of some.
     pub companions: Vec<Vec<usize>>,
     pub step: Similarity,
+    /// The copies keep their pose: the step carries their places only, each copy moved
+    /// there unturned (fence posts along an arc, upright; `find_upright`).
+    pub upright: bool,
     /// Copies round the whole ring, when it closes (a rosette: petals round a centre
     /// within `ROSETTE` copy sizes).
     pub closes: Option<usize>,
@@ -157,6 +161,7 @@ mod tests {
             members: vec![0, 1, 2, 3],
             companions: vec![Vec::new(); 4],
             step: Similarity { a, b: c.to_vec2() - mul(a, c.to_vec2()) },
+            upright: false,
             closes: Some(5),
         };
         assert!(chain.complete(&drawn, None).is_empty());
@@ -197,6 +202,7 @@ mod tests {
             members: (0..20).map(|k| 2 * k).collect(),
             companions: (0..20).map(|k| vec![2 * k + 1]).collect(),
             step: Similarity { a, b: c.to_vec2() - mul(a, c.to_vec2()) },
+            upright: false,
             closes: Some(48),
         };
         assert_eq!(chain.complete(&drawn, None).len(), 56);

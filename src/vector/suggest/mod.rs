@@ -512,7 +512,7 @@ fn turned_away(fit: &Fit, strokes: &[Stroke], instances: &[Vec<u32>], weight: &[
 
 /// Whether a lattice of one period is a row that bends: the latest hand-drawn copies of
 /// its latest place, in drawing order, each move turned from the one before alike
-/// (`turning::steady_bend`).
+/// (`chain::bend::steady_bend`).
 fn row_bends(fit: &Fit, elems: &[Element], weight: &[f64]) -> bool {
     let Some(last) = (0..fit.cell.len()).rev().find(|&x| weight[x] >= 1.0) else { return false };
     if fit.b.is_some() {
@@ -521,8 +521,8 @@ fn row_bends(fit: &Fit, elems: &[Element], weight: &[f64]) -> bool {
     let copies: Vec<Point> =
         fit.motif[fit.cell[last].0].members.iter().filter(|&&x| weight[x] >= 1.0).map(|&x| elems[x].pos).collect();
     let recent = &copies[copies.len().saturating_sub(BENDS_OVER)..];
-    let turns = turning::move_turns(recent);
-    turns.len() >= BENDS_READ && turning::steady_bend(&turns).is_some()
+    let turns = crate::vector::chain::bend::move_turns(recent);
+    turns.len() >= BENDS_READ && crate::vector::chain::bend::steady_bend(&turns).is_some()
 }
 
 /// A row's bend is read over this many of its latest copies, from at least this many

@@ -4,38 +4,6 @@
 //! an arc or a spiral; one that changes from step to step for a stem that bends one way
 //! and then the other (an S), where the change is clear of the hand's noise.
 
-/// Places bend steadily where their moves' mean turn passes this many of its standard
-/// errors...
-const STEADY: f64 = 3.0;
-/// ...the turns' scatter pooled with a hand's (radians: a copy placed 1% of the step
-/// off turns the moves either side of it by about 0.03), counted as this many turns...
-const HAND_BEND: f64 = 0.03;
-const PRIOR_TURNS: f64 = 2.0;
-/// ...and the mean is at least this (radians a step, about 1 degree) and at most this
-/// (about 30 degrees: an arc, not a grid drawn row by row).
-const LEAST_BEND: f64 = 0.02;
-const MOST_BEND: f64 = 0.5;
-
-/// The turn a step of places that bend steadily (fence posts along an arc), given the
-/// turn of each move from the one before, when there are two or more: their mean, where
-/// it is clear of none (`STEADY`) and within `LEAST_BEND` and `MOST_BEND`.
-pub(super) fn steady_bend(turns: &[f64]) -> Option<f64> {
-    if turns.len() < 2 {
-        return None;
-    }
-    let n = turns.len() as f64;
-    let mean = turns.iter().sum::<f64>() / n;
-    let ss = turns.iter().map(|t| (t - mean).powi(2)).sum::<f64>();
-    let var = (ss + PRIOR_TURNS * HAND_BEND * HAND_BEND) / (n - 1.0 + PRIOR_TURNS);
-    (mean.abs() > STEADY * (var / n).sqrt() && (LEAST_BEND..=MOST_BEND).contains(&mean.abs())).then_some(mean)
-}
-
-/// The turn of each move between consecutive `places` from the one before.
-pub(super) fn move_turns(places: &[kurbo::Point]) -> Vec<f64> {
-    let moves: Vec<kurbo::Vec2> = places.windows(2).map(|w| w[1] - w[0]).collect();
-    moves.windows(2).map(|m| m[0].cross(m[1]).atan2(m[0].dot(m[1]))).collect()
-}
-
 /// What a hand-drawn copy says of the next hand-drawn one along a run, `span` steps on.
 pub(super) struct Relation {
     /// The step the first copy is at (negative: the lead-in, before the run).

@@ -72,7 +72,7 @@ const MAX_RUN: usize = 8;
 const CLEAR_BEND: f64 = 0.012;
 /// Copies keep their pose as the run bends (`upright`) where each of the run's shape
 /// steps turns by less than this (radians, about 6 degrees: a hand's own turn of a
-/// copy) while their places bend steadily (`turning::steady_bend`), and the latest two
+/// copy) while their places bend steadily (`chain::bend::steady_bend`), and the latest two
 /// together by less than `UPRIGHT` of the places' turn.
 const UPRIGHT_TURN: f64 = 0.1;
 const UPRIGHT: f64 = 0.4;
@@ -539,12 +539,12 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
     Some((out, parts))
 }
 
-/// The step of the run's places where they bend steadily (`turning::steady_bend`, each
+/// The step of the run's places where they bend steadily (`chain::bend::steady_bend`, each
 /// move against the one before where the three copies are hand-drawn): its turn, and
 /// the moves' mean change of length.
 fn place_turn(d: &Drawing, run: &[usize]) -> Option<Vec2> {
     let relations = model::place_relations(d, run);
-    let turn = super::turning::steady_bend(&relations.iter().map(|r| r.turn).collect::<Vec<_>>())?;
+    let turn = crate::vector::chain::bend::steady_bend(&relations.iter().map(|r| r.turn).collect::<Vec<_>>())?;
     let scale = (relations.iter().map(|r| r.scale.ln()).sum::<f64>() / relations.len() as f64).exp();
     Some(Vec2::new(turn.cos(), turn.sin()) * scale)
 }
