@@ -850,6 +850,20 @@ fn hatching_drawn_with_a_shaky_pointer_goes_on() {
     assert_eq!(wrong, 0, "{wrong} wrong of {shown} shown");
 }
 
+/// A line `len` long from `start` along `theta`, drawn the other way one time in five.
+fn hand_line(start: [f64; 2], theta: f64, len: f64, rng: &mut patternsynth::rng::Rng) -> Stroke {
+    let mut pts: Vec<[f64; 2]> = (0..=2)
+        .map(|i| {
+            let t = len * i as f64 / 2.0;
+            [start[0] + t * theta.cos(), start[1] + t * theta.sin()]
+        })
+        .collect();
+    if rng.next_f64() < 0.2 {
+        pts.reverse();
+    }
+    Stroke::new(pts, 3.0, None)
+}
+
 /// Hatching as a hand draws it (issue 27, "draw four or five hatching strokes"): lines
 /// 100 long, each begun 1-5% of the spacing off its place and turned up to 2 degrees
 /// about its start, a fifth drawn the other way and a tenth past its end by 15-40%,
@@ -873,16 +887,7 @@ fn hand_drawn_hatching_gets_its_next_line() {
                     let start = [200.0 + spacing * k as f64 + off * phi.cos(), 300.0 + off * phi.sin()];
                     let theta = (-70.0 + 4.0 * rng.next_f64() - 2.0f64).to_radians();
                     let len = if rng.next_f64() < 0.1 { 100.0 * (1.15 + 0.25 * rng.next_f64()) } else { 100.0 };
-                    let mut pts: Vec<[f64; 2]> = (0..=2)
-                        .map(|i| {
-                            let t = len * i as f64 / 2.0;
-                            [start[0] + t * theta.cos(), start[1] + t * theta.sin()]
-                        })
-                        .collect();
-                    if rng.next_f64() < 0.2 {
-                        pts.reverse();
-                    }
-                    Stroke::new(pts, 3.0, None)
+                    hand_line(start, theta, len, &mut rng)
                 })
                 .collect();
             let s = suggest_strokes(&lines[..5], &SuggestOptions::default()).unwrap();
@@ -927,16 +932,7 @@ fn fan(gap: f64, turn: f64, grow: f64, seed: u64) -> Vec<Stroke> {
                 centre[0] + r0 * (step * k as f64 - 150f64.to_radians()).cos() + off * psi.cos(),
                 centre[1] + r0 * (step * k as f64 - 150f64.to_radians()).sin() + off * psi.sin(),
             ];
-            let mut pts: Vec<[f64; 2]> = (0..=2)
-                .map(|i| {
-                    let t = len_drawn * i as f64 / 2.0;
-                    [start[0] + t * phi.cos(), start[1] + t * phi.sin()]
-                })
-                .collect();
-            if rng.next_f64() < 0.2 {
-                pts.reverse();
-            }
-            Stroke::new(pts, 3.0, None)
+            hand_line(start, phi, len_drawn, &mut rng)
         })
         .collect()
 }

@@ -14,7 +14,7 @@ use super::stroke::Stroke;
 use super::svg::to_svg;
 use crate::error::{invalid, Error, Result};
 use crate::progress::{Progress, Throttle};
-use kurbo::{Point, Rect, Vec2};
+use kurbo::{Point, Rect};
 use serde::{Deserialize, Serialize};
 
 /// Options of `synthesize_strokes`; every tolerance left out is proposed from the data.
@@ -363,15 +363,7 @@ fn straight_row(pos: &[Point]) -> bool {
     if n < 4 {
         return false;
     }
-    let mean = pos.iter().fold(Vec2::ZERO, |s, p| s + p.to_vec2()) / n as f64;
-    let (mut sxx, mut sxy, mut syy) = (0.0, 0.0, 0.0);
-    for p in pos {
-        let d = p.to_vec2() - mean;
-        (sxx, sxy, syy) = (sxx + d.x * d.x, sxy + d.x * d.y, syy + d.y * d.y);
-    }
-    // The principal axis: half the angle of the covariance's (2 sxy, sxx - syy).
-    let theta = 0.5 * (2.0 * sxy).atan2(sxx - syy);
-    let axis = Vec2::new(theta.cos(), theta.sin());
+    let (mean, axis) = chain::bend::principal_axis(pos);
     let mut along: Vec<f64> = pos.iter().map(|p| (p.to_vec2() - mean).dot(axis)).collect();
     crate::order::floats(&mut along);
     let mut gaps: Vec<f64> = along.windows(2).map(|w| w[1] - w[0]).collect();

@@ -36,6 +36,27 @@ pub fn move_turns(places: &[Point]) -> Vec<f64> {
     moves.windows(2).map(|m| m[0].cross(m[1]).atan2(m[0].dot(m[1]))).collect()
 }
 
+/// The mean turn a step about `c` from each of `places` to the next (each step taken
+/// the short way round).
+pub fn turn_about(c: Point, places: &[Point]) -> f64 {
+    let angle = |p: Point| (p.y - c.y).atan2(p.x - c.x);
+    let pi = std::f64::consts::PI;
+    let sum: f64 = places.windows(2).map(|w| (angle(w[1]) - angle(w[0]) + 3.0 * pi).rem_euclid(2.0 * pi) - pi).sum();
+    sum / (places.len().max(2) - 1) as f64
+}
+
+/// The mean of `places` and the unit direction they spread along most (the principal
+/// axis: half the angle of the covariance's `(2 sxy, sxx - syy)`).
+pub fn principal_axis(places: &[Point]) -> (Vec2, Vec2) {
+    let mean = places.iter().fold(Vec2::ZERO, |s, p| s + p.to_vec2()) / places.len().max(1) as f64;
+    let (sxx, sxy, syy) = places.iter().fold((0.0, 0.0, 0.0), |(a, b, c), p| {
+        let d = p.to_vec2() - mean;
+        (a + d.x * d.x, b + d.x * d.y, c + d.y * d.y)
+    });
+    let theta = 0.5 * (2.0 * sxy).atan2(sxx - syy);
+    (mean, Vec2::new(theta.cos(), theta.sin()))
+}
+
 /// The centre of the circle through `places` nearest them all (Kåsa's least squares:
 /// `x^2 + y^2 + D x + E y + F` minimised over the places), or `None` where they lie on
 /// a line.
@@ -79,5 +100,7 @@ mod tests {
         // Turns alike a step bend steadily; alternating ones do not.
         assert!(steady_bend(&move_turns(&arc)).is_some_and(|t| (t - 0.3).abs() < 1e-9));
         assert!(steady_bend(&[0.2, -0.2, 0.2, -0.2]).is_none());
+        assert!((turn_about(c, &arc) - 0.3).abs() < 1e-9);
+        assert!(principal_axis(&line).1.cross(Vec2::new(1.0, 0.0)).abs() < 1e-9);
     }
 }

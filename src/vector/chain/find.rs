@@ -96,19 +96,12 @@ pub fn find_upright(strokes: &[Stroke]) -> Option<Chain> {
     // In order along the row: by their places along its chord's direction (the row's
     // principal axis; an arc bending less than a half turn keeps that order).
     let centre: Vec<Point> = sampled.iter().map(|s| centroid(s)).collect();
-    let mean = centre.iter().fold(Vec2::ZERO, |s, p| s + p.to_vec2()) / n as f64;
-    let (sxx, sxy, syy) = centre.iter().fold((0.0, 0.0, 0.0), |(a, b, c), p| {
-        let d = p.to_vec2() - mean;
-        (a + d.x * d.x, b + d.x * d.y, c + d.y * d.y)
-    });
-    let theta = 0.5 * (2.0 * sxy).atan2(sxx - syy);
-    let axis = Vec2::new(theta.cos(), theta.sin());
+    let (_, axis) = super::bend::principal_axis(&centre);
     let mut order: Vec<usize> = (0..n).collect();
     order.sort_by(|&x, &y| centre[x].to_vec2().dot(axis).total_cmp(&centre[y].to_vec2().dot(axis)));
     let places: Vec<Point> = order.iter().map(|&k| centre[k]).collect();
-    let mut moves: Vec<f64> = places.windows(2).map(|w| w[0].distance(w[1])).collect();
-    let lengths = moves.clone();
-    let median = crate::vector::classify::median(&mut moves);
+    let lengths: Vec<f64> = places.windows(2).map(|w| w[0].distance(w[1])).collect();
+    let median = crate::vector::classify::median(&mut lengths.clone());
     if median <= 0.0 || lengths.iter().any(|&l| l > UPRIGHT_MOVE * median || l < median / UPRIGHT_MOVE) {
         return None;
     }
@@ -119,12 +112,7 @@ pub fn find_upright(strokes: &[Stroke]) -> Option<Chain> {
     // from the circle rather than from each place onto the next, whose scatter in both
     // carried the posts a quarter of a step off the arc round its far side.
     let c = super::bend::circle_through(&places)?;
-    let angle = |p: Point| (p.y - c.y).atan2(p.x - c.x);
-    let turns: f64 = places
-        .windows(2)
-        .map(|w| (angle(w[1]) - angle(w[0]) + 3.0 * std::f64::consts::PI).rem_euclid(TAU) - std::f64::consts::PI)
-        .sum();
-    let turn = turns / (n - 1) as f64;
+    let turn = super::bend::turn_about(c, &places);
     let a = Vec2::new(turn.cos(), turn.sin());
     let step = Similarity { a, b: c.to_vec2() - mul(a, c.to_vec2()) };
     if places.windows(2).any(|w| step.apply(w[0]).distance(w[1]) > PLACE * median) {
@@ -313,15 +301,7 @@ fn search(strokes: &[Stroke], max_turn: f64) -> Option<Found> {
     // alone errs about as much: a petal's angle as its place round the centre).
     let off = |c: Point| chain.iter().all(|&k| centre[k].distance(c) > 0.25 * size[k]);
     if let (true, Some(c)) = ((step.scale() - 1.0).abs() < 0.04, step.fixed_point().filter(|&c| off(c))) {
-        let angle = |p: Point| (p.y - c.y).atan2(p.x - c.x);
-        let placed = chain
-            .windows(2)
-            .map(|w| {
-                (angle(centre[w[1]]) - angle(centre[w[0]]) + 3.0 * std::f64::consts::PI).rem_euclid(TAU)
-                    - std::f64::consts::PI
-            })
-            .sum::<f64>()
-            / pairs.len() as f64;
+        let placed = super::bend::turn_about(c, &chain.iter().map(|&k| centre[k]).collect::<Vec<_>>());
         let turn = 0.5 * (step.turn() + placed);
 
         // (Within 4%, a scale is the hand's: a curve's copies stay its size.)

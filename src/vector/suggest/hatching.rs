@@ -205,12 +205,6 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
     if !spread.is_finite() {
         return None;
     }
-    // The next step: across, the mean gap; along, the mean of the latest few steps';
-    // the turn and the lengthening, each the slope of the hand-drawn lines' own (turn,
-    // log length) against their place in the run, taken only where it is clear of its
-    // standard error (`SURE`): a hand turns each line a few degrees at random, read
-    // from three steps as the fan of a turning contour, and ghosts three steps on went
-    // 0.3 of the gap along their line.
     // Lines whose places bend along them, each step moving further along than the one
     // before (fence posts along an arc), are a row that bends, the sequence's: hatching
     // goes on by its latest steps, and the ghosts went straight on off the arc.
@@ -220,6 +214,12 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
     if clear_slope(&alongs, HAND_ALONG * mean_len) != 0.0 {
         return None;
     }
+    // The next step: across, the mean gap; along, the mean of the latest few steps';
+    // the turn and the lengthening, each the slope of the hand-drawn lines' own (turn,
+    // log length) against their place in the run, taken only where it is clear of its
+    // standard error (`SURE`): a hand turns each line a few degrees at random, read
+    // from three steps as the fan of a turning contour, and ghosts three steps on went
+    // 0.3 of the gap along their line.
     let recent = &steps[steps.len().saturating_sub(MEAN_OF)..];
     let m: f64 = recent.iter().map(|s| s.1).sum();
     let latest_dir = hands.last()?.1.dir;

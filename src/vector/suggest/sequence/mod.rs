@@ -363,16 +363,17 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
     // upright): the shapes step by a translation, which carries nothing round the bend,
     // and the places say how the step turns. Their copies are carried on unturned.
     // (The shapes' turn is a hand's few degrees at random; the places' is the bend's,
-    // alike at every step.)
-    let bend = place_turn(d, &run);
-    let upright = rows
-        && [one.a, two.a].iter().all(|a| a.atan2().abs() < UPRIGHT_TURN)
-        && run.windows(2).all(|w| d.near(w[0], w[1], 0.0).is_some_and(|(t, _)| t.turn().abs() < UPRIGHT_TURN))
-        && bend.is_some_and(|a| (one.a + two.a).atan2().abs() < UPRIGHT * a.atan2().abs());
-    let shapes = match bend.filter(|_| upright) {
-        Some(a) => [a; 2],
-        None => [one.a, two.a],
-    };
+    // alike at every step. Read only where the latest shape steps barely turn: the
+    // places' bend first, the run's every shape step last.)
+    let upright = (rows && [one.a, two.a].iter().all(|a| a.atan2().abs() < UPRIGHT_TURN))
+        .then(|| place_turn(d, &run))
+        .flatten()
+        .filter(|a| (one.a + two.a).atan2().abs() < UPRIGHT * a.atan2().abs())
+        .filter(|_| {
+            run.windows(2).all(|w| d.near(w[0], w[1], 0.0).is_some_and(|(t, _)| t.turn().abs() < UPRIGHT_TURN))
+        });
+    let shapes = upright.map_or([one.a, two.a], |a| [a; 2]);
+    let upright = upright.is_some();
     let Some(Model { orbit, closes, bend_error }) = model(d, &run, step, shapes, lead, upright) else {
         return unfollowed().map(|s| (s, Vec::new()));
     };
