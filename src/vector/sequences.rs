@@ -599,6 +599,26 @@ fn arc(from: Point, to: Point, bulge: f64, rng: &mut Rng, noise: f64) -> Stroke 
 /// the arc. Twelve posts, from four steps before the arc's top; each with its site (the
 /// middle of the post where the hand placed it) and pose.
 pub fn posts(radius: f64, step: f64, upright: bool, jitter: f64, seed: u64) -> (Vec<Stroke>, Vec<(Point, f64)>) {
+    posts_by(radius, step, upright, jitter, PostHand { tilt: 2f64.to_radians(), length: 0.0 }, seed)
+}
+
+/// How loosely a hand draws each fence post: turned `tilt` (radians, a standard
+/// deviation) off its pose, and `length` (a share) longer or shorter.
+#[derive(Clone, Copy, Debug)]
+pub struct PostHand {
+    pub tilt: f64,
+    pub length: f64,
+}
+
+/// `posts` drawn by `hand`.
+pub fn posts_by(
+    radius: f64,
+    step: f64,
+    upright: bool,
+    jitter: f64,
+    hand: PostHand,
+    seed: u64,
+) -> (Vec<Stroke>, Vec<(Point, f64)>) {
     let mut rng = Rng::new(seed * 7919 + radius as u64);
     let centre = Point::new(400.0, 250.0 + radius);
     let mut sites = Vec::new();
@@ -608,9 +628,11 @@ pub fn posts(radius: f64, step: f64, upright: bool, jitter: f64, seed: u64) -> (
             let base = centre + Vec2::new(phi.cos(), phi.sin()) * radius;
             let base = base + Vec2::new(rng.normal(), rng.normal()) * (jitter * step);
             let pose = if upright { -std::f64::consts::FRAC_PI_2 } else { phi + std::f64::consts::PI };
-            let ang = pose + 2f64.to_radians() * rng.normal();
+            let ang = pose + hand.tilt * rng.normal();
             let len = 40.0;
             sites.push((base + Vec2::new(pose.cos(), pose.sin()) * (len / 2.0), pose));
+            // (Drawn from the post's foot: a longer one reaches higher.)
+            let len = if hand.length > 0.0 { len * (1.0 + hand.length * rng.normal()) } else { len };
             let pts = (0..=4)
                 .map(|i| {
                     let t = len * i as f64 / 4.0;

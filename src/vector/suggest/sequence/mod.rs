@@ -71,10 +71,13 @@ const MAX_RUN: usize = 8;
 /// put one 15.6 off at a step of 41; an arc's noise reads up to 0.003).
 const CLEAR_BEND: f64 = 0.012;
 /// Copies keep their pose as the run bends (`upright`) where each of the run's shape
-/// steps turns by less than this (radians, about 6 degrees: a hand's own turn of a
-/// copy) while their places bend steadily (`chain::bend::steady_bend`), and the latest two
-/// together by less than `UPRIGHT` of the places' turn.
-const UPRIGHT_TURN: f64 = 0.1;
+/// steps turns by less than this (radians, about 11 degrees: the difference of two
+/// copies a hand tilted a few degrees each, at random) and on average by less than
+/// `UPRIGHT` of the places' turn, while their places bend steadily
+/// (`chain::bend::steady_bend`); the latest two together too. (At 6 degrees a step,
+/// posts tilted 3 degrees each and 7% off in length got the next post at 8 of 40
+/// calls: one step in a run past it was enough to lose the bend.)
+const UPRIGHT_TURN: f64 = 0.2;
 const UPRIGHT: f64 = 0.4;
 /// Why nothing (more) is proposed while the sequence goes on.
 use super::UNCERTAIN;
@@ -369,8 +372,13 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
         .then(|| place_turn(d, &run))
         .flatten()
         .filter(|a| (one.a + two.a).atan2().abs() < UPRIGHT * a.atan2().abs())
-        .filter(|_| {
-            run.windows(2).all(|w| d.near(w[0], w[1], 0.0).is_some_and(|(t, _)| t.turn().abs() < UPRIGHT_TURN))
+        .filter(|a| {
+            let turns: Option<Vec<f64>> =
+                run.windows(2).map(|w| d.near(w[0], w[1], 0.0).map(|(t, _)| t.turn())).collect();
+            turns.is_some_and(|t| {
+                let mean = t.iter().sum::<f64>() / t.len() as f64;
+                mean.abs() < UPRIGHT * a.atan2().abs() && t.iter().all(|x| x.abs() < UPRIGHT_TURN)
+            })
         });
     let shapes = upright.map_or([one.a, two.a], |a| [a; 2]);
     let upright = upright.is_some();
@@ -546,9 +554,19 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
 fn place_turn(d: &Drawing, run: &[usize]) -> Option<Vec2> {
     let relations = model::place_relations(d, run);
     let turn = crate::vector::chain::bend::steady_bend(&relations.iter().map(|r| r.turn).collect::<Vec<_>>())?;
-    let scale = (relations.iter().map(|r| r.scale.ln()).sum::<f64>() / relations.len() as f64).exp();
+    // (The moves' change of length is the hand's unless it is clear of its standard
+    // error: read from five posts 3% off their places, a scale of 0.81 made a spiral.)
+    let logs: Vec<f64> = relations.iter().map(|r| r.scale.ln()).collect();
+    let n = logs.len() as f64;
+    let mean = logs.iter().sum::<f64>() / n;
+    let se = (logs.iter().map(|l| (l - mean).powi(2)).sum::<f64>() / (n - 1.0).max(1.0) / n).sqrt();
+    let scale = if n >= 3.0 && mean.abs() > SCALE_SURE * se { mean.exp() } else { 1.0 };
     Some(Vec2::new(turn.cos(), turn.sin()) * scale)
 }
+
+/// Upright copies' moves change length by a scale where its mean log passes this many
+/// of its standard errors (and is read from at least three moves' changes).
+const SCALE_SURE: f64 = 3.0;
 
 /// `points` averaged over five along the path (fewer at an open path's ends; round a
 /// closed loop, across its closing).
