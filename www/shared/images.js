@@ -1,5 +1,5 @@
 // Image input for the raster tabs: built-in photographs, opened or dropped files, and
-// keeping what the person opened across reloads (a PNG Blob in IndexedDB).
+// keeping what the person opened across reloads (the file's Blob in IndexedDB).
 import { forget, load } from './storage.js';
 import { del, get, set } from './store.js';
 
@@ -34,11 +34,12 @@ export async function fileBitmap(file) {
   }
 }
 
-/** Keeps `canvas`'s picture under `key` (a PNG Blob in IndexedDB); false when the
- *  browser will not keep it. */
-export async function keepImage(key, name, canvas) {
+/** Keeps the file the person opened under `key` (its Blob, as it is, in IndexedDB:
+ *  written at once, so a reload right after finds it; re-encoding the canvas first
+ *  took about a second, and a reload within it lost the picture 3-4 times in 12);
+ *  false when the browser will not keep it. */
+export async function keepImage(key, name, blob) {
   try {
-    const blob = await new Promise((ok, fail) => canvas.toBlob((b) => (b ? ok(b) : fail(new Error('no PNG'))), 'image/png'));
     await set(key, { name, blob });
     forget(key);
     return true;
@@ -112,7 +113,7 @@ export function imagePicker({ select, file, drop, canvas, textures, fallback, ma
     select.value = '';
     settings.texture = '';
     save();
-    const kept = await keepImage(key, f.name, canvas);
+    const kept = await keepImage(key, f.name, f);
     say(`Loaded ${f.name}.${note ? ` ${note}` : ''}${kept ? '' : ' (This browser would not keep it: it will not survive a reload.)'}`, kept && !note ? '' : 'warn');
   }
   select.addEventListener('change', () => {

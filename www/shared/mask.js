@@ -22,6 +22,9 @@ export function maskPainter({ overlay, brush, erase, clear, key, onChange = () =
     return on;
   };
   const writer = saver(key, () => ({ width: overlay.width, height: overlay.height, bits: bits() }), { onError });
+  // (A stroke's write waits for the task to end: a reload right after it must find it.)
+  addEventListener('pagehide', () => writer.flush());
+  document.addEventListener('visibilitychange', () => { if (document.hidden) writer.flush(); });
 
   // Each dab replaces what is under it by the ink (cut out, then inked), so strokes
   // over strokes do not darken: the mask is a set of pixels, not a shade.
@@ -114,11 +117,19 @@ export function maskPainter({ overlay, brush, erase, clear, key, onChange = () =
      *  when `keepPainted`. */
     resize(width, height, keepPainted = false) {
       if (overlay.width === width && overlay.height === height) return;
+      // (A mask painted over another photograph is dropped with it, and forgotten: kept,
+      // it came back stretched over the new one after a reload, and the page still
+      // said "painted" over an empty mask.)
+      const dropped = !keepPainted && bits().includes(1);
       const old = keepPainted ? new OffscreenCanvas(overlay.width, overlay.height) : null;
       old?.getContext('2d').drawImage(overlay, 0, 0);
       overlay.width = width;
       overlay.height = height;
       if (old) ctx.drawImage(old, 0, 0, width, height);
+      if (dropped) {
+        del(key).catch(() => {});
+        onChange();
+      }
     },
     /** Reads back the mask kept under `key`, drawn at this size; false when none. */
     async restore() {

@@ -12,6 +12,19 @@ const dataUrl = (blob) => new Promise((ok, fail) => {
   r.readAsDataURL(blob);
 });
 
+// Typed arrays (a painted mask's pixels) as base64 in JSON: as they are, JSON wrote them
+// as objects of numbered keys, which came back as plain objects, and the mask was lost.
+const bytesOut = (_, v) => (v instanceof Uint8Array || v instanceof Uint8ClampedArray)
+  ? { $bytes: btoa(Array.from(v, (b) => String.fromCharCode(b)).join('')), clamped: v instanceof Uint8ClampedArray }
+  : v;
+const bytesIn = (_, v) => {
+  if (typeof v?.$bytes !== 'string') return v;
+  const raw = atob(v.$bytes);
+  const out = v.clamped ? new Uint8ClampedArray(raw.length) : new Uint8Array(raw.length);
+  for (let i = 0; i < raw.length; i++) out[i] = raw.charCodeAt(i);
+  return out;
+};
+
 /** The session as a JSON Blob. `current`: values newer than what is kept (the drawing). */
 export async function exportSession(current = {}) {
   const kept = {};
@@ -27,14 +40,14 @@ export async function exportSession(current = {}) {
     const k = localStorage.key(i);
     if (k.startsWith('patternsynth.')) settings[k] = localStorage.getItem(k);
   }
-  return new Blob([JSON.stringify({ format: FORMAT, version: 1, saved: new Date().toISOString(), kept, settings })], { type: 'application/json' });
+  return new Blob([JSON.stringify({ format: FORMAT, version: 1, saved: new Date().toISOString(), kept, settings }, bytesOut)], { type: 'application/json' });
 }
 
 /** Puts a session file's contents back (the page then reloads to show them). */
 export async function importSession(file) {
   let session;
   try {
-    session = JSON.parse(await file.text());
+    session = JSON.parse(await file.text(), bytesIn);
   } catch {
     throw new Error(`${file.name} is not a patternsynth session (not JSON); nothing was changed.`);
   }

@@ -109,7 +109,7 @@ export function mountBlend(root, client) {
     settings[key] = '';
     save();
     // Kept across reloads like everything else the person made.
-    const kept = await keepImage(`${exemplarKey}.${key}`, file.name, slots[key].canvas);
+    const kept = await keepImage(`${exemplarKey}.${key}`, file.name, file);
     // The scaling note stays in the message: it is what the person most needs to know.
     say(`Loaded ${file.name} as texture ${key.toUpperCase()}.${note ? ` ${note}` : ''}${kept ? '' : ' (This browser would not keep it: it will not survive a reload.)'}`, kept && !note ? '' : 'warn');
   }
@@ -206,8 +206,12 @@ export function mountBlend(root, client) {
   const endPaint = () => {
     if (!painting) return;
     painting = false;
-    // A Blob (PNG), not a data URL: IndexedDB keeps it as it is.
-    mask.toBlob((blob) => blob && store(maskKey, blob), 'image/png');
+    // Its grey levels, read now and written at once (a PNG from toBlob came a second
+    // later, and a reload within it lost the mask 5 times in 5).
+    const { data } = mctx.getImageData(0, 0, mask.width, mask.height);
+    const grey = new Uint8Array(mask.width * mask.height);
+    for (let i = 0; i < grey.length; i++) grey[i] = data[4 * i];
+    store(maskKey, { width: mask.width, height: mask.height, grey });
     save();
   };
   mask.addEventListener('pointerup', endPaint);
@@ -278,8 +282,16 @@ export function mountBlend(root, client) {
   showMode();
   showAngle();
   const savedMask = load(maskKey, null);
-  if (settings.transition === 'mask' && savedMask) {
-    // (A data URL from an older page, or the Blob kept now.)
+  if (settings.transition === 'mask' && savedMask?.grey) {
+    const { width, height, grey } = savedMask;
+    const img = new ImageData(width, height);
+    for (let i = 0; i < grey.length; i++) {
+      img.data[4 * i] = img.data[4 * i + 1] = img.data[4 * i + 2] = grey[i];
+      img.data[4 * i + 3] = 255;
+    }
+    createImageBitmap(img).then((bitmap) => mctx.drawImage(bitmap, 0, 0, mask.width, mask.height), drawShape);
+  } else if (settings.transition === 'mask' && savedMask) {
+    // (A data URL from an older page, or the PNG Blob an earlier one kept.)
     const blob = typeof savedMask === 'string' ? fetch(savedMask).then((r) => r.blob()) : Promise.resolve(savedMask);
     blob.then(createImageBitmap).then((bitmap) => mctx.drawImage(bitmap, 0, 0, mask.width, mask.height), drawShape);
   } else drawShape();
