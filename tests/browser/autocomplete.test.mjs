@@ -152,3 +152,18 @@ test('the button accepts, and "Fill the canvas" adds the whole field as one step
   await page.click('#undo');
   assert.equal(await count(), before);
 });
+
+test('once focus has left the canvas, Tab back onto it and Tab again moves on', async () => {
+  await page.click('#clear');
+  for (let k = 0; k < 3; k++) await cross(100 + k * SPACING, 120, k);
+  await settled();
+  await waitGhosts();
+  await page.keyboard.press('Shift+Tab');
+  assert.notEqual(await page.evaluate(() => document.activeElement.id), 'draw');
+  await page.keyboard.press('Tab');
+  assert.equal(await page.evaluate(() => document.activeElement.id), 'draw');
+  // (It accepted the ghosts left from the drawing: 6 strokes became 12.)
+  await page.keyboard.press('Tab');
+  assert.notEqual(await page.evaluate(() => document.activeElement.id), 'draw');
+  assert.equal(await count(), 6);
+});

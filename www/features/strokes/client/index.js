@@ -119,6 +119,9 @@ export function mountStrokes(root, client) {
     canvas.focus();
     tabAccepts = true;
   });
+  // (Once focus has left the canvas, Tab back onto it and Tab again moves on: it
+  // accepted the ghosts left from the drawing, 4 strokes became 7.)
+  canvas.addEventListener('blur', () => { tabAccepts = false; });
   $('undo').addEventListener('click', () => drawing.undo());
   $('redo').addEventListener('click', () => drawing.redo());
   $('clear').addEventListener('click', () => drawing.set([]));
