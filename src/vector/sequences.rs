@@ -631,7 +631,8 @@ pub fn posts_by(
             let ang = pose + hand.tilt * rng.normal();
             let len = 40.0;
             sites.push((base + Vec2::new(pose.cos(), pose.sin()) * (len / 2.0), pose));
-            // (Drawn from the post's foot: a longer one reaches higher.)
+            // (Drawn from the post's foot: a longer one reaches higher. No draw for an
+            // exact length, so that `posts` draws the same posts as before `PostHand`.)
             let len = if hand.length > 0.0 { len * (1.0 + hand.length * rng.normal()) } else { len };
             let pts = (0..=4)
                 .map(|i| {

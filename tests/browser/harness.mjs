@@ -36,6 +36,16 @@ export const settled = (page) => page.waitForFunction(() => document.querySelect
 /** The strokes on the canvas, as the page counts them. */
 export const strokeCount = async (page) => Number((await page.textContent('#stroke-count')).split(' ')[0]);
 
+/** Waits until the page counts more strokes than `n`. */
+export const strokesPast = (page, n) => page.waitForFunction((n) => Number(document.querySelector('#stroke-count').textContent.split(' ')[0]) > n, n);
+
+/** Accepts the ghosts with Tab (just after drawing) and waits until they are strokes. */
+export async function acceptWithTab(page) {
+  const before = await strokeCount(page);
+  await page.keyboard.press('Tab');
+  await strokesPast(page, before);
+}
+
 /** Draws the polyline `pts` (in the canvas's 800 x 500 units) with the mouse, `steps`
  *  pointer moves between points. */
 export async function drawPolyline(page, pts, steps = 3) {

@@ -7,7 +7,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync } from 'node:fs';
-import { drawPolyline, openEmptyCanvas, settled, strokeCount } from './harness.mjs';
+import { acceptWithTab, drawPolyline, openEmptyCanvas, settled, strokeCount } from './harness.mjs';
 
 /** The lines' direction (70 degrees down from the x axis) and the normal across them. */
 const DIR = [Math.cos((70 * Math.PI) / 180), Math.sin((70 * Math.PI) / 180)];
@@ -35,9 +35,7 @@ test('hatching drawn by hand with the mouse: ghosts go on at its spacing, Tab ac
     const status = await page.textContent('#suggest-status');
     assert.match(status, /^[1-9]\d* suggested stroke/, status);
     await page.screenshot({ path: 'out/hatching-ghosts.png' });
-    const before = await strokeCount(page);
-    await page.keyboard.press('Tab');
-    await page.waitForFunction((n) => Number(document.querySelector('#stroke-count').textContent.split(' ')[0]) > n, before);
+    await acceptWithTab(page);
     await settled(page);
     await page.screenshot({ path: 'out/hatching-accepted.png' });
     const strokes = await page.evaluate(() => window.playground.drawing().strokes.map((s) => s.points));

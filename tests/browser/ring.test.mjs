@@ -53,8 +53,6 @@ async function drawArc(page, theta, bulge, wobble, phase = 0) {
   await page.mouse.up();
 }
 
-/** Waits for the ghosts' request to settle. */
-
 /** Accepts ghosts (Tab just after drawing, then Enter on the canvas) until none are
  *  left, and checks that eight petals lie on the ring (each centre about 55 units from
  *  (400, 250)). */

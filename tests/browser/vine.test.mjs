@@ -6,7 +6,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync } from 'node:fs';
-import { drawPolyline, openEmptyCanvas, settled, strokeCount } from './harness.mjs';
+import { acceptWithTab, drawPolyline, openEmptyCanvas, settled, strokeCount, strokesPast } from './harness.mjs';
 
 /** The stem: a sine across the 800 x 500 canvas, from x = 60 to 740. */
 const stem = (x) => [x, 250 + 60 * Math.sin((x - 400) / 70)];
@@ -63,14 +63,12 @@ test('a stem and three leaves drawn with the mouse: ghosts follow the stem to it
     assert.match(status, /^[1-9]\d* suggested stroke/, status);
     await page.screenshot({ path: 'out/vine-ghosts.png' });
     // Tab (just after drawing) accepts the ghosts.
-    const before = await strokeCount(page);
-    await page.keyboard.press('Tab');
-    await page.waitForFunction((n) => Number(document.querySelector('#stroke-count').textContent.split(' ')[0]) > n, before);
+    await acceptWithTab(page);
     await settled(page);
     // "Fill the canvas" adds every leaf the stem still carries.
     const accepted = await strokeCount(page);
     await page.click('#fill-canvas');
-    await page.waitForFunction((n) => Number(document.querySelector('#stroke-count').textContent.split(' ')[0]) > n, accepted);
+    await strokesPast(page, accepted);
     await settled(page);
     await page.screenshot({ path: 'out/vine-accepted.png' });
     const leaves = (await page.evaluate(() => window.playground.drawing().strokes.map((s) => s.points))).slice(1);
@@ -125,7 +123,7 @@ test('on a phone, leaves round a circle drawn with a finger (begun between two l
     const before = await strokeCount(page);
     const accept = await page.locator('#accept-ghosts').boundingBox();
     await page.touchscreen.tap(accept.x + accept.width / 2, accept.y + accept.height / 2);
-    await page.waitForFunction((n) => Number(document.querySelector('#stroke-count').textContent.split(' ')[0]) > n, before);
+    await strokesPast(page, before);
     await settled(page);
     await page.screenshot({ path: 'out/vine-phone-accepted.png', fullPage: true });
     const leaves = (await page.evaluate(() => window.playground.drawing().strokes.map((s) => s.points))).slice(5);

@@ -87,9 +87,9 @@ export function onDropFile(zone, handle) {
  * One picture input of a raster tab: a select of built-in photographs, an Open… file
  * input and a drop zone; a picture the person opened is kept under `key` and comes
  * back after a reload, a built-in one is named in `settings.texture` ('' for an opened
- * one). `show(rgba)` puts it on `canvas` (what is kept); `say(text, kind)` reports.
+ * one). `show(rgba)` puts it on the page; `say(text, kind)` reports.
  */
-export function imagePicker({ select, file, drop, canvas, textures, fallback, maxSide, key, settings, save, say, show, noun = 'image' }) {
+export function imagePicker({ select, file, drop, textures, fallback, maxSide, key, settings, save, say, show, noun = 'image' }) {
   select.append(new Option('Built-in…', ''), ...textures.map((t) => new Option(t, t)));
   /** Shows a bitmap, scaled down to the cap; returns the note saying so (empty when it fits). */
   function use(bitmap, name) {

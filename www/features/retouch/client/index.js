@@ -43,7 +43,7 @@ export function mountRetouch(root, client) {
     $('ret-source-info').textContent = `${rgba.width}×${rgba.height}`;
   }
   const picker = imagePicker({
-    select: $('ret-texture'), file: $('ret-file'), drop: $('ret-drop'), canvas: source, textures, fallback: defaultOptions.texture,
+    select: $('ret-texture'), file: $('ret-file'), drop: $('ret-drop'), textures, fallback: defaultOptions.texture,
     maxSide: maxInputSide, key: imageKey, settings, save, say, show, noun: 'photograph',
   });
 

@@ -31,7 +31,7 @@ export function mountSeamless(root, client) {
     $('seam-source-info').textContent = `${rgba.width}×${rgba.height}`;
   }
   const picker = imagePicker({
-    select: $('seam-texture'), file: $('seam-file'), drop: $('seam-drop'), canvas: $('seam-source'), textures,
+    select: $('seam-texture'), file: $('seam-file'), drop: $('seam-drop'), textures,
     fallback: defaultOptions.texture, maxSide: maxInputSide, key: imageKey, settings, save, say, show, noun: 'texture',
   });
 
