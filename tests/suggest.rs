@@ -1019,6 +1019,60 @@ fn fence_posts_along_an_arc_get_the_next_post() {
     }
 }
 
+/// A fence seen from the side, drawn post, rail, post, rail: the rails run from post to
+/// post along the arc (turning with it), the posts stay upright. Ghost posts must stay
+/// upright too (a helper's trial: carried with the rail, which the sequence follows,
+/// 291 of 400 calls had a post leaning by the arc's turn). Arcs of radius 200 (11.5
+/// degrees a post) at 1% and 3%, seeds 1-4, after 4-7 posts and their rails.
+#[test]
+fn a_fence_of_posts_and_rails_keeps_its_ghost_posts_upright() {
+    use patternsynth::vector::sequences::{posts_by, PostHand};
+    let hand = PostHand { tilt: 2f64.to_radians(), length: 0.0 };
+    let (mut h, mut leaning, mut r) = (0, 0, 0);
+    for jitter in [0.01, 0.03] {
+        for seed in 1..=4u64 {
+            let (posts, sites) = posts_by(200.0, 40.0, true, jitter, hand, seed);
+            // (A rail from 28 up one post, where the hand drew it, to 28 up the next.)
+            let at = |k: usize, up: f64| {
+                let p = posts[k].points[0];
+                kurbo::Point::new(p[0], p[1] - up)
+            };
+            let mut strokes = Vec::new();
+            let mut ends = Vec::new();
+            for (k, post) in posts.iter().enumerate().take(11) {
+                strokes.push(post.clone());
+                let (a, b) = (at(k, 28.0), at(k + 1, 28.0));
+                strokes.push(Stroke::new(
+                    (0..=4)
+                        .map(|i| {
+                            let q = a.lerp(b, i as f64 / 4.0);
+                            [q.x, q.y]
+                        })
+                        .collect(),
+                    3.0,
+                    None,
+                ));
+                ends.push(strokes.len());
+            }
+            for drawn in 4..=7 {
+                let s = suggest_strokes(&strokes[..ends[drawn - 1]], &SuggestOptions::default()).unwrap();
+                // Ghost posts: those near a post's middle still to draw.
+                let post_at = |g: &Stroke| (drawn..12).find(|&k| g.reference_point().distance(sites[k].0) < 0.3 * 40.0);
+                let upright = |g: &Stroke| {
+                    let (p, q) = (g.points[0], g.points[g.points.len() - 1]);
+                    let dir = kurbo::Vec2::new(q[0] - p[0], q[1] - p[1]).normalize();
+                    dir.x.abs() < 8f64.to_radians().sin()
+                };
+                h += usize::from(s.strokes.iter().any(|g| post_at(g) == Some(drawn) && upright(g)));
+                leaning += usize::from(s.strokes.iter().any(|g| post_at(g).is_some() && !upright(g)));
+                r += 1;
+            }
+        }
+    }
+    eprintln!("posts and rails: the next post upright in {h} of {r}, a ghost post leaning in {leaning}");
+    assert!(h >= r / 2 && leaning == 0, "the next post upright in {h} of {r}, a ghost post leaning in {leaning}");
+}
+
 /// Upright posts drawn by a looser hand (a new user's trial: 2 of 18 got the next post;
 /// 8 of 40 here before the shape steps' turn was judged by their mean):
 /// each tilted 3 degrees at random and 7% longer or shorter, 3% of the step off its

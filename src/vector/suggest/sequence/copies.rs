@@ -142,6 +142,45 @@ pub(super) fn companions(d: &Drawing, run: &[usize], h: usize, step: f64, a: Vec
         .collect()
 }
 
+/// Whether part `c` of the copy that ends with `run[h]` turns from copy to copy by the
+/// orbit's `turn` a step, where the stroke followed does (`frame_turns`) or keeps its
+/// pose: the part's own turn from its like in the copy before (the one the step `a`
+/// carries nearest it) decides only where it is within `UPRIGHT` of the turn of the
+/// other way (none, or `turn`) and the step turns by at least `PART_TURN`; else the part
+/// goes as the stroke followed. A fence seen from the side, drawn as a post and a rail:
+/// the rail turns with the arc, the post stays upright, and carried with the rail each
+/// ghost post leaned by the arc's turn.
+pub(super) fn part_turns(
+    d: &Drawing,
+    run: &[usize],
+    h: usize,
+    c: usize,
+    a: Vec2,
+    turn: f64,
+    frame_turns: bool,
+) -> bool {
+    let (Some(&before), Some(&prev)) = (h.checked_sub(2).map(|x| &run[x]), h.checked_sub(1).map(|x| &run[x])) else {
+        return frame_turns;
+    };
+    if turn.abs() < PART_TURN {
+        return frame_turns;
+    }
+    let orbit = Similarity { a, b: d.z(run[h]).to_vec2() - crate::vector::similarity::mul(a, d.z(prev).to_vec2()) };
+    let centre = |i: usize| d.strokes[i].reference_point();
+    let like = (before + 1..prev).filter(|&o| d.alike(o, c)).min_by(|&x, &y| {
+        let off = |o: usize| orbit.carry(&d.strokes[o]).reference_point().distance(centre(c));
+        off(x).total_cmp(&off(y))
+    });
+    let Some((own, _)) = like.and_then(|o| d.near(o, c, turn)) else { return frame_turns };
+    let other = if frame_turns { 0.0 } else { turn };
+    let otherwise = (own.turn() - other).abs() < super::UPRIGHT * turn.abs();
+    frame_turns != otherwise
+}
+
+/// Parts are told apart by their turn only where the stroke followed turns by at least
+/// this much a step (radians, about 6 degrees: a hand's tilt of a copy either way).
+const PART_TURN: f64 = 0.1;
+
 /// Whether the latest copy's `parts` (see `companions`) were drawn after the stroke
 /// followed in their copy, and so belong to the copy before (a leaf, then its dot).
 /// `turn(t)` is the turn from the latest copy to copy `t` of the `run`. Each part,

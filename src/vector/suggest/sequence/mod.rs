@@ -21,7 +21,8 @@
 //!
 //! A motif of several strokes (a petal drawn as two arcs, a leaf and its stalk) is
 //! followed by one of its strokes, its largest, and its latest copy's other strokes are
-//! carried on with it (`copies`).
+//! carried on with it (`copies`), each turned as its own copies turn: with the orbit, or
+//! not at all (a fence's rail turns with the arc, its post stays upright).
 //!
 //! Copies that keep their pose while their places bend (fence posts along an arc,
 //! upright; `upright` in `follow`) step by a translation, which carries nothing round
@@ -35,7 +36,7 @@
 mod copies;
 mod model;
 
-use self::copies::{begin, companions, trailing, Begun, MAX_STRIDE};
+use self::copies::{begin, companions, part_turns, trailing, Begun, MAX_STRIDE};
 use self::model::{backtest, bend_change, model, Model};
 use super::drift::drift;
 use super::{Suggestions, TOLERANCE};
@@ -78,7 +79,7 @@ const CLEAR_BEND: f64 = 0.012;
 /// posts tilted 3 degrees each and 7% off in length got the next post at 8 of 40
 /// calls: one step in a run past it was enough to lose the bend.)
 const UPRIGHT_TURN: f64 = 0.2;
-const UPRIGHT: f64 = 0.4;
+pub(super) const UPRIGHT: f64 = 0.4;
 /// Why nothing (more) is proposed while the sequence goes on.
 use super::UNCERTAIN;
 const RING_COMPLETE: &str = "The ring is complete: draw the next one.";
@@ -411,6 +412,15 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
     // within half the step or half the nearest two of the copy's strokes lie apart.
     let h = run.iter().position(|&i| i == last)?;
     let parts = companions(d, &run, h, step, turn_of(h as i64 - 1, h as i64));
+    // Each part turns as its own copies do: with the orbit, or not at all (a fence's
+    // rail turns with the arc while its post stays upright), whichever way the stroke
+    // followed goes.
+    let step_turn = orbit.turn(h as i64 - 1, h as i64).atan2();
+    let frame_turns = !upright;
+    let own_turns: Vec<bool> = parts
+        .iter()
+        .map(|&c| part_turns(d, &run, h, c, turn_of(h as i64 - 1, h as i64), step_turn, frame_turns))
+        .collect();
     // (A copy's strokes may share a centre, a leaf's two halves and its midrib: a ghost
     // is on a drawn stroke that it carries onto about unturned, unscaled and unmoved.)
     let drawn = |g: &Stroke, here: f64| {
@@ -440,9 +450,20 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
     let parts_at = |t: i64, here: f64| -> Vec<(Stroke, usize)> {
         let turn = turn_of(h as i64, t);
         let to = Similarity { a: turn, b: orbit.at(t).to_vec2() - mul(turn, d.z(last).to_vec2()) };
+        // (A part that turns otherwise than the frame goes where the frame carries its
+        // place, turned its own way about it.)
+        let carry = |c: usize, turns: bool| {
+            if turns == frame_turns {
+                return to.carry(&strokes[c]);
+            }
+            let own = if turns { orbit.turn(h as i64, t) } else { Vec2::new(1.0, 0.0) };
+            let p = strokes[c].reference_point();
+            Similarity { a: own, b: to.apply(p).to_vec2() - mul(own, p.to_vec2()) }.carry(&strokes[c])
+        };
         parts
             .iter()
-            .map(|&c| (to.carry(&strokes[c]), c))
+            .zip(&own_turns)
+            .map(|(&c, &turns)| (carry(c, turns), c))
             .filter(|(g, _)| {
                 let p = g.reference_point();
                 region.is_none_or(|r| r.contains(p)) && !drawn(g, here)
