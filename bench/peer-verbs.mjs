@@ -376,19 +376,29 @@ if (!timeOnly) {
 }
 
 // ---------------------------------------------------------------- contact sheets
+// (In pages of at most 4096 pixels high, the largest PNG the package encodes:
+// sheet-<verb>.png, then sheet-<verb>-2.png and on.)
 if (!timeOnly) for (const v of VERBS) {
-  const rows = sheets[v]; if (!rows.length) continue;
-  const gap = 6, colW = [], rowH = rows.map((r) => Math.max(...r.filter(Boolean).map((i) => i.height)));
-  for (const r of rows) r.forEach((img, c) => { colW[c] = Math.max(colW[c] ?? 0, img?.width ?? 0); });
-  const Wt = colW.reduce((a, b) => a + b + gap, gap), Ht = rowH.reduce((a, b) => a + b + gap, gap);
-  const sheet = make(Wt, Ht, () => [128, 128, 128, 255]);
-  let y0 = gap;
-  rows.forEach((r, ri) => {
-    let x0 = gap;
-    r.forEach((img, c) => { if (img) for (let y = 0; y < img.height; y++) for (let x = 0; x < img.width; x++) sheet.data.set(px(img, x, y), 4 * ((y0 + y) * Wt + x0 + x)); x0 += colW[c] + gap; });
-    y0 += rowH[ri] + gap;
+  const all = sheets[v]; if (!all.length) continue;
+  const gap = 6, colW = [], height = (r) => Math.max(...r.filter(Boolean).map((i) => i.height));
+  for (const r of all) r.forEach((img, c) => { colW[c] = Math.max(colW[c] ?? 0, img?.width ?? 0); });
+  const pages = [[]]; let used = gap;
+  for (const r of all) {
+    if (pages.at(-1).length && used + height(r) + gap > 4096) { pages.push([]); used = gap; }
+    pages.at(-1).push(r); used += height(r) + gap;
+  }
+  pages.forEach((rows, p) => {
+    const rowH = rows.map(height);
+    const Wt = colW.reduce((a, b) => a + b + gap, gap), Ht = rowH.reduce((a, b) => a + b + gap, gap);
+    const sheet = make(Wt, Ht, () => [128, 128, 128, 255]);
+    let y0 = gap;
+    rows.forEach((r, ri) => {
+      let x0 = gap;
+      r.forEach((img, c) => { if (img) for (let y = 0; y < img.height; y++) for (let x = 0; x < img.width; x++) sheet.data.set(px(img, x, y), 4 * ((y0 + y) * Wt + x0 + x)); x0 += colW[c] + gap; });
+      y0 += rowH[ri] + gap;
+    });
+    save(join(outDir, `sheet-${v}${p ? `-${p + 1}` : ''}.png`), sheet);
   });
-  save(join(outDir, `sheet-${v}.png`), sheet);
 }
 
 // ---------------------------------------------------------------- tables

@@ -80,11 +80,21 @@ fn fill_energy(out: &Rgba, img: &Rgba, hole: &[bool]) -> f64 {
                 }
                 best = best.min(acc);
             }
-            total += best / 147.0;
+            // MEAN_RMS=1: each window's RMS averaged (bench/peer-verbs.mjs's patch energy),
+            // rather than the RMS over every window.
+            total += if mean_rms() { (best / 147.0).sqrt() } else { best / 147.0 };
             n += 1;
         }
     }
-    (total / n as f64).sqrt()
+    if mean_rms() {
+        total / n as f64
+    } else {
+        (total / n as f64).sqrt()
+    }
+}
+
+fn mean_rms() -> bool {
+    std::env::var("MEAN_RMS").is_ok_and(|v| v == "1")
 }
 
 /// Share of the hole's pixels whose colour, in steps of 8 levels a channel, is not
@@ -111,6 +121,9 @@ fn foreign(out: &Rgba, img: &Rgba, hole: &[bool]) -> f64 {
 
 fn main() {
     let mut all = Vec::new();
+    // SEEDS=n: seeds 1-n (3 by default); the per-photograph figures are their medians.
+    let seeds: u64 = std::env::var("SEEDS").ok().and_then(|s| s.parse().ok()).unwrap_or(3);
+    let mut logs = (0.0f64, 0.0f64, 0usize);
     for arg in std::env::args().skip(1) {
         let (photo, mask) = arg.split_once(':').expect("photo.png:hole.png");
         let img = decode_image(&std::fs::read(photo).unwrap()).unwrap();
@@ -120,14 +133,27 @@ fn main() {
         let mut energies = Vec::new();
         let mut times = Vec::new();
         let mut aliens = Vec::new();
-        for seed in 1..=3 {
+        for seed in 1..=seeds {
             let t = std::time::Instant::now();
-            let out =
-                inpaint_texture(&img, &hole, &InpaintOptions { seed, ..Default::default() }, &mut Silent).unwrap();
+            // OUTPUTS=dir/{}.tag: measure the fills saved there as NAME.tag.sSEED.png (another
+            // program's, the peer's) rather than making ours.
+            let out = match std::env::var("OUTPUTS") {
+                Ok(pattern) => {
+                    let name = std::path::Path::new(photo).file_stem().unwrap().to_string_lossy().to_string();
+                    let path = format!("{}.s{seed}.png", pattern.replace("{}", &name));
+                    decode_image(&std::fs::read(path).unwrap()).unwrap()
+                }
+                Err(_) => {
+                    inpaint_texture(&img, &hole, &InpaintOptions { seed, ..Default::default() }, &mut Silent).unwrap()
+                }
+            };
             times.push(t.elapsed().as_secs_f64() * 1e3);
             ratios.push(edge_ratio(&out, &hole, 8));
             energies.push(fill_energy(&out, &img, &hole));
             aliens.push(foreign(&out, &img, &hole));
+            logs.0 += ratios.last().unwrap().ln();
+            logs.1 += energies.last().unwrap().ln();
+            logs.2 += 1;
             if seed == 1 {
                 let name = std::path::Path::new(photo).file_stem().unwrap().to_string_lossy().to_string();
                 std::fs::create_dir_all("out/fill").unwrap();
@@ -144,15 +170,15 @@ fn main() {
         aliens.sort_by(f64::total_cmp);
         println!(
             "{photo}: edge ratio {:.2} (photo's own {:.2}), fill energy {:.2} (photo's own {:.2}), foreign colours {:.2}% (photo's own {:.2}%), {:.0} ms",
-            ratios[1],
+            ratios[ratios.len() / 2],
             edge_ratio(&img, &hole, 8),
-            energies[1],
+            energies[energies.len() / 2],
             fill_energy(&img, &img, &hole),
-            100.0 * aliens[1],
+            100.0 * aliens[aliens.len() / 2],
             100.0 * foreign(&img, &img, &hole),
-            times[1]
+            times[times.len() / 2]
         );
-        all.push((ratios[1], energies[1], aliens[1]));
+        all.push((ratios[ratios.len() / 2], energies[energies.len() / 2], aliens[aliens.len() / 2]));
     }
     let median = |k: usize| {
         let mut v: Vec<f64> = all.iter().map(|a| [a.0, a.1, a.2][k]).collect();
@@ -164,5 +190,10 @@ fn main() {
         median(0),
         median(1),
         100.0 * median(2)
+    );
+    println!(
+        "geometric means over photographs and seeds: edge ratio {:.3}, fill energy {:.3}",
+        (logs.0 / logs.2 as f64).exp(),
+        (logs.1 / logs.2 as f64).exp()
     );
 }

@@ -38,6 +38,7 @@ mod reuse;
 
 pub use job::Job;
 pub(crate) use pass::{Map, Scratch};
+pub use pinned::REMATCH_ROUNDS;
 pub use reuse::Uses;
 
 use super::image::{Image, Rgba};
