@@ -38,9 +38,9 @@ pub const FILL_NEIGHBOURHOOD: usize = 11;
 pub const FILL_DETAIL_LEVELS: usize = 1;
 
 /// The share of the colour step left at a fill's edge that its last heal takes away,
-/// once the fill has been matched again to healed colours (`Fill::rematch`). Healed
-/// whole, the edge came out smoother than the photograph (twelve photographs, holes of
-/// 9-10%, seeds 1-5, examples/inpaint_edge: the step across it 0.95 times the steps
+/// once the fill has been matched again to healed colours (`synthesis::REMATCH_ROUNDS`).
+/// Healed whole, the edge came out smoother than the photograph (twelve photographs,
+/// holes of 8.5-10.5%, seeds 1-5, examples/inpaint_edge: the step across it 0.95 times the steps
 /// around, the photograph's own content 0.96) and the fill's patch energy was 6.88;
 /// at 0.75, 0.99 and 6.68; at 0.5, 1.05 and 6.47 (texture-synthesis 0.8.3: 1.32 and
 /// 7.61). The same four photographs lit by a ramp from 45% to 135% across, filled where

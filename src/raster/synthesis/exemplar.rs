@@ -82,6 +82,16 @@ impl Plane {
         Image { width: self.width, height: self.height, data: self.data.iter().map(|p| [p[0], p[1], p[2]]).collect() }
     }
 
+    /// The continuation of a neighbour at offset (dx, dy) that copies `pos`: the position
+    /// (dx, dy) before it, where that lies in the plane and may be copied.
+    pub fn continuation(&self, pos: u32, dx: isize, dy: isize) -> Option<u32> {
+        let (x, y) = self.xy(pos);
+        let (cx, cy) = (x - dx, y - dy);
+        let inside = (0..self.width as isize).contains(&cx) && (0..self.height as isize).contains(&cy);
+        let c = inside.then(|| (cy as usize * self.width + cx as usize) as u32)?;
+        self.allows(c).then_some(c)
+    }
+
     /// (x, y) of position `pos`.
     #[inline(always)]
     pub fn xy(&self, pos: u32) -> (isize, isize) {
