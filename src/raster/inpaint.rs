@@ -100,6 +100,7 @@ pub fn inpaint_texture(
         levels: opts.levels,
         neighbourhood: opts.neighbourhood,
         detail_levels: FILL_DETAIL_LEVELS,
+        rematch: true,
         kept_out: if opts.sample_mask.is_some() { "The mask and the sample mask leave" } else { "The mask leaves" },
     };
     fill.run(image, progress)
@@ -117,6 +118,12 @@ pub struct Fill {
     pub neighbourhood: usize,
     /// The finest levels matched with 5 x 5 neighbourhoods (`Params::detail_levels`).
     pub detail_levels: usize,
+    /// Match the fill again to its healed colours (`synthesis::REMATCH_ROUNDS`) and heal
+    /// it last by `LAST_HEAL`; otherwise heal it once, whole. A mended tile's band is
+    /// too wide for it: mending took 2.6-3.1 times a plain synthesis of its size so
+    /// (bench/verbs.mjs, 256², SIMD) against 1.2-1.3 without, and its wrap, in the
+    /// middle of the band, scored the same (within 0.05 on twelve photographs).
+    pub rematch: bool,
     /// What keeps pixels out of copying, for the message when none is left (a fill
     /// copies whole neighbourhoods: a hole that leaves a strip of one pixel leaves none).
     pub kept_out: &'static str,
@@ -178,9 +185,11 @@ impl Fill {
         // need less of it (`synthesis::REMATCH_ROUNDS`), and the last heal takes half
         // the step that is left (`LAST_HEAL`).
         let mut rng = Rng::new(self.seed ^ 0x4EA1_3A7C);
-        for round in 0..=REMATCH_ROUNDS {
-            let last = round == REMATCH_ROUNDS;
-            super::heal::heal(&mut out, image, &src[0], known, params.tileable, if last { LAST_HEAL } else { 1.0 });
+        let rounds = if self.rematch { REMATCH_ROUNDS } else { 0 };
+        for round in 0..=rounds {
+            let last = round == rounds;
+            let strength = if last && self.rematch { LAST_HEAL } else { 1.0 };
+            super::heal::heal(&mut out, image, &src[0], known, params.tileable, strength);
             if !last {
                 let healed: Vec<[f32; 3]> = out.data.chunks_exact(4).map(|p| [0, 1, 2].map(|c| p[c] as f32)).collect();
                 job.rematch(&mut src[0], &healed, &mut rng);

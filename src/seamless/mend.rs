@@ -70,6 +70,7 @@ pub fn mend(
         levels: None,
         neighbourhood: NEIGHBOURHOOD,
         detail_levels: DETAIL_LEVELS,
+        rematch: false,
         kept_out: "The sample mask leaves",
     };
     fill.run(input, progress)

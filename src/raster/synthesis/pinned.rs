@@ -50,9 +50,8 @@ pub(super) const PINNED_COHERENCE: f32 = 0.0;
 /// again without the last heal, the fill stays verbatim copies but its edge shows
 /// (1.13-1.20). More candidates or passes in the synthesis itself, or a local search in
 /// its passes, gained a third as much at twice the time; a coherence bias, or
-/// searching the coarsest level exhaustively, nothing. Mended tiles' wraps, in the
-/// middle of their bands, are as before (twelve photographs, seeds 1-3: medians within
-/// 0.05).
+/// searching the coarsest level exhaustively, nothing. A mended tile's band is not
+/// matched again (`inpaint::Fill::rematch` says why).
 pub const REMATCH_ROUNDS: usize = 2;
 
 /// Rounds of PatchMatch's local random search in `Job::rematch` (none: 7.57 rather
