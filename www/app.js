@@ -6,9 +6,27 @@ import { mountSeamless } from './features/seamless/client/index.js';
 import { mountRetouch } from './features/retouch/client/index.js';
 import { exportSession, importSession } from './shared/session.js';
 import { onTrouble, ready } from './shared/storage.js';
+import { readOnly, writesAfter } from './shared/store.js';
+import { claim, takeOver } from './shared/tab-lock.js';
 
 const client = new PatternSynthClient(new URL('./pkg/worker.js', import.meta.url));
 window.patternsynth = client; // handy from the console and for tests
+
+// One tab keeps the work (tab-lock.js): another tab of the page open at the same time
+// is read-only, says so at the top, and can take over. The page does not wait for the
+// answer (a single tab shows at once, as before); its writes do.
+const keeper = claim(() => readOnlyTab('patternsynth was taken over in another tab, which keeps your work now. This tab is read-only and may be out of date: nothing done here is kept.'));
+writesAfter(keeper);
+function readOnlyTab(message) {
+  readOnly();
+  const banner = document.getElementById('elsewhere');
+  for (const el of document.querySelectorAll('main, header .session')) el.inert = true;
+  document.getElementById('elsewhere-text').textContent = message;
+  banner.hidden = false;
+  // (Focus left inside what just went inert moves to the way out.)
+  if (document.activeElement?.closest('[inert]')) document.getElementById('take-over').focus();
+}
+document.getElementById('take-over').addEventListener('click', takeOver);
 
 // Settings are read from IndexedDB before anything shows them; a setting the browser
 // will not keep is said beside the session buttons.
@@ -22,6 +40,7 @@ const features = { strokes: mountStrokes, blend: mountBlend, seamless: mountSeam
 for (const section of document.querySelectorAll('[data-feature]')) {
   features[section.dataset.feature]?.(section, client);
 }
+keeper.then((ok) => ok || readOnlyTab('patternsynth is open in another tab, which keeps your work. This tab is read-only: nothing done here is kept. To work here, use this tab instead: it reloads with your latest work, and the other tab becomes read-only.'));
 
 // Tabs as the WAI-ARIA tabs pattern: one tab in the Tab order (the selected one), the
 // arrow keys, Home and End move between tabs and select them.

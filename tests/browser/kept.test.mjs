@@ -1,10 +1,12 @@
 // What a person makes on the raster tabs survives a reload made at once: an opened
 // image, a painted fill mask, a painted blend mask (each was lost on a reload within
 // about a second: 3-6 times in 12, and the blend mask 5 in 5); a mask painted over one
-// photograph is dropped with it; a session file keeps the fill mask.
+// photograph is dropped with it; a session file keeps the fill mask. The blend's brush
+// and the fill's erase are kept like the other settings, and the blend mask is painted
+// from the keyboard too (it could not be). Leaves out/blend-mask-keyboard.png.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { readFileSync } from 'node:fs';
+import { mkdirSync, readFileSync } from 'node:fs';
 import { openPlayground } from './harness.mjs';
 import * as ps from '../../pkg/node/index.js';
 
@@ -18,6 +20,7 @@ before(async () => {
 });
 after(async () => close?.());
 
+const mkdir = () => mkdirSync('out', { recursive: true });
 const tab = (t) => page.click(`[data-tab="${t}"]`);
 async function reloadTo(t) {
   await page.reload();
@@ -127,4 +130,52 @@ test('a mask painted over one photograph goes with it; a session file keeps the 
   await page.waitForTimeout(500);
   assert.equal(await inked('#ret-mask'), 0);
   assert.equal(await page.textContent('#ret-mask-info'), 'nothing painted');
+});
+
+test("the blend's brush size and paint A/B, and the fill mask's erase, are there after a reload", async () => {
+  await tab('blend');
+  await page.$eval('#brush-size', (e) => { e.value = '61'; e.dispatchEvent(new Event('input', { bubbles: true })); });
+  await page.check('input[name="brush"][value="b"]');
+  await tab('retouch');
+  await page.check('#ret-erase');
+  await reloadTo('blend');
+  await page.waitForTimeout(300);
+  assert.equal(await page.inputValue('#brush-size'), '61');
+  assert.equal(await page.isChecked('input[name="brush"][value="b"]'), true, 'paint B');
+  await tab('retouch');
+  assert.equal(await page.isChecked('#ret-erase'), true, 'erase');
+  // And back: the defaults come back too.
+  await page.uncheck('#ret-erase');
+  await tab('blend');
+  await page.check('input[name="brush"][value="a"]');
+  await reloadTo('blend');
+  await page.waitForTimeout(300);
+  assert.equal(await page.isChecked('input[name="brush"][value="a"]'), true, 'paint A');
+  await tab('retouch');
+  assert.equal(await page.isChecked('#ret-erase'), false);
+});
+
+test('the blend mask is painted from the keyboard (as the fill mask is), and kept', async () => {
+  await tab('blend');
+  await page.click('#mask-reset');
+  await page.selectOption('#blend-transition', 'linear');
+  const before = await pixels('#blend-mask');
+  // Reached with Tab from the control before it, as a keyboard user would.
+  await page.focus('#blend-angle');
+  await page.keyboard.press('Tab');
+  assert.equal(await page.evaluate(() => document.activeElement?.id), 'blend-mask');
+  assert.ok(await page.$eval('.brush-box', (b) => b.classList.contains('ring')), 'a ring shows where the brush is');
+  await page.keyboard.press('Space');
+  for (let i = 0; i < 4; i++) await page.keyboard.press('Shift+ArrowRight');
+  await page.keyboard.press('ArrowDown');
+  await page.keyboard.press('Enter');
+  assert.equal(await page.inputValue('#blend-transition'), 'mask', 'painting switches to the mask');
+  const painted = await pixels('#blend-mask');
+  assert.notEqual(painted, before, 'the keys painted');
+  await mkdir();
+  await page.locator('#transition-set').screenshot({ path: 'out/blend-mask-keyboard.png' });
+  await reloadTo('blend');
+  await page.waitForTimeout(500);
+  assert.equal(await page.inputValue('#blend-transition'), 'mask');
+  assert.equal(await pixels('#blend-mask'), painted, 'kept');
 });

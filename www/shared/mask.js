@@ -1,7 +1,7 @@
 // A mask painted over an image: a transparent canvas over the picture, painted in
 // translucent magenta with a round brush (pointer: mouse, pen, finger) or from the
-// keyboard (the arrows move a brush ring, Space or Enter paints there, Shift + an arrow
-// moves while painting). Erase, clear, and the mask kept in IndexedDB (one byte a
+// keyboard (`keyboardBrush`, the blend's mask's too: the arrows move a brush ring, Space
+// or Enter paints there, Shift + an arrow moves while painting). Erase, clear, and the mask kept in IndexedDB (one byte a
 // pixel, written at once after each stroke by `saver`, so a reload right after a stroke
 // finds it). The engines read it as a mask image: opaque white = masked.
 import { del, get, saver } from './store.js';
@@ -13,7 +13,6 @@ const INK = 'rgba(230, 0, 160, 0.55)';
  *  `onChange()`: after each stroke. */
 export function maskPainter({ overlay, brush, erase, clear, key, onChange = () => {}, onError }) {
   const ctx = overlay.getContext('2d', { willReadFrequently: true });
-  let cursor = null;
   let painting = false;
   const bits = () => {
     const d = ctx.getImageData(0, 0, overlay.width, overlay.height).data;
@@ -41,10 +40,7 @@ export function maskPainter({ overlay, brush, erase, clear, key, onChange = () =
     }
     ctx.restore();
   };
-  const line = (from, to) => {
-    const steps = Math.max(1, Math.ceil(Math.hypot(to[0] - from[0], to[1] - from[1]) / Math.max(1, Number(brush.value) / 4)));
-    for (let i = 1; i <= steps; i++) dab(from[0] + ((to[0] - from[0]) * i) / steps, from[1] + ((to[1] - from[1]) * i) / steps);
-  };
+  const line = (from, to) => dabsBetween(from, to, Number(brush.value), dab);
   const at = (e) => {
     const r = overlay.getBoundingClientRect();
     return [((e.clientX - r.left) * overlay.width) / r.width, ((e.clientY - r.top) * overlay.height) / r.height];
@@ -75,37 +71,7 @@ export function maskPainter({ overlay, brush, erase, clear, key, onChange = () =
   overlay.addEventListener('pointerup', end);
   overlay.addEventListener('pointercancel', end);
 
-  // The keyboard: a ring shows where Space paints.
-  const ring = () => {
-    const box = overlay.parentElement;
-    box.classList.toggle('ring', Boolean(cursor) && document.activeElement === overlay);
-    if (!cursor) return;
-    box.style.setProperty('--ring-x', `${(100 * cursor[0]) / overlay.width}%`);
-    box.style.setProperty('--ring-y', `${(100 * cursor[1]) / overlay.height}%`);
-    box.style.setProperty('--ring-size', `${(100 * Number(brush.value)) / overlay.width}%`);
-  };
-  overlay.addEventListener('focus', () => { cursor ??= [overlay.width / 2, overlay.height / 2]; ring(); });
-  overlay.addEventListener('blur', () => overlay.parentElement.classList.remove('ring'));
-  overlay.addEventListener('keydown', (e) => {
-    const step = Math.max(2, Number(brush.value) / 2);
-    const move = { ArrowLeft: [-step, 0], ArrowRight: [step, 0], ArrowUp: [0, -step], ArrowDown: [0, step] }[e.key];
-    if (move) {
-      e.preventDefault();
-      const from = cursor ?? [overlay.width / 2, overlay.height / 2];
-      cursor = [Math.min(overlay.width, Math.max(0, from[0] + move[0])), Math.min(overlay.height, Math.max(0, from[1] + move[1]))];
-      if (e.shiftKey) {
-        line(from, cursor);
-        keep();
-      }
-      ring();
-    } else if (e.key === ' ' || e.key === 'Enter') {
-      e.preventDefault();
-      cursor ??= [overlay.width / 2, overlay.height / 2];
-      dab(...cursor);
-      keep();
-    }
-  });
-  brush.addEventListener('input', ring);
+  keyboardBrush({ canvas: overlay, brush, dab, done: keep });
   clear.addEventListener('click', () => {
     ctx.clearRect(0, 0, overlay.width, overlay.height);
     del(key).catch(() => {});
@@ -171,4 +137,50 @@ export function maskPainter({ overlay, brush, erase, clear, key, onChange = () =
       keep();
     },
   };
+}
+
+/** Dabs of a brush `diameter` wide from `from` to `to` (not at `from`), a quarter of it apart. */
+export function dabsBetween(from, to, diameter, dab) {
+  const steps = Math.max(1, Math.ceil(Math.hypot(to[0] - from[0], to[1] - from[1]) / Math.max(1, diameter / 4)));
+  for (let i = 1; i <= steps; i++) dab(from[0] + ((to[0] - from[0]) * i) / steps, from[1] + ((to[1] - from[1]) * i) / steps);
+}
+
+/**
+ * Painting a focusable `canvas` from the keyboard: the arrows move the brush (a ring
+ * shows where: its parent, positioned, gets the class `ring`), Space or Enter paints
+ * there, Shift + an arrow paints as it moves. `brush`: the range input of the brush's
+ * diameter in canvas pixels; `dab(x, y)` paints one dab; `done()` after each paint.
+ */
+export function keyboardBrush({ canvas, brush, dab, done }) {
+  let cursor = null;
+  const ring = () => {
+    const box = canvas.parentElement;
+    box.classList.toggle('ring', Boolean(cursor) && document.activeElement === canvas);
+    if (!cursor) return;
+    box.style.setProperty('--ring-x', `${(100 * cursor[0]) / canvas.width}%`);
+    box.style.setProperty('--ring-y', `${(100 * cursor[1]) / canvas.height}%`);
+    box.style.setProperty('--ring-size', `${(100 * Number(brush.value)) / canvas.width}%`);
+  };
+  canvas.addEventListener('focus', () => { cursor ??= [canvas.width / 2, canvas.height / 2]; ring(); });
+  canvas.addEventListener('blur', () => canvas.parentElement.classList.remove('ring'));
+  canvas.addEventListener('keydown', (e) => {
+    const step = Math.max(2, Number(brush.value) / 2);
+    const move = { ArrowLeft: [-step, 0], ArrowRight: [step, 0], ArrowUp: [0, -step], ArrowDown: [0, step] }[e.key];
+    if (move) {
+      e.preventDefault();
+      const from = cursor ?? [canvas.width / 2, canvas.height / 2];
+      cursor = [Math.min(canvas.width, Math.max(0, from[0] + move[0])), Math.min(canvas.height, Math.max(0, from[1] + move[1]))];
+      if (e.shiftKey) {
+        dabsBetween(from, cursor, Number(brush.value), dab);
+        done();
+      }
+      ring();
+    } else if (e.key === ' ' || e.key === 'Enter') {
+      e.preventDefault();
+      cursor ??= [canvas.width / 2, canvas.height / 2];
+      dab(...cursor);
+      done();
+    }
+  });
+  brush.addEventListener('input', ring);
 }

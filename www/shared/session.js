@@ -2,6 +2,7 @@
 // and every tab's settings (IndexedDB; an older page's in localStorage). Export writes
 // it; import puts it back and reloads the page.
 import { get, keys, set } from './store.js';
+import { PREFIX as RESULT } from './results.js';
 
 const FORMAT = 'patternsynth-session';
 
@@ -29,6 +30,7 @@ const bytesIn = (_, v) => {
 export async function exportSession(current = {}) {
   const kept = {};
   for (const key of await keys().catch(() => [])) {
+    if (typeof key === 'string' && key.startsWith(RESULT)) continue; // (made again from the rest)
     const value = await get(key);
     // (A Blob kept as it is, the blend's painted mask, is marked `whole`.)
     kept[key] = value instanceof Blob ? { blob: await dataUrl(value), whole: true }

@@ -4,7 +4,7 @@
 // refuses (storage full, private mode) is said on the page (`onTrouble`) and the value
 // lasts until the page closes. Values an older page kept in localStorage are read
 // once and moved.
-import { del, get, keys, set } from './store.js';
+import { canWrite, del, get, keys, set } from './store.js';
 
 const PREFIX = 'settings:';
 const kept = new Map();
@@ -46,6 +46,7 @@ export function load(key, fallback) {
 /** Keeps `value` (a structured clone: objects, Blobs); written in the background. */
 export function store(key, value) {
   kept.set(key, value);
+  if (!canWrite()) return; // another tab keeps the work (tab-lock.js)
   if (!durable) {
     // No IndexedDB here: localStorage, as before, for what JSON can hold.
     try {
@@ -64,12 +65,13 @@ export function store(key, value) {
         // Nothing to move.
       }
     },
-    (e) => trouble(`Settings could not be kept (${e?.message ?? e}): they last until this page closes.`),
+    (e) => canWrite() && trouble(`Settings could not be kept (${e?.message ?? e}): they last until this page closes.`),
   );
 }
 
 export function forget(key) {
   kept.delete(key);
+  if (!canWrite()) return;
   del(PREFIX + key).catch(() => {});
   try {
     localStorage.removeItem(key);

@@ -7,6 +7,27 @@
 const DB = 'patternsynth';
 const STORE = 'kept';
 let opening = null;
+let writable = true;
+let asking = null;
+
+/**
+ * From now on nothing is written (another tab keeps the work: tab-lock.js); writes
+ * refuse, and `saver`s skip theirs. Reads go on.
+ */
+export function readOnly() {
+  writable = false;
+}
+
+/**
+ * Writes wait until `allowed` (a promise) says whether this page may write at all
+ * (tab-lock.js `claim`); false makes it read-only. Reads do not wait.
+ */
+export function writesAfter(allowed) {
+  asking = Promise.resolve(allowed).then((ok) => { if (!ok) readOnly(); }, () => {});
+}
+
+/** Whether this page may write (see `readOnly`). */
+export const canWrite = () => writable;
 
 function db() {
   opening ??= new Promise((resolve, reject) => {
@@ -31,6 +52,10 @@ function db() {
  * undo in 6-7 of 20 tries; 0 of 20 with the commit).
  */
 async function run(mode, act) {
+  if (mode === 'readwrite') {
+    if (asking) await asking;
+    if (!writable) throw new Error('the page is open in another tab, which keeps the work');
+  }
   const tx = (await db()).transaction(STORE, mode);
   const request = act(tx.objectStore(STORE));
   if (mode === 'readwrite') tx.commit?.();
@@ -64,6 +89,7 @@ export function saver(key, write, { delay = 0, onError, onSaved } = {}) {
   let failing = false;
   const flush = async () => {
     timer = null;
+    if (!writable) return;
     if (busy) return void (again = true);
     busy = true;
     try {
@@ -71,6 +97,7 @@ export function saver(key, write, { delay = 0, onError, onSaved } = {}) {
       if (failing) onSaved?.();
       failing = false;
     } catch (e) {
+      if (!writable) return; // (read-only: said at the top of the page)
       if (!failing) onError?.(e);
       failing = true;
     } finally {
@@ -91,11 +118,11 @@ export function saver(key, write, { delay = 0, onError, onSaved } = {}) {
      * may be gone before that one ends, and IndexedDB applies the two in order.
      */
     flush() {
-      if (timer || again) {
+      if (writable && (timer || again)) {
         clearTimeout(timer);
         timer = null;
         again = false;
-        return set(key, write()).catch((e) => onError?.(e));
+        return set(key, write()).catch((e) => writable && onError?.(e));
       }
       return Promise.resolve();
     },

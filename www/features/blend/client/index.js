@@ -4,6 +4,8 @@ import { defaultOptions, exemplarKey, maskKey, maxExemplarSide, maxOutputSide, s
 import { load, store } from '../../../shared/storage.js';
 import { offerDownload, runControls } from '../../../shared/run.js';
 import { zoomable } from '../../../shared/zoom.js';
+import { keptResult } from '../../../shared/results.js';
+import { keyboardBrush } from '../../../shared/mask.js';
 import { builtinBitmap, fileBitmap, forgetImage, keepImage, keptImage, onDropFile, rgbaOf } from '../../../shared/images.js';
 
 /** The coefficient transfers, as the engine defines them (mu of A in [0, 1]). */
@@ -178,14 +180,22 @@ export function mountBlend(root, client) {
     drawShape();
     save();
   });
-  let painting = false;
-  const paint = (e) => {
-    const r = mask.getBoundingClientRect();
-    const x = ((e.clientX - r.left) * mask.width) / r.width, y = ((e.clientY - r.top) * mask.height) / r.height;
-    const size = Number($('brush-size').value);
-    const toA = root.querySelector('input[name="brush"]:checked').value === 'a';
+  // The brush: its size and what it paints, kept with the settings.
+  const brushSize = bindValue('brush-size', 'brushSize', Number);
+  for (const r of root.querySelectorAll('input[name="brush"]')) {
+    r.checked = r.value === settings.brush;
+    r.addEventListener('change', () => { settings.brush = r.value; save(); });
+  }
+  /** A soft dab at (x, y) in mask pixels, of A (white) or B (black); the transition
+   *  becomes the painted mask. */
+  const dab = (x, y) => {
+    if (settings.transition !== 'mask') {
+      settings.transition = 'mask';
+      transition.value = 'mask';
+    }
+    const size = Number(brushSize.value);
     const g = mctx.createRadialGradient(x, y, 0, x, y, size / 2);
-    const c = toA ? '255,255,255' : '0,0,0';
+    const c = settings.brush === 'b' ? '0,0,0' : '255,255,255';
     g.addColorStop(0, `rgba(${c},0.6)`);
     g.addColorStop(1, `rgba(${c},0)`);
     mctx.fillStyle = g;
@@ -193,19 +203,7 @@ export function mountBlend(root, client) {
     mctx.arc(x, y, size / 2, 0, Math.PI * 2);
     mctx.fill();
   };
-  mask.addEventListener('pointerdown', (e) => {
-    painting = true;
-    mask.setPointerCapture(e.pointerId);
-    if (settings.transition !== 'mask') {
-      settings.transition = 'mask';
-      transition.value = 'mask';
-    }
-    paint(e);
-  });
-  mask.addEventListener('pointermove', (e) => { if (painting) paint(e); });
-  const endPaint = () => {
-    if (!painting) return;
-    painting = false;
+  const keepMask = () => {
     // Its grey levels, read now and written at once (a PNG from toBlob came a second
     // later, and a reload within it lost the mask 5 times in 5).
     const { data } = mctx.getImageData(0, 0, mask.width, mask.height);
@@ -214,8 +212,26 @@ export function mountBlend(root, client) {
     store(maskKey, { width: mask.width, height: mask.height, grey });
     save();
   };
+  let painting = false;
+  const paint = (e) => {
+    const r = mask.getBoundingClientRect();
+    dab(((e.clientX - r.left) * mask.width) / r.width, ((e.clientY - r.top) * mask.height) / r.height);
+  };
+  mask.addEventListener('pointerdown', (e) => {
+    painting = true;
+    mask.setPointerCapture(e.pointerId);
+    paint(e);
+  });
+  mask.addEventListener('pointermove', (e) => { if (painting) paint(e); });
+  const endPaint = () => {
+    if (!painting) return;
+    painting = false;
+    keepMask();
+  };
   mask.addEventListener('pointerup', endPaint);
   mask.addEventListener('pointercancel', endPaint);
+  // From the keyboard as the fill's mask is painted (shared/mask.js).
+  keyboardBrush({ canvas: mask, brush: brushSize, dab, done: keepMask });
 
   /** The painted mask resampled to the output size, as mu values. */
   function maskCoefficient(w, h) {
@@ -260,14 +276,36 @@ export function mountBlend(root, client) {
       canvas.height = out.height;
       canvas.getContext('2d').putImageData(new ImageData(new Uint8ClampedArray(out.data), out.width, out.height), 0, 0);
       const blob = await new Promise((ok) => canvas.toBlob(ok, 'image/png'));
-      if (resultUrl) URL.revokeObjectURL(resultUrl);
-      resultUrl = URL.createObjectURL(blob);
-      offerDownload($('blend-download'), resultUrl);
-      zoom.reset(); // (after the picture is there: it enables the zoom)
-      $('blend-download').download = `${single ? 'texture' : 'blend'}-${out.width}x${out.height}.png`;
-      $('blend-info').textContent = `${out.width}×${out.height}, ${single ? 'single exemplar' : settings.transition}, ${ms.toFixed(0)} ms${recurrence(out, single ? [slots.a.image] : [slots.a.image, slots.b.image])}`;
+      const file = `${single ? 'texture' : 'blend'}-${out.width}x${out.height}.png`;
+      const info = `${out.width}×${out.height}, ${single ? 'single exemplar' : settings.transition}, ${ms.toFixed(0)} ms${recurrence(out, single ? [slots.a.image] : [slots.a.image, slots.b.image])}`;
+      offerResult({ blob, file, info });
+      result.keep({ blob, file, info });
       say('Done.');
     });
+  });
+
+  // --- the result, kept across reloads (shared/results.js) ---
+  const result = keptResult('blend', {
+    links: [$('blend-download')],
+    onError: (e) => say(`This browser would not keep the texture (${e?.message ?? e}): download it to keep it.`, 'warn'),
+  });
+  /** Offers the PNG `blob` (on the canvas already) for download, and says what it is. */
+  function offerResult({ blob, file, info }) {
+    if (resultUrl) URL.revokeObjectURL(resultUrl);
+    resultUrl = URL.createObjectURL(blob);
+    offerDownload($('blend-download'), resultUrl);
+    zoom.reset(); // (after the picture is there: it enables the zoom)
+    $('blend-download').download = file;
+    $('blend-info').textContent = info;
+  }
+  result.restore().then(async (kept) => {
+    if (!kept?.blob || runs.busy || resultUrl) return;
+    const bitmap = await createImageBitmap(kept.blob).catch(() => null);
+    if (!bitmap || runs.busy || resultUrl) return;
+    const canvas = $('blend-result');
+    [canvas.width, canvas.height] = [bitmap.width, bitmap.height];
+    canvas.getContext('2d').drawImage(bitmap, 0, 0);
+    offerResult(kept);
   });
 
   // The texture zooms (pixels shown as they are) and pans like the vector result.

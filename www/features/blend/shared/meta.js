@@ -14,6 +14,9 @@ export const defaultOptions = {
   exhaustive: false,
   a: 'wood',
   b: 'gravel',
+  // The mask's brush: its diameter in mask pixels, and what it paints ('a' white, 'b' black).
+  brushSize: 28,
+  brush: 'a',
 };
 
 /** Built-in exemplars: CC0, public-domain or unrestricted photographs (see tests/fixtures/textures/SOURCES.md). */

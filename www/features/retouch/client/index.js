@@ -7,6 +7,7 @@ import { load, store } from '../../../shared/storage.js';
 import { offerDownload, runControls, withdrawDownload } from '../../../shared/run.js';
 import { maskPainter } from '../../../shared/mask.js';
 import { fileBitmap, imagePicker } from '../../../shared/images.js';
+import { keptResult } from '../../../shared/results.js';
 
 export function mountRetouch(root, client) {
   const $ = (id) => root.querySelector(`#${id}`);
@@ -27,8 +28,11 @@ export function mountRetouch(root, client) {
   const brush = $('ret-brush');
   brush.value = settings.brush;
   brush.addEventListener('input', () => { settings.brush = Number(brush.value); save(); });
+  const erase = $('ret-erase');
+  erase.checked = settings.erase === true;
+  erase.addEventListener('change', () => { settings.erase = erase.checked; save(); });
   const mask = maskPainter({
-    overlay: $('ret-mask'), brush, erase: $('ret-erase'), clear: $('ret-clear'), key: maskKey,
+    overlay: $('ret-mask'), brush, erase, clear: $('ret-clear'), key: maskKey,
     onChange: () => { $('ret-mask-info').textContent = mask.painted() ? 'painted' : 'nothing painted'; },
     onError: (e) => say(`The mask could not be kept (${e.message}): it lasts until this page closes.`, 'warn'),
   });
@@ -88,14 +92,27 @@ export function mountRetouch(root, client) {
   }
 
   // --- results ---
-  async function downloadable(rgba, canvas) {
+  /** `rgba` as a PNG Blob. */
+  async function png(rgba, canvas = document.createElement('canvas')) {
     canvas.width = rgba.width;
     canvas.height = rgba.height;
     canvas.getContext('2d').putImageData(new ImageData(new Uint8ClampedArray(rgba.data), rgba.width, rgba.height), 0, 0);
-    const blob = await new Promise((ok) => canvas.toBlob(ok, 'image/png'));
+    return new Promise((ok) => canvas.toBlob(ok, 'image/png'));
+  }
+  const urlOf = (blob) => {
     const url = URL.createObjectURL(blob);
     urls.push(url);
     return url;
+  };
+  /** Offers the result `{ blob, file, info, maps: [{ name, blob, file }] }` (shown
+   *  already) and its maps for download. */
+  function offer({ blob, file, info, maps: made = [] }) {
+    offerDownload($('ret-download'), urlOf(blob));
+    $('ret-download').download = file;
+    $('ret-map-downloads').replaceChildren(...made.map((m) => Object.assign(document.createElement('a'), {
+      className: 'button', textContent: `Download ${m.name}`, href: urlOf(m.blob), download: m.file,
+    })));
+    $('ret-info').textContent = info;
   }
   function clearResults() {
     for (const u of urls.splice(0)) URL.revokeObjectURL(u);
@@ -128,7 +145,7 @@ export function mountRetouch(root, client) {
     const kind = settings.action;
     $('ret-info').textContent = 'Working…';
     await runs.start({ fill: 'Filling…', mend: 'Making the tile…', more: 'Making the texture…' }[kind], async (call) => {
-      let out, note = '';
+      let out, note = '', laidOut = [];
       if (kind === 'fill') {
         out = await client.inpaintTexture(image, mask.image(), { seed }, call);
       } else if (kind === 'mend') {
@@ -142,24 +159,35 @@ export function mountRetouch(root, client) {
         out = maps.length ? r.image : r;
         if (maps.length) {
           const replayed = await client.applyLayout(r.layout, maps.map((m) => m.rgba), { signal: call.signal });
-          const links = await Promise.all(replayed.map(async (img, i) => {
-            const a = Object.assign(document.createElement('a'), { className: 'button', textContent: `Download ${maps[i].name}` });
-            a.href = await downloadable(img, document.createElement('canvas'));
-            a.download = `${maps[i].name.replace(/\.[^.]+$/, '')}-${width}x${height}.png`;
-            return a;
-          }));
-          $('ret-map-downloads').replaceChildren(...links);
+          laidOut = await Promise.all(replayed.map(async (img, i) => ({
+            name: maps[i].name, blob: await png(img), file: `${maps[i].name.replace(/\.[^.]+$/, '')}-${width}x${height}.png`,
+          })));
           note = `, ${maps.length} map${maps.length > 1 ? 's' : ''} laid out the same way`;
         }
       }
       const ms = performance.now() - t0;
       showResult(out, kind === 'mend');
-      offerDownload($('ret-download'), await downloadable(out, $('ret-canvas')));
-      $('ret-download').download = `${kind}-${out.width}x${out.height}.png`;
-      $('ret-info').textContent = `${out.width}×${out.height}${note}, ${ms.toFixed(0)} ms`;
+      const made = { blob: await png(out, $('ret-canvas')), file: `${kind}-${out.width}x${out.height}.png`, info: `${out.width}×${out.height}${note}, ${ms.toFixed(0)} ms`, repeat: kind === 'mend', maps: laidOut };
+      offer(made);
+      result.keep(made);
       say('Done.');
     });
     if (!$('ret-view').classList.contains('shown')) $('ret-info').textContent = 'No result: see the message on the left.';
+  });
+
+  // --- the result, kept across reloads (shared/results.js) ---
+  const result = keptResult('retouch', {
+    links: [$('ret-download')],
+    onError: (e) => say(`This browser would not keep the result (${e?.message ?? e}): download it to keep it.`, 'warn'),
+  });
+  result.restore().then(async (kept) => {
+    if (!kept?.blob || runs.busy || urls.length) return;
+    const bitmap = await createImageBitmap(kept.blob).catch(() => null);
+    if (!bitmap || runs.busy || urls.length) return;
+    const ctx = new OffscreenCanvas(bitmap.width, bitmap.height).getContext('2d');
+    ctx.drawImage(bitmap, 0, 0);
+    showResult({ width: bitmap.width, height: bitmap.height, data: ctx.getImageData(0, 0, bitmap.width, bitmap.height).data }, kept.repeat);
+    offer(kept);
   });
 
   // --- start ---

@@ -15,6 +15,7 @@ export const defaultOptions = {
   height: 512,
   seed: 1,
   brush: 24,
+  erase: false, // the brush erases the mask
   texture: 'brick',
 };
 

@@ -6,6 +6,7 @@ import { runControls } from '../../../shared/run.js';
 import { zoomable } from '../../../shared/zoom.js';
 import { tilePanel } from '../../../shared/tile.js';
 import { imagePicker } from '../../../shared/images.js';
+import { keptResult } from '../../../shared/results.js';
 
 export function mountSeamless(root, client) {
   const $ = (id) => root.querySelector(`#${id}`);
@@ -90,19 +91,38 @@ export function mountSeamless(root, client) {
       c.height = height;
       c.getContext('2d').putImageData(new ImageData(new Uint8ClampedArray(r.image.data), width, height), 0, 0);
       const blob = await new Promise((ok) => c.toBlob(ok, 'image/png'));
-      if (resultUrl) URL.revokeObjectURL(resultUrl);
-      resultUrl = URL.createObjectURL(blob);
-      // The 3x3 repeat, to judge the seams.
-      // Whole pixels when the column has room, scaled down to fit it when it has not.
-      const fit = Math.min(512, $('seam-view').parentElement.clientWidth - 16) / (3 * width);
-      const scale = fit >= 1 ? Math.floor(fit) : fit;
-      shownScale = scale;
-      tile.show({ url: resultUrl, file: `seamless-${settings.method}-${width}x${height}.png`, width, height, scale });
-      zoom.reset(); // (after the tile is shown: it enables the zoom)
-      $('seam-info').textContent = `${width}×${height}, restoration rate ${(100 * r.restorationRate).toFixed(1)}%, seam score ${r.seamScore.toFixed(2)} (about 1: no seam), ${ms.toFixed(0)} ms`;
+      const made = {
+        blob, width, height, file: `seamless-${settings.method}-${width}x${height}.png`,
+        info: `${width}×${height}, restoration rate ${(100 * r.restorationRate).toFixed(1)}%, seam score ${r.seamScore.toFixed(2)} (about 1: no seam), ${ms.toFixed(0)} ms`,
+      };
+      showTile(made);
+      result.keep(made);
       say(r.warnings.length ? r.warnings.join(' ') : 'Done.', r.warnings.length ? 'warn' : '');
     });
     if (!$('seam-repeat').classList.contains('shown')) $('seam-info').textContent = 'No tile: see the message on the left.';
+  });
+
+  // --- the tile, kept across reloads (shared/results.js) ---
+  const result = keptResult('seamless', {
+    links: [$('seam-download')],
+    onError: (e) => say(`This browser would not keep the tile (${e?.message ?? e}): download it to keep it.`, 'warn'),
+  });
+  /** Shows the tile (a PNG `blob`) repeated 3 x 3, to judge the seams, and offers it. */
+  function showTile({ blob, width, height, file, info }) {
+    if (resultUrl) URL.revokeObjectURL(resultUrl);
+    resultUrl = URL.createObjectURL(blob);
+    // Whole pixels when the column has room, scaled down to fit it when it has not.
+    // (A tab not shown has no width: the page's, less its margins, stands in.)
+    const room = $('seam-view').parentElement.clientWidth || document.documentElement.clientWidth - 34;
+    const fit = Math.min(512, room - 16) / (3 * width);
+    const scale = fit >= 1 ? Math.floor(fit) : fit;
+    shownScale = scale;
+    tile.show({ url: resultUrl, file, width, height, scale });
+    zoom.reset(); // (after the tile is shown: it enables the zoom)
+    $('seam-info').textContent = info;
+  }
+  result.restore().then((kept) => {
+    if (kept?.blob && !runs.busy && !resultUrl) showTile(kept);
   });
 
   // --- start ---

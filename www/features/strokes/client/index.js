@@ -8,6 +8,7 @@ import { forget, load, store as save } from '../../../shared/storage.js';
 import { get, saver } from '../../../shared/store.js';
 import { offerDownload, runControls } from '../../../shared/run.js';
 import { tilePanel } from '../../../shared/tile.js';
+import { keptResult } from '../../../shared/results.js';
 import { zoomable } from '../../../shared/zoom.js';
 import { checkStyle, restyleSvg } from '../../../pkg/restyle.js';
 
@@ -126,7 +127,8 @@ export function mountStrokes(root, client) {
   $('redo').addEventListener('click', () => drawing.redo());
   $('clear').addEventListener('click', () => drawing.set([]));
   document.addEventListener('keydown', (e) => {
-    if (root.hidden) return;
+    // (Nor while another tab keeps the work and this page is read-only: tab-lock.js.)
+    if (root.hidden || root.closest('[inert]')) return;
     // Tab, Enter and Escape act on ghosts only while the canvas has focus and ghosts are
     // shown; otherwise Tab moves focus through the page as everywhere else.
     const onCanvas = document.activeElement === canvas;
@@ -293,6 +295,7 @@ export function mountStrokes(root, client) {
       // (the preview was drawn with its background and opacity, not the SVG).
       if (styleChanged()) await restyle();
       $('result-info').textContent = `${r.classes.length} strokes, ${r.classification.count} classes, ${STRUCTURE[r.structure] ?? ''}${width}×${height}, ${ms.toFixed(0)} ms`;
+      resultKept.keep({ svgBlob: r.svgBlob, ...shownResult, info: $('result-info').textContent });
       say('Done.');
     });
     scheduleClassify(0);
@@ -484,6 +487,7 @@ export function mountStrokes(root, client) {
       $('style').disabled = false;
       showTile();
       $('tile-info').textContent = `${+t.width.toFixed(2)}×${+t.height.toFixed(2)} tile, ${t.sites} elements (${t.strokes.length} strokes with the edge copies), shown 3×3.`;
+      tileKept.keep({ ...shownTile, info: $('tile-info').textContent });
       say('Tile ready.');
     } catch (e) {
       $('tile-info').textContent = 'No tile: see the message above.';
@@ -495,7 +499,32 @@ export function mountStrokes(root, client) {
 
   // --- start: the kept drawing (or one kept by an older page, in localStorage), or an
   // example so the page does something at once ---
+  // --- the result and the tile, kept across reloads (shared/results.js) ---
+  const unkept = (what) => (e) => say(`This browser would not keep the ${what} (${e?.message ?? e}): download it to keep it.`, 'warn');
+  const resultKept = keptResult('strokes', { links: [$('download')], onError: unkept('result') });
+  const tileKept = keptResult('strokes-tile', { links: [$('tile-download')], onError: unkept('tile') });
+  const restoreResults = () => resultKept.restore().then((kept) => {
+    if (!kept?.svgBlob || runs.busy || shownResult) return;
+    const { svgBlob, info, ...result } = kept;
+    shownResult = result;
+    $('download-png').disabled = false;
+    showResult({ svgBlob }, result.opts.width, result.opts.height);
+    classColorInputs(result.strokes, result.classification);
+    $('style').disabled = false;
+    $('result-info').textContent = info;
+    // (Restyled by the worker, which makes the result again first: same options and seed.)
+    if (styleChanged()) restyling = restyle();
+  }).then(() => tileKept.restore()).then((kept) => {
+    if (!kept?.t || shownTile || $('make-tile').disabled) return;
+    const { info, ...made } = kept;
+    shownTile = made;
+    $('style').disabled = false;
+    showTile();
+    $('tile-info').textContent = info;
+  });
+
   const legacy = load(storageKey, null);
+  // (The result and the tile after the drawing: read first, a large result delayed it.)
   get(sessionKey).catch(() => undefined).then(async (session) => {
     if (session && (session.strokes?.length || session.past?.length)) return drawing.restore(session);
     if (Array.isArray(legacy) && legacy.length) {
@@ -506,5 +535,5 @@ export function mountStrokes(root, client) {
     const list = await loadExamples();
     const ex = list.find((x) => x.name === 'classes-by-shape') ?? list[0];
     if (ex && !drawing.strokes.length) drawing.set(fitStrokes(ex.strokes, drawing.logical.w, drawing.logical.h, 60), { record: false });
-  });
+  }).finally(restoreResults);
 }
