@@ -56,7 +56,8 @@ impl Default for InpaintOptions {
 
 /// `image` with the pixels where `mask` is true filled from the rest of it; every other
 /// pixel is returned as it was, byte for byte (alpha too), and a filled pixel is a copy
-/// of the image pixel it was matched to (alpha too).
+/// of the image pixel it was matched to, healed into the hole's border (`heal`: colour,
+/// and opacity where the image's varies).
 pub fn inpaint_texture(
     image: &Rgba,
     mask: &[bool],
