@@ -182,7 +182,7 @@ pub fn heal(out: &mut Rgba, image: &Rgba, src: &[u32], known: &[bool], torus: bo
     let mut weights: Vec<f32> = unlikeness.iter().map(|u| (-(u / scale).powi(2)).exp()).collect();
     // A separate hole all of whose edge is unlike its fill is healed whole (`ALONE`).
     let parts = components(&links);
-    let mut strongest = vec![0.0f32; free.len()];
+    let mut strongest = vec![0.0f32; parts.iter().max().map_or(0, |&p| p as usize + 1)];
     for (b, &wt) in border.iter().zip(&weights) {
         let p = parts[b.0 as usize] as usize;
         strongest[p] = strongest[p].max(wt);
@@ -264,50 +264,46 @@ fn components(links: &[[u32; 4]]) -> Vec<u32> {
 mod tests {
     use super::*;
 
+    /// A 32 x 32 image of `rest` with `corner` in its top-left 6 x 6, and a hole in its
+    /// middle filled from the corner: the image, the known pixels and the copies.
+    fn filled_from_the_corner(corner: [u8; 4], rest: [u8; 4]) -> (Rgba, Vec<bool>, Vec<u32>) {
+        let (w, h) = (32, 32);
+        let data = (0..w * h).flat_map(|i| if i % w < 6 && i / w < 6 { corner } else { rest }).collect();
+        let hole = |i: usize| (12..20).contains(&(i % w)) && (12..20).contains(&(i / w));
+        let known = (0..w * h).map(|i| !hole(i)).collect();
+        let src = (0..w * h).map(|i| if hole(i) { (2 * w + 2) as u32 } else { i as u32 }).collect();
+        (Rgba { width: w, height: h, data }, known, src)
+    }
+
     #[test]
     fn a_fill_copied_from_a_darker_place_is_lifted_to_its_surroundings() {
         // A flat image at 100 with a darker patch (40) in its corner; a hole in the
         // middle filled from the dark patch: healed, it meets its border at 100.
-        let (w, h) = (32, 32);
-        let mut image = Rgba { width: w, height: h, data: vec![255; w * h * 4] };
-        for i in 0..w * h {
-            let v = if i % w < 6 && i / w < 6 { 40 } else { 100 };
-            image.data[4 * i..4 * i + 3].copy_from_slice(&[v, v, v]);
-        }
-        let hole = |i: usize| (12..20).contains(&(i % w)) && (12..20).contains(&(i / w));
-        let known: Vec<bool> = (0..w * h).map(|i| !hole(i)).collect();
-        let src: Vec<u32> = (0..w * h).map(|i| if hole(i) { (2 * w + 2) as u32 } else { i as u32 }).collect();
+        let (image, known, src) = filled_from_the_corner([40, 40, 40, 255], [100, 100, 100, 255]);
         let mut out = image.clone();
         heal(&mut out, &image, &src, &known, false, 1.0);
-        for i in (0..w * h).filter(|&i| hole(i)) {
+        for i in (0..known.len()).filter(|&i| !known[i]) {
             assert!((out.data[4 * i] as i32 - 100).abs() <= 1, "pixel {i}: {}", out.data[4 * i]);
         }
         // Known pixels untouched.
-        assert!((0..w * h).filter(|&i| !hole(i)).all(|i| out.data[4 * i..4 * i + 4] == image.data[4 * i..4 * i + 4]));
+        assert!((0..known.len())
+            .filter(|&i| known[i])
+            .all(|i| out.data[4 * i..4 * i + 4] == image.data[4 * i..4 * i + 4]));
     }
 
     #[test]
     fn opacity_is_healed_where_it_varies() {
         // A half-transparent image (alpha 100) with a more opaque corner (220) that the
         // hole is filled from: healed, the hole's opacity meets its border's.
-        let (w, h) = (32, 32);
-        let mut image = Rgba { width: w, height: h, data: vec![0; w * h * 4] };
-        for i in 0..w * h {
-            let a = if i % w < 6 && i / w < 6 { 220 } else { 100 };
-            image.data[4 * i..4 * i + 4].copy_from_slice(&[90, 120, 150, a]);
-        }
-        let hole = |i: usize| (12..20).contains(&(i % w)) && (12..20).contains(&(i / w));
-        let known: Vec<bool> = (0..w * h).map(|i| !hole(i)).collect();
-        let src: Vec<u32> = (0..w * h).map(|i| if hole(i) { (2 * w + 2) as u32 } else { i as u32 }).collect();
+        let (image, known, src) = filled_from_the_corner([90, 120, 150, 220], [90, 120, 150, 100]);
         let mut out = image.clone();
         heal(&mut out, &image, &src, &known, false, 1.0);
-        for i in (0..w * h).filter(|&i| hole(i)) {
+        for i in (0..known.len()).filter(|&i| !known[i]) {
             assert!((out.data[4 * i + 3] as i32 - 100).abs() <= 1, "pixel {i}: alpha {}", out.data[4 * i + 3]);
             assert_eq!(out.data[4 * i..4 * i + 3], [90, 120, 150]);
         }
         // An opaque image stays opaque.
-        let opaque =
-            Rgba { width: w, height: h, data: image.data.chunks(4).flat_map(|p| [p[0], p[1], p[2], 255]).collect() };
+        let (opaque, _, _) = filled_from_the_corner([90, 120, 150, 255], [90, 120, 150, 255]);
         let mut out = opaque.clone();
         heal(&mut out, &opaque, &src, &known, false, 1.0);
         assert!(out.data.chunks(4).all(|p| p[3] == 255));
