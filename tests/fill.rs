@@ -1,6 +1,8 @@
 //! Filling a hole (`inpaint_texture`) where the photograph is lit unevenly: the fill
 //! must take copies of the brightness around the hole, not copies of anywhere lifted
-//! or darkened by the heal, and must not show its edge.
+//! or darkened by the heal, and must not show its edge. And where the image's opacity
+//! varies (issue 30): the fill keeps to the opacity around it, a transparent
+//! background stays transparent, and opaque images fill as they did before.
 
 use patternsynth::raster::codec::decode_image;
 use patternsynth::raster::{inpaint_texture, InpaintOptions, Rgba};
@@ -108,5 +110,113 @@ fn a_fill_where_the_photograph_is_brightest_copies_that_brightness_without_an_ed
         println!("{name}: fill energy {energy:.2} (the photograph's own {truth:.2}), edge ratio {edge:.2}");
         assert!(energy < energy_bound * truth, "{name}: fill energy {energy:.2}, the photograph's own {truth:.2}");
         assert!(edge < edge_bound, "{name}: the step across the fill's edge is {edge:.2} times the steps around it");
+    }
+}
+
+/// A fixture photograph whose alpha rises from 60 at its left edge to 210 at its right
+/// (the trial's half-transparent photograph).
+fn faded(name: &str) -> Rgba {
+    let mut img = decode_image(&std::fs::read(format!("tests/fixtures/textures/{name}.png")).unwrap()).unwrap();
+    let w = img.width;
+    for (i, p) in img.data.chunks_exact_mut(4).enumerate() {
+        p[3] = (60.0 + 150.0 * (i % w) as f32 / w as f32).round() as u8;
+    }
+    img
+}
+
+#[test]
+fn a_fill_in_an_alpha_gradient_keeps_to_the_gradient() {
+    // Copies matched on colour alone brought their own opacity from anywhere along the
+    // gradient: patches of alpha 40-80 levels off it.
+    for name in ["gravel", "grass", "brick"] {
+        let img = faded(name);
+        let (w, h) = (img.width, img.height);
+        let hole: Vec<bool> = (0..w * h).map(|i| (40..90).contains(&(i % w)) && (30..80).contains(&(i / w))).collect();
+        let out = inpaint_texture(&img, &hole, &InpaintOptions::default(), &mut Silent).unwrap();
+        let off: Vec<f64> = (0..w * h)
+            .filter(|&i| hole[i])
+            .map(|i| (out.data[4 * i + 3] as f64 - img.data[4 * i + 3] as f64).abs())
+            .collect();
+        let mean = off.iter().sum::<f64>() / off.len() as f64;
+        let worst = off.iter().cloned().fold(0.0, f64::max);
+        println!("{name}: filled alpha off the gradient by {mean:.1} on average, {worst} at most");
+        assert!(mean < 6.0 && worst < 30.0, "{name}: alpha off the gradient by {mean:.1} on average, {worst} at most");
+    }
+}
+
+/// A 128 x 128 icon on a transparent black background: a camera lens, a dark disc in a
+/// ring of light, noisy colour with a mid-tone rim (the trial's icon, H). The hole
+/// crosses the ring's right edge into the background; the lens lies outside it.
+fn icon() -> (Rgba, Vec<bool>, impl Fn(usize, usize) -> f64) {
+    let (w, h) = (128usize, 128usize);
+    let radius = |x: usize, y: usize| (x as f64 - 56.0).hypot(y as f64 - 64.0);
+    let mut data = vec![0u8; w * h * 4];
+    for i in 0..w * h {
+        let r = radius(i % w, i / w);
+        let n = ((i * 7919 + (i / w) * 104729) % 23) as u8;
+        let px = if r < 22.0 {
+            [35 + n, 35 + n, 45 + n, 255]
+        } else if r < 36.0 {
+            [210 + n, 190 + n, 90 + n, 255]
+        } else if r < 40.0 {
+            [150, 120, 60, 255]
+        } else if r < 41.0 {
+            [150, 120, 60, 128]
+        } else {
+            [0, 0, 0, 0]
+        };
+        data[4 * i..4 * i + 4].copy_from_slice(&px);
+    }
+    let hole = (0..w * h).map(|i| (80..112).contains(&(i % w)) && (48..80).contains(&(i / w))).collect();
+    (Rgba { width: w, height: h, data }, hole, radius)
+}
+
+#[test]
+fn a_hole_across_an_icons_edge_leaves_its_background_transparent_and_clean() {
+    // Matched on colour alone, transparent black was as good a match as any dark, and
+    // the heal carried the background's black into the drawing: a dark smear.
+    let (img, hole, radius) = icon();
+    let w = img.width;
+    for seed in 1..=3 {
+        let out = inpaint_texture(&img, &hole, &InpaintOptions { seed, ..Default::default() }, &mut Silent).unwrap();
+        for i in (0..hole.len()).filter(|&i| hole[i]) {
+            let (x, y) = (i % w, i / w);
+            let p = &out.data[4 * i..4 * i + 4];
+            let dark = p[3] > 64 && p[..3].iter().map(|&v| v as u32).sum::<u32>() < 3 * 100;
+            assert!(!dark, "seed {seed}: a dark pixel {p:?} at ({x}, {y})");
+            // Well outside the drawing, transparent; well inside it, opaque.
+            if radius(x, y) > 46.0 {
+                assert!(p[3] <= 8, "seed {seed}: alpha {} at ({x}, {y}), outside the drawing", p[3]);
+            }
+            if radius(x, y) < 30.0 {
+                assert!(p[3] >= 247, "seed {seed}: alpha {} at ({x}, {y}), inside the drawing", p[3]);
+            }
+        }
+    }
+}
+
+/// FNV-1a of a fill's bytes.
+fn checksum(img: &Rgba) -> u64 {
+    img.data.iter().fold(0xcbf2_9ce4_8422_2325u64, |h, &b| (h ^ b as u64).wrapping_mul(0x0000_0100_0000_01b3))
+}
+
+#[test]
+fn an_opaque_image_fills_and_mends_as_before_alpha_was_matched() {
+    // Checksums of the fills made before issue 30's alpha matching (at ed4193c): opaque
+    // images take none of it, byte for byte.
+    let expected = [
+        ("gravel", 0x78a2_e90b_1e96_6c12, 0xbcb5_ee04_2385_c72d),
+        ("tissue", 0x8861_984e_7858_e864, 0x39b9_ba52_b639_d121),
+    ];
+    for (name, fill, mend) in expected {
+        let img = decode_image(&std::fs::read(format!("tests/fixtures/textures/{name}.png")).unwrap()).unwrap();
+        let (w, h) = (img.width, img.height);
+        let hole: Vec<bool> = (0..w * h)
+            .map(|i| ((i % w) as f64 - 0.6 * w as f64).hypot((i / w) as f64 - 0.4 * h as f64) < w as f64 / 7.0)
+            .collect();
+        let out = inpaint_texture(&img, &hole, &InpaintOptions { seed: 3, ..Default::default() }, &mut Silent).unwrap();
+        let mended = patternsynth::seamless::mend::mend(&img, 0.2, None, 2, &mut Silent).unwrap();
+        println!("{name}: fill {:#x}, mend {:#x}", checksum(&out), checksum(&mended));
+        assert_eq!((checksum(&out), checksum(&mended)), (fill, mend), "{name}");
     }
 }

@@ -64,15 +64,23 @@ const NEAR: isize = 3;
 /// taken away); `torus` reads neighbours across the edges. Alpha is healed like the
 /// colours where the image's opacity varies. (Copied as it was before, a fill on a
 /// half-transparent image showed as patches of another opacity: its mean off the
-/// truth +69 and -94 on a new user's trial; healed, +39 and -62.)
+/// truth +69 and -94 on a new user's trial; healed, +39 and -62.) The colours are then
+/// healed premultiplied by alpha, as they show: a transparent pixel's colour means
+/// nothing (an icon's background is often transparent black), and a step from it
+/// darkened the fill of a new user's icon along its transparent edge; premultiplied,
+/// such a step says only that the fill turns transparent there.
 pub fn heal(out: &mut Rgba, image: &Rgba, src: &[u32], known: &[bool], torus: bool, strength: f32) {
     let (w, h) = (out.width, out.height);
     let free: Vec<usize> = (0..w * h).filter(|&i| !known[i]).collect();
     // Whether (x, y) is read: inside the image, or anywhere on a torus.
     let read = |x: isize, y: isize| torus || ((0..w as isize).contains(&x) && (0..h as isize).contains(&y));
     // Opacity that is the same everywhere has no step to heal: three channels then.
-    let channels = if image.data.chunks_exact(4).all(|p| p[3] == image.data[3]) { 3 } else { 4 };
-    let colour = |img: &Rgba, i: usize| [0, 1, 2, 3].map(|c| img.data[4 * i + c] as f32);
+    let channels = if image.alpha_varies() { 4 } else { 3 };
+    let colour = |img: &Rgba, i: usize| {
+        let p = [0, 1, 2, 3].map(|c| img.data[4 * i + c] as f32);
+        let a = if channels == 4 { p[3] / 255.0 } else { 1.0 };
+        [p[0] * a, p[1] * a, p[2] * a, p[3]]
+    };
     if free.len() == w * h {
         // Nothing to heal to: the copies as they are.
         for &i in &free {
@@ -226,11 +234,24 @@ pub fn heal(out: &mut Rgba, image: &Rgba, src: &[u32], known: &[bool], torus: bo
         }
     }
     for (k, &i) in free.iter().enumerate() {
+        let s = 4 * src[i] as usize;
         let base = colour(image, src[i] as usize);
-        // (Alpha copied, then healed where `channels` is 4.)
-        out.data[4 * i + 3] = image.data[4 * src[i] as usize + 3];
-        for ch in 0..channels {
-            out.data[4 * i + ch] = (base[ch] + strength * c[k][ch]).round().clamp(0.0, 255.0) as u8;
+        let healed = |ch: usize| base[ch] + strength * c[k][ch];
+        // (Alpha copied where it is the same everywhere.)
+        out.data[4 * i..4 * i + 4].copy_from_slice(&image.data[s..s + 4]);
+        if channels == 3 {
+            for ch in 0..3 {
+                out.data[4 * i + ch] = healed(ch).round().clamp(0.0, 255.0) as u8;
+            }
+            continue;
+        }
+        let a = healed(3).clamp(0.0, 255.0);
+        out.data[4 * i + 3] = a.round() as u8;
+        // Back from premultiplied; a pixel left transparent keeps its copy's colour.
+        if out.data[4 * i + 3] > 0 {
+            for ch in 0..3 {
+                out.data[4 * i + ch] = (healed(ch) * 255.0 / a).round().clamp(0.0, 255.0) as u8;
+            }
         }
     }
 }
@@ -307,6 +328,29 @@ mod tests {
         let mut out = opaque.clone();
         heal(&mut out, &opaque, &src, &known, false, 1.0);
         assert!(out.data.chunks(4).all(|p| p[3] == 255));
+    }
+
+    #[test]
+    fn a_transparent_backgrounds_colour_does_not_darken_a_fill() {
+        // Opaque grey on the left, transparent black on the right; the hole straddles
+        // them and is filled with grey from the left. Its steps to the transparent side
+        // say only that it turns transparent there: healed as straight colours, the
+        // background's black pulled the grey down (a dark smear).
+        let (w, h) = (32, 32);
+        let data = (0..w * h).flat_map(|i| if i % w < 16 { [150, 150, 150, 255] } else { [0; 4] }).collect();
+        let image = Rgba { width: w, height: h, data };
+        let hole = |i: usize| (12..20).contains(&(i % w)) && (12..20).contains(&(i / w));
+        let known: Vec<bool> = (0..w * h).map(|i| !hole(i)).collect();
+        let src: Vec<u32> = (0..w * h).map(|i| if hole(i) { i - 8 } else { i } as u32).collect();
+        let mut out = image.clone();
+        heal(&mut out, &image, &src, &known, false, 1.0);
+        let filled: Vec<&[u8]> = (0..w * h).filter(|&i| hole(i)).map(|i| &out.data[4 * i..4 * i + 4]).collect();
+        for p in &filled {
+            assert!(p[3] == 0 || p[..3].iter().all(|&v| v.abs_diff(150) <= 2), "{p:?}");
+        }
+        // The right of the hole has turned (mostly) transparent, its left stays opaque.
+        let alpha = |x: usize| (12..20).map(|y| out.data[4 * (y * w + x) + 3] as f32).sum::<f32>() / 8.0;
+        assert!(alpha(19) < 100.0 && alpha(12) > 150.0, "alpha {} at the left, {} at the right", alpha(12), alpha(19));
     }
 
     #[test]

@@ -1,5 +1,6 @@
 //! The raster type the texture engines work on: RGB in `f32` (0-255 scale), row major.
-//! RGBA bytes convert at the edges; alpha is not synthesized (output alpha is opaque).
+//! RGBA bytes convert at the edges; alpha is not synthesized (output alpha is opaque),
+//! but a fill matches, copies and heals it (`inpaint`).
 
 use crate::error::{invalid, Error, Result};
 
@@ -24,6 +25,11 @@ impl Rgba {
     /// measures read).
     pub fn rgb(&self) -> Vec<[u8; 3]> {
         self.data.chunks_exact(4).map(|p| [p[0], p[1], p[2]]).collect()
+    }
+
+    /// Whether not every pixel has the same alpha (a fill then matches and heals it).
+    pub fn alpha_varies(&self) -> bool {
+        self.data.chunks_exact(4).any(|p| p[3] != self.data[3])
     }
 }
 

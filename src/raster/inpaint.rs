@@ -174,6 +174,8 @@ impl Fill {
                 allowed: vec![Some(allowed)],
                 known: Some(self.known),
                 guide: None,
+                // Where the image's opacity varies, it is matched too (`synthesis::opacity`).
+                alpha: image.alpha_varies().then(|| image.data.chunks_exact(4).map(|p| p[3]).collect()),
                 kept_out: Some(self.kept_out),
             },
             ..Params::default()
@@ -192,8 +194,7 @@ impl Fill {
             let strength = if last && self.rematch { LAST_HEAL } else { 1.0 };
             super::heal::heal(&mut out, image, &src[0], known, params.tileable, strength);
             if !last {
-                let healed: Vec<[f32; 3]> = out.data.chunks_exact(4).map(|p| [0, 1, 2].map(|c| p[c] as f32)).collect();
-                job.rematch(&mut src[0], &healed, &mut rng);
+                job.rematch(&mut src[0], &out, &mut rng);
             }
         }
         Ok(out)

@@ -4,6 +4,7 @@
 
 use super::lanes::{px, Px, Sum};
 use super::mask;
+use super::opacity::{self, Opacity};
 use crate::error::{invalid, Result};
 use crate::raster::divisor::Divisor;
 use crate::raster::image::Image;
@@ -12,7 +13,8 @@ use crate::raster::pyramid::{self, Edge};
 use crate::rng::Rng;
 
 /// One level of an exemplar, its pixels padded to four lanes (`lanes`): the colour,
-/// and in the fourth lane the guide (scaled by its weight; 0 without a guide).
+/// and in the fourth lane the guide (scaled by its weight), or the alpha where it
+/// varies and there is no guide (`opacity`), else 0.
 pub(crate) struct Plane {
     pub width: usize,
     pub height: usize,
@@ -35,7 +37,7 @@ impl Plane {
         Plane { width: img.width, height: img.height, data, columns: Divisor::new(img.width), allowed: None }
     }
 
-    /// Sets the guide lane from a grey image of the plane's size, times `scale`.
+    /// Sets the fourth lane from a grey image of the plane's size, times `scale`.
     fn guide(&mut self, grey: &Image, scale: f32) {
         for (p, g) in self.data.iter_mut().zip(&grey.data) {
             p[3] = scale * g[0];
@@ -121,15 +123,27 @@ impl Exemplar {
     /// their colours are first filled from around them (`mask::fill`), so that coarser
     /// levels do not carry them, and each level's allowed positions are eroded from the
     /// finer one's (`mask::pyramid`). `guide`: a grey image of `img`'s size and its
-    /// lane's scale (see `Guide`). `kept_out` begins the message when no allowed
-    /// position is left ("The sample mask leaves", "The mask leaves").
+    /// lane's scale (see `Guide`). `alpha`: the pixels' alpha where it varies, and how
+    /// they carry it (`opacity`; in the fourth lane, filled by the mask as the colours
+    /// are, or in the colours where a guide holds the lane). `kept_out` begins the
+    /// message when no allowed position is left ("The sample mask leaves", "The mask
+    /// leaves").
     pub fn new(
         img: &Image,
         levels: usize,
         allowed: Option<&[bool]>,
         guide: Option<(&Image, f32)>,
+        alpha: Option<(&[u8], Opacity)>,
         kept_out: &str,
     ) -> Result<Exemplar> {
+        let compared;
+        let img = match alpha {
+            Some((a, opacity)) => {
+                compared = opacity.colours(img, a);
+                &compared
+            }
+            None => img,
+        };
         let filled;
         let img = match allowed {
             Some(a) => {
@@ -142,7 +156,17 @@ impl Exemplar {
         let upsample = |w: &[Image]| pyramid::upsample(&w[1], w[0].width, w[0].height);
         let mut planes: Vec<Plane> = images.iter().map(Plane::new).collect();
         let mut upsampled: Vec<Plane> = images.windows(2).map(|w| Plane::new(&upsample(w))).collect();
-        if let Some((grey, scale)) = guide {
+        let alpha_lane = match alpha {
+            Some((a, Opacity::Lane)) => {
+                let grey = opacity::grey(a, img.width, img.height);
+                Some(match allowed {
+                    Some(m) => mask::fill(&grey, m),
+                    None => grey,
+                })
+            }
+            _ => None,
+        };
+        if let Some((grey, scale)) = guide.or(alpha_lane.as_ref().map(|g| (g, opacity::ALPHA_LANE))) {
             let greys = pyramid::build(grey, levels, Edge::Clamp);
             planes.iter_mut().zip(&greys).for_each(|(p, g)| p.guide(g, scale));
             upsampled.iter_mut().zip(greys.windows(2)).for_each(|(p, w)| p.guide(&upsample(w), scale));

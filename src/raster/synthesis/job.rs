@@ -5,6 +5,7 @@ use super::exemplar::{distance, Exemplar, Offsets, Plane};
 use super::lanes::{px, Px};
 use super::mask;
 use super::mixer::{Mixer, MU_ONE};
+use super::opacity::Opacity;
 use super::pass::Pass;
 use super::{coarsest_side, default_levels, Params, Sources};
 use crate::error::{invalid, Error, Result};
@@ -60,6 +61,8 @@ pub struct Job {
     pub(crate) known: Option<Vec<Vec<bool>>>,
     /// The target guide at each level, finest first, scaled as the exemplars' guide lane.
     pub(crate) target: Option<Vec<Vec<f32>>>,
+    /// How the exemplar's pixels carry its opacity (`Constraints::alpha`).
+    pub(crate) opacity: Opacity,
 }
 
 /// How the coarsest level starts when it is not grown from noise.
@@ -169,12 +172,20 @@ impl Job {
                 Some(g)
             }
         };
+        if let Some(a) = &c.alpha {
+            if a.len() != e0.width * e0.height || exemplars.len() > 1 {
+                return invalid("Alpha is given for one exemplar, one value per pixel.");
+            }
+        }
+        let alpha = c.alpha.as_deref().filter(|a| a.iter().any(|&v| v != a[0]));
+        let opacity = Opacity::of(alpha.is_some(), guide.is_some());
         let exs: Vec<Exemplar> = exemplars
             .iter()
             .enumerate()
             .map(|(i, e)| {
                 let allowed = c.allowed.get(i).and_then(|a| a.as_deref());
-                Exemplar::new(e, levels, allowed, guide.map(|g| (&g.exemplar, g.scale())), c.kept_out())
+                let guide = guide.map(|g| (&g.exemplar, g.scale()));
+                Exemplar::new(e, levels, allowed, guide, alpha.map(|a| (a, opacity)), c.kept_out())
             })
             .collect::<Result<_>>()?;
         let sizes: Vec<_> = (0..levels).map(|l| (width.div_ceil(1 << l), height.div_ceil(1 << l))).collect();
@@ -217,6 +228,7 @@ impl Job {
             starts: OnceLock::new(),
             known,
             target,
+            opacity,
         })
     }
 

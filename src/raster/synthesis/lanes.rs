@@ -1,15 +1,16 @@
-//! Pixels as four `f32` lanes (red, green, blue, and a zero), and the sum of squared
+//! Pixels as four `f32` lanes (red, green, blue, and a fourth), and the sum of squared
 //! differences between neighbourhoods, the synthesis's inner loop.
 //!
-//! The fourth lane holds a guide's value (`synthesis::Guide`; 0 without one) and pads a
-//! pixel to 16 bytes, so that one SIMD instruction subtracts, squares and adds a whole
-//! pixel: built with `simd128` the wasm module uses `f32x4`, a native build the
+//! The fourth lane holds a guide's value (`synthesis::Guide`), or the alpha where it
+//! varies and no guide holds the lane (`opacity`), else 0, and pads a pixel to 16
+//! bytes, so that one SIMD instruction subtracts, squares and adds a whole pixel:
+//! built with `simd128` the wasm module uses `f32x4`, a native build the
 //! portable loop below, which LLVM turns into SSE, and the module for browsers without
 //! SIMD adds the four lanes one by one. Every build sums each lane on its own and adds
 //! the lanes in one order at the end, so all three give the same sums to the bit, and
 //! the same images.
 
-/// One pixel: red, green, blue on the 0-255 scale, and the guide (or 0).
+/// One pixel: red, green, blue on the 0-255 scale, and the guide, the alpha or 0.
 pub type Px = [f32; 4];
 
 /// A colour padded to a pixel.

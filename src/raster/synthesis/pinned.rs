@@ -25,7 +25,7 @@ use super::pass::{Map, Scratch};
 use super::reuse::Uses;
 use crate::error::Result;
 use crate::progress::Throttle;
-use crate::raster::image::wrap;
+use crate::raster::image::{wrap, Rgba};
 use crate::raster::neighbourhood::Shape;
 use crate::rng::Rng;
 use std::collections::VecDeque;
@@ -216,12 +216,15 @@ impl Job {
 
 impl Job {
     /// Each free pixel of the finest level matched again against `target` (the fill as
-    /// healed, RGB per output pixel, `heal`), in scanline order: the allowed position
-    /// whose 5 x 5 neighbourhood, centre included, is nearest the target's around the
-    /// pixel, among its source, its neighbours' continuations and a local random search.
+    /// healed, `heal`; put in lanes as the exemplar's pixels are, `opacity`), in
+    /// scanline order: the allowed position whose 5 x 5 neighbourhood, centre included,
+    /// is nearest the target's around the pixel, among its source, its neighbours'
+    /// continuations and a local random search.
     /// A pixel the heal had to lighten or darken then copies a position of that colour,
     /// and the next heal has less to correct (`REMATCH_ROUNDS`).
-    pub(crate) fn rematch(&self, src: &mut [u32], target: &[[f32; 3]], rng: &mut Rng) {
+    pub(crate) fn rematch(&self, src: &mut [u32], target: &Rgba, rng: &mut Rng) {
+        let target: Vec<Px> =
+            target.data.chunks_exact(4).map(|p| self.opacity.pixel([0, 1, 2, 3].map(|c| p[c] as f32))).collect();
         let (w, h) = self.sizes[0];
         let known = &self.known.as_ref().expect("a job with known pixels")[0];
         let ex = &self.mix.exs[0];
@@ -243,10 +246,7 @@ impl Job {
         for i in (0..w * h).filter(|&i| !known[i]) {
             let (x, y) = (i % w, i / w);
             f.clear();
-            f.extend(shape.own.iter().map(|&(dx, dy)| {
-                let [r, g, b] = target[at(x, y, dx, dy)];
-                [r, g, b, 0.0]
-            }));
+            f.extend(shape.own.iter().map(|&(dx, dy)| target[at(x, y, dx, dy)]));
             let score = |pos: u32, bound: f32| distance(ex, 0, pos, &shape, &off, &f, bound);
             let mut best = (score(src[i], f32::INFINITY), src[i]);
             for &(dx, dy) in &shape.own {
