@@ -962,3 +962,115 @@ fn upright_posts_along_an_arc_continue_round_it() {
         }
     }
 }
+
+/// The drawing synthesized over an output just large enough for it and a few steps
+/// round it (which holds it once: it is continued, not repeated).
+fn synth_alone(strokes: &[Stroke], margin: f64) -> StrokeResult {
+    let b = strokes.iter().skip(1).fold(strokes[0].bounds(), |r, s| r.union(s.bounds()));
+    let opts = StrokeOptions { width: b.width() + margin, height: b.height() + margin, ..Default::default() };
+    synthesize_strokes(strokes, &opts, &mut Silent).unwrap()
+}
+
+fn centre_of(s: &Stroke) -> Point {
+    let n = s.points.len() as f64;
+    let v = s.points.iter().fold(Vec2::ZERO, |m, p| m + Vec2::new(p[0], p[1]));
+    (v / n).to_point()
+}
+
+/// Leaves drawn along a wave with no stem (a new user's: grown, they were a scatter of
+/// leaves in rows, `Irregular`), with the default options: a curve, its drawn leaves
+/// kept, and carried on past each end by its end's own step, each leaf past them where
+/// the wave puts its next (the generator's leaves before and after the drawn ones).
+#[test]
+fn leaves_along_a_wave_with_no_stem_go_on_along_it() {
+    use patternsynth::vector::sequences::{drawn_by, HandTurn};
+    let mut offs: Vec<f64> = Vec::new();
+    for hand in [HandTurn::STEADY, HandTurn::PERSON] {
+        for seed in 1..=3 {
+            // (From five, a turn alike at every step carries the leaves within a hand's
+            // scatter: they are an arc's, `leaves_on_an_arc_continue_along_it`.)
+            for drawn in [6, 7, 8] {
+                let q = drawn_by(0.03, hand, seed).into_iter().find(|q| q.name == "leaves on a wavy stem").unwrap();
+                let mine = &q.strokes[2..2 + drawn];
+                let what = format!("{drawn} leaves, hand {:.3}, seed {seed}", hand.0);
+                let r = synth_alone(mine, 6.0 * q.step);
+                assert_eq!(r.structure, Structure::Curve, "{what}");
+                let v = centre_of(&r.strokes[0]) - centre_of(&mine[0]);
+                for (s, d) in r.strokes.iter().zip(mine) {
+                    assert!((centre_of(s) - (centre_of(d) + v)).hypot() < 1e-6, "{what}: a drawn leaf moved");
+                }
+                // (Where the output holds the curve twice it repeats it, each copy the
+                // curve moved: the first, the drawing's own, is the sources' period.)
+                let n = r.strokes.len();
+                let copy = (1..=n).find(|&p| n % p == 0 && (p..n).all(|i| r.sources[i] == r.sources[i % p])).unwrap();
+                let more = &r.strokes[drawn..copy];
+                assert!(more.len() >= 2, "{what}: {} leaves added", more.len());
+                // The truth past the drawn ones: the two before, and those after.
+                let truth: Vec<Point> = q.strokes[..2]
+                    .iter()
+                    .chain(&q.strokes[2 + drawn..])
+                    .chain(q.beyond.iter().map(|b| &b.0))
+                    .map(|s| centre_of(s) + v)
+                    .collect();
+                for s in more {
+                    let c = centre_of(s);
+                    let off = truth.iter().map(|t| t.distance(c)).fold(f64::INFINITY, f64::min) / q.step;
+                    // (The next leaf past an end, a step from a drawn one, and those after.)
+                    let next = mine.iter().any(|d| (centre_of(d) + v).distance(c) < 1.5 * q.step);
+                    let most = if next { 0.35 } else { 0.8 };
+                    assert!(off < most, "{what}: a leaf added {off:.2} of the step from the wave's");
+                    offs.push(off);
+                }
+            }
+        }
+    }
+    let (median, p90) = (quantile(&mut offs.clone(), 0.5), quantile(&mut offs, 0.9));
+    eprintln!("{} leaves added: off the wave's median {median:.3}, 90th percentile {p90:.3} of the step", offs.len());
+    assert!(median < 0.25 && p90 < 0.6, "off the wave's: median {median:.3}, p90 {p90:.3}");
+}
+
+/// A stem and three leaves on alternate sides of it (a new user's: the drawing came
+/// back as drawn, nothing added), with the default options: leaves all along the stem,
+/// each beginning on it, on alternate sides.
+#[test]
+fn a_stem_and_three_leaves_on_alternate_sides_go_all_along_it() {
+    use patternsynth::vector::sequences::{along_drawn, HandTurn};
+    for hand in [HandTurn::STEADY, HandTurn::PERSON] {
+        for wobble in [0.01, 0.03, 0.05] {
+            for seed in 1..=3 {
+                let q = along_drawn(wobble, hand, seed)
+                    .into_iter()
+                    .find(|q| q.name == "leaves alternating on a drawn wavy stem")
+                    .unwrap();
+                let what = format!("wobble {wobble}, hand {:.3}, seed {seed}", hand.0);
+                let r = synth_alone(&q.strokes[..4], 2.0 * q.step);
+                assert_eq!(r.structure, Structure::Curve, "{what}");
+                let stem: Vec<Point> = r.strokes[0].points.iter().map(|p| Point::new(p[0], p[1])).collect();
+                // Each leaf's base: where it begins; its side: which way it points
+                // across the stem there.
+                let (mut along, mut sides) = (Vec::new(), Vec::new());
+                for l in &r.strokes[1..] {
+                    let (base, tip) = (Point::new(l.points[0][0], l.points[0][1]), centre_of(l));
+                    let (k, off) = stem
+                        .windows(2)
+                        .enumerate()
+                        .map(|(k, w)| {
+                            let (d, e) = (w[1] - w[0], base - w[0]);
+                            (k, (e - d * (e.dot(d) / d.hypot2()).clamp(0.0, 1.0)).hypot())
+                        })
+                        .min_by(|x, y| x.1.total_cmp(&y.1))
+                        .unwrap();
+                    assert!(off < 0.2 * q.step, "{what}: a leaf begins {off:.1} off the stem");
+                    along.push(k);
+                    sides.push((stem[k + 1] - stem[k]).cross(tip - base) > 0.0);
+                }
+                // (The generator's stem carries sixteen leaves.)
+                assert!(along.len() >= 14, "{what}: {} leaves", along.len());
+                let mut order: Vec<usize> = (0..along.len()).collect();
+                order.sort_by_key(|&i| along[i]);
+                let flips = order.windows(2).filter(|w| sides[w[0]] != sides[w[1]]).count();
+                assert_eq!(flips, order.len() - 1, "{what}: leaves not on alternate sides");
+            }
+        }
+    }
+}

@@ -1,7 +1,7 @@
 //! The vector engine end to end: classify, grow, dress the grown elements with strokes,
 //! write SVG. This is the entry point the wasm layer and the tests call.
 
-use super::chain::{self, Chain, Structure};
+use super::chain::{self, Bending, Chain, Structure};
 use super::classify::{classify, median, propose_tolerances, Tolerances};
 use super::grow::{find_periods, fit_lattice, grow, Element, GrowOptions, Grown};
 use super::mesh::Mesh;
@@ -285,6 +285,19 @@ pub fn synthesize_strokes(
             let held = c.strokes() + beside.iter().map(Chain::strokes).sum::<usize>();
             (c.closes.is_some() && 3 * held >= 2 * strokes.len()) || c.upright || !lattice()
         });
+    // Copies along a curve whose turn changes (leaves along a wave, no stem drawn): no
+    // one step carries them. A chain read from them (a turn that carries each leaf near
+    // the next) went on round a circle, and with none, grown, they were a scatter
+    // (`chain::bending`).
+    let open =
+        along.as_ref().is_none_or(|(c, _)| c.closes.is_none() && !c.upright && c.structure() == Structure::Curve);
+    let bending = (open && joined.is_none() && periods.is_none() && motifs.copies.is_none())
+        .then(|| chain::find_bending(strokes))
+        .flatten()
+        .filter(|_| along.is_some() || !lattice());
+    if let Some(bending) = bending {
+        return along_bending(strokes, classification, &bending, opts, max_elements, progress).map_err(explain);
+    }
     if let Some((chain, beside)) = along {
         return along_chain(strokes, classification, chain, beside, opts, max_elements, progress).map_err(explain);
     }
@@ -479,6 +492,37 @@ fn along_chain(
         sources.push(from as u32);
     }
     continued(out, sources, classification, opts, chain.structure(), max_elements, progress)
+}
+
+/// The drawing, centred in the output, with its curve carried on past each end by the
+/// end's own step (`Bending::ends`).
+fn along_bending(
+    strokes: &[Stroke],
+    classification: Classification,
+    bending: &Bending,
+    opts: &StrokeOptions,
+    max_elements: usize,
+    progress: &mut dyn Progress,
+) -> Result<StrokeResult> {
+    let area = Rect::new(0.0, 0.0, opts.width, opts.height);
+    let bounds = strokes.iter().skip(1).fold(strokes[0].bounds(), |r, s| r.union(s.bounds()));
+    let v = area.center() - bounds.center();
+    let drawn: Vec<Stroke> = strokes.iter().map(|s| s.translated(v.x, v.y)).collect();
+    let seed = opts.variation.then_some(opts.seed);
+    let mut out = drawn.clone();
+    let mut sources: Vec<u32> = (0..strokes.len() as u32).collect();
+    for (end, by) in &bending.ends {
+        let room = max_elements.saturating_sub(out.len());
+        let (more, capped) = end.moved(v).extend_by(&drawn, area, seed, room, [*by as i64, 0]);
+        if capped {
+            return Err(too_large(max_elements));
+        }
+        for (s, from) in more {
+            out.push(s);
+            sources.push(from as u32);
+        }
+    }
+    continued(out, sources, classification, opts, Structure::Curve, max_elements, progress)
 }
 
 /// A curve continued as far as it goes (`out`, each stroke with the drawn one it

@@ -128,6 +128,20 @@ impl Chain {
         seed: Option<u64>,
         max: usize,
     ) -> (Vec<(Stroke, usize)>, bool) {
+        self.extend_by(strokes, area, seed, max, [MAX_STEPS; 2])
+    }
+
+    /// `extend`, at most `by[0]` steps past the last drawn copy and `by[1]` before the
+    /// first (a curve whose turn changes goes on past each end by its end's step, a
+    /// few copies: `Bending`).
+    pub fn extend_by(
+        &self,
+        strokes: &[Stroke],
+        area: Rect,
+        seed: Option<u64>,
+        max: usize,
+        by: [i64; 2],
+    ) -> (Vec<(Stroke, usize)>, bool) {
         let mut rng = seed.map(Rng::new);
         let l = self.members.len() as i64;
         let size = |s: &Stroke| s.bounds().size().to_vec2().hypot();
@@ -148,7 +162,7 @@ impl Chain {
             for (d, dir) in [1i64, -1].into_iter().enumerate() {
                 let Some(t) = next[d] else { continue };
                 next[d] = None;
-                if (t - if dir > 0 { l - 1 } else { 0 }).abs() > steps.min(MAX_STEPS) {
+                if (t - if dir > 0 { l - 1 } else { 0 }).abs() > steps.min(by[d]) {
                     continue;
                 }
                 let from = self.source(t, &mut rng);

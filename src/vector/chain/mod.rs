@@ -28,9 +28,11 @@
 //! the drawn copies since synthesis sees the whole drawing at once.
 
 pub mod bend;
+mod bending;
 mod carry;
 mod find;
 
+pub use bending::{find_bending, Bending};
 pub use find::{find, find_or_ring, find_ring, find_upright, ring_steps, rings_beside};
 
 use super::similarity::{mul, Similarity};

@@ -8,7 +8,8 @@
 use super::run::Run;
 use crate::vector::suggest::certainty::reach;
 
-/// Each gap along the path is within this factor of the median either way.
+/// Each gap along the path between copies of one kind is within this factor of the
+/// median either way.
 const GAP_SPREAD: f64 = 1.6;
 /// The hand's prior scatter of a copy's place, as a share of the gap, counted as
 /// `PRIOR_COPIES` copies.
@@ -32,14 +33,17 @@ impl Fit {
     /// The fit of `places` (the run's, unwrapped) over the hand-drawn copies at
     /// positions `hands`; `None` where the gaps are too uneven to carry on.
     pub(super) fn new(run: &Run, places: &[f64], hands: &[usize]) -> Option<Fit> {
-        let mut gaps: Vec<f64> = places.windows(2).map(|w| (w[1] - w[0]).abs()).collect();
+        // (Between copies of one kind: leaves on alternate sides of a stem need not sit
+        // half way between those of the other side, and a hand's at 29 and 51 of a
+        // period of 80 were taken for uneven.)
+        let stride = run.stride;
+        let mut gaps: Vec<f64> = places.windows(stride + 1).map(|w| (w[stride] - w[0]).abs()).collect();
         gaps.sort_by(f64::total_cmp);
         let median = *gaps.get(gaps.len() / 2)?;
         if median <= 0.0 || gaps.iter().any(|&g| g > GAP_SPREAD * median || g < median / GAP_SPREAD) {
             return None;
         }
         // (Hand-drawn copies only: an accepted one sits where the line put it.)
-        let stride = run.stride;
         let of_kind = |j: usize| hands.iter().copied().filter(move |&t| run.kind(t) == j);
         let means: Vec<(f64, f64, f64)> = (0..stride)
             .map(|j| {

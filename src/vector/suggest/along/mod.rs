@@ -207,8 +207,11 @@ fn ghosts(
     let (end, stride) = (run.end(), run.stride);
     let hands: Vec<usize> = (0..run.copies.len()).filter(|&t| hand(run.copies[t].index)).collect();
     let of_kind = |j: usize| hands.iter().copied().filter(move |&t| run.kind(t) == j);
-    // (Each kind seen at least twice: its own copies say how it lies on the path.)
-    if hands.len() < MIN_COPIES || (stride > 1 && (0..stride).any(|j| of_kind(j).count() < 2)) {
+    // (Each kind seen at least twice before a ghost is shown: its own copies say how it
+    // lies on the path. A synthesis, asked outright, goes on from one copy of a kind: a
+    // stem and three leaves on alternate sides came back as drawn, nothing added.)
+    let least = if sure { 2 } else { 1 };
+    if hands.len() < MIN_COPIES || (stride > 1 && (0..stride).any(|j| of_kind(j).count() < least)) {
         return None;
     }
     let fit = Fit::new(run, &run.places(path), &hands)?;
