@@ -138,3 +138,71 @@ test('on a phone, leaves round a circle drawn with a finger (begun between two l
     await close();
   }
 });
+
+/** A wave across the canvas with no stem drawn, and leaves every `gap` along it. */
+const wave = (x) => [x, 250 + 50 * Math.sin((x - 400) / 64)];
+function waveSites(from, gap, count) {
+  const out = [];
+  let along = 0;
+  for (let x = from; out.length < count; x += 0.25) {
+    const [p, q] = [wave(x), wave(x + 0.25)];
+    if (out.length === 0 || along >= gap) {
+      out.push([p, Math.atan2(q[1] - p[1], q[0] - p[0])]);
+      along = 0;
+    }
+    along += Math.hypot(q[0] - p[0], q[1] - p[1]);
+  }
+  return out;
+}
+
+test('leaves drawn along a wave with no stem, and a stem with three leaves on alternate sides, synthesize along their curves', async () => {
+  mkdirSync('out', { recursive: true });
+  const synthesize = async (page) => {
+    await page.click('#synthesize');
+    await page.waitForFunction(() => /^(Done\.|.*error.*)$/i.test(document.querySelector('#messages').textContent) || document.querySelector('#messages .error'), null, { timeout: 120000 });
+    assert.equal(await page.textContent('#messages'), 'Done.');
+    await page.waitForFunction(() => document.querySelector('#preview canvas, #preview img'));
+    return page.textContent('#result-info');
+  };
+  {
+    // Six leaves up a wave and over its crest, by hand (each with its own wobble).
+    const { page, close } = await openEmptyCanvas({ height: 1000 });
+    try {
+      for (const [k, site] of waveSites(250, 45, 6).entries()) await drawPolyline(page, leaf(site, 0.6, k), 2);
+      const info = await synthesize(page);
+      await page.screenshot({ path: 'out/wave-synthesized.png' });
+      // (Grown, they were a scatter of leaves in rows: "irregular".)
+      assert.match(info, /continued along its curve/, info);
+      assert.ok(Number(info.split(' ')[0]) > 6, info);
+      assert.equal(await strokeCount(page), 6, 'the drawing is kept as drawn');
+    } finally {
+      await close();
+    }
+  }
+  {
+    // The stem, then three leaves, each on the other side from the one before.
+    const { page, close } = await openEmptyCanvas({ height: 1000 });
+    try {
+      await drawPolyline(page, STEM, 2);
+      const at = sites(80, 50, 3);
+      for (let k = 0; k < 3; k++) {
+        const [p, phi] = at[k];
+        // (The other side: the leaf mirrored across the stem's direction.)
+        const pts = leaf([p, phi], 0.6, k).map(([x, y]) => {
+          const [dx, dy] = [x - p[0], y - p[1]], [c, s] = [Math.cos(phi), Math.sin(phi)];
+          const [u, v] = [dx * c + dy * s, -dx * s + dy * c];
+          const w = k % 2 ? -v : v;
+          return [p[0] + u * c - w * s, p[1] + u * s + w * c];
+        });
+        await drawPolyline(page, pts, 2);
+      }
+      const info = await synthesize(page);
+      await page.screenshot({ path: 'out/vine-alternate-synthesized.png' });
+      // (The drawing came back as drawn, nothing added.) The stem carries about 19.
+      assert.match(info, /continued along its curve/, info);
+      assert.ok(Number(info.split(' ')[0]) >= 15, info);
+    } finally {
+      await close();
+    }
+  }
+});
