@@ -16,8 +16,12 @@ const background = (f) => {
   const url = `data:image/svg+xml;base64,${Buffer.from(svg).toString('base64')}`;
   return `<div style="width:400px;height:400px;background:url(${url}) 0 0/${2 * w}px ${2 * h}px repeat"></div>`;
 };
-const cells = files.map((f) => `<figure><figcaption>${f}</figcaption>${tile ? background(f) : readFileSync(f, 'utf8')}</figure>`).join('');
+// (Each SVG as an image of its own: inline, their ids (`<use href="#s0">`) collide and
+// every SVG after the first drew the first one's shapes.)
+const image = (f) => `<img src="data:image/svg+xml;base64,${Buffer.from(readFileSync(f, 'utf8')).toString('base64')}">`;
+const cells = files.map((f) => `<figure><figcaption>${f}</figcaption>${tile ? background(f) : image(f)}</figure>`).join('');
 await page.setContent(`<style>body{margin:0;display:flex;flex-wrap:wrap;font:12px sans-serif;background:#fff}
-  figure{margin:4px;border:1px solid #ccc} svg{width:480px;height:400px;display:block}</style>${cells}`);
+  figure{margin:4px;border:1px solid #ccc} img{width:480px;height:400px;display:block;object-fit:contain}</style>${cells}`);
+await page.waitForFunction(() => [...document.images].every((i) => i.complete));
 await page.screenshot({ path: outPng, fullPage: true });
 await browser.close();

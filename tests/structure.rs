@@ -1074,3 +1074,46 @@ fn a_stem_and_three_leaves_on_alternate_sides_go_all_along_it() {
         }
     }
 }
+
+/// Leaves drawn along waves and S-curves with no stem by a new user's generator
+/// (tests/fixtures/curves/trial_*: an S, a strong wave, gentle waves with and without
+/// an inflection, small arcs along an S, a gentle arc of ten leaves), at the page's
+/// default output of 1200 x 800. Before: irregular (a scatter, the drawn leaves lost:
+/// 1 of 8 kept), a straight row, or a circle closed round from one end. Now each is a
+/// curve holding the drawing as drawn, carried on past its ends a step at a time (each
+/// added copy a step from its nearest, none on another), and repeated.
+#[test]
+fn a_new_users_waves_and_s_curves_go_on_as_curves() {
+    let page = StrokeOptions { width: 1200.0, height: 800.0, ..Default::default() };
+    for name in [
+        "trial_s_curve",
+        "trial_strong_wave",
+        "trial_gentle_wave_inflection",
+        "trial_gentle_wave",
+        "trial_s_curve_arcs",
+        "trial_gentle_arc",
+    ] {
+        let path = format!("{}/tests/fixtures/curves/{name}.json", env!("CARGO_MANIFEST_DIR"));
+        let drawn: Vec<Stroke> = serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
+        let r = synthesize_strokes(&drawn, &page, &mut Silent).unwrap();
+        assert_eq!(r.structure, Structure::Curve, "{name}");
+        let n = r.strokes.len();
+        let copy = (1..=n).find(|&p| n % p == 0 && (p..n).all(|i| r.sources[i] == r.sources[i % p])).unwrap();
+        assert!(n >= 2 * copy, "{name}: repeated over the output ({n} strokes, {copy} a copy)");
+        let v = centre_of(&r.strokes[0]) - centre_of(&drawn[0]);
+        for (s, d) in r.strokes.iter().zip(&drawn) {
+            assert!((centre_of(s) - (centre_of(d) + v)).hypot() < 1e-6, "{name}: a drawn leaf moved");
+        }
+        let centres: Vec<Point> = r.strokes[..copy].iter().map(centre_of).collect();
+        let nearest = |i: usize| {
+            (0..copy).filter(|&j| j != i).map(|j| centres[i].distance(centres[j])).fold(f64::INFINITY, f64::min)
+        };
+        let mut drawn_gaps: Vec<f64> = (0..drawn.len()).map(nearest).collect();
+        let step = quantile(&mut drawn_gaps, 0.5);
+        assert!(copy >= drawn.len() + 2, "{name}: {} added", copy - drawn.len());
+        for i in drawn.len()..copy {
+            let gap = nearest(i) / step;
+            assert!((0.6..1.6).contains(&gap), "{name}: an added leaf {gap:.2} of a step from its nearest");
+        }
+    }
+}

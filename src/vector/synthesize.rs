@@ -277,28 +277,33 @@ pub fn synthesize_strokes(
         .then(|| chain::find_or_ring(strokes))
         .flatten()
         .filter(|(_, whole)| *whole || !lattice())
-        .map(|(c, _)| {
+        .map(|(c, whole)| {
             let beside = if c.closes.is_some() { chain::rings_beside(strokes, &c) } else { Vec::new() };
-            (c, beside)
+            (c, beside, whole)
         })
-        .filter(|(c, beside)| {
+        .filter(|(c, beside, _)| {
             let held = c.strokes() + beside.iter().map(Chain::strokes).sum::<usize>();
             (c.closes.is_some() && 3 * held >= 2 * strokes.len()) || c.upright || !lattice()
         });
-    // Copies along a curve whose turn changes (leaves along a wave, no stem drawn): no
-    // one step carries them. A chain read from them (a turn that carries each leaf near
-    // the next) went on round a circle, and with none, grown, they were a scatter
-    // (`chain::bending`).
-    let open =
-        along.as_ref().is_none_or(|(c, _)| c.closes.is_none() && !c.upright && c.structure() == Structure::Curve);
-    let bending = (open && joined.is_none() && periods.is_none() && motifs.copies.is_none())
+    // Copies along a curve whose turn changes (leaves along a wave or an S, no stem
+    // drawn): no one step carries them. A chain read from them (a turn that carries each
+    // leaf near the next, or a ring of a few of them) went on round a circle or closed
+    // into rosettes, and with none, grown, they were a scatter (`chain::bending`). Where
+    // no chain holds, a curve whose turn does not change goes on so too.
+    let bending = (joined.is_none() && periods.is_none() && motifs.copies.is_none())
         .then(|| chain::find_bending(strokes))
         .flatten()
-        .filter(|_| along.is_some() || !lattice());
+        .filter(|b| match &along {
+            Some((c, _, whole)) => {
+                let open = c.closes.is_none() && c.structure() == Structure::Curve;
+                b.changes && !c.upright && (open || !whole)
+            }
+            None => !lattice(),
+        });
     if let Some(bending) = bending {
         return along_bending(strokes, classification, &bending, opts, max_elements, progress).map_err(explain);
     }
-    if let Some((chain, beside)) = along {
+    if let Some((chain, beside, _)) = along {
         return along_chain(strokes, classification, chain, beside, opts, max_elements, progress).map_err(explain);
     }
     let meshed = joined.is_some();

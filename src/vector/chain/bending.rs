@@ -22,12 +22,14 @@ use std::f64::consts::PI;
 /// size, and its scale either way.
 const SHAPE: f64 = 0.15;
 const MAX_SCALE: f64 = 1.3;
-/// Each move from a copy to the next is within this factor of the median either way...
-const MOVE: f64 = 1.5;
-/// ...and turns from the one before by at most this (radians, about 46 degrees: a
-/// tight sine turns its leaves by up to 1.3 radians a leaf, but a path that doubles
-/// back is no curve)...
-const MOVE_TURN: f64 = 0.8;
+/// Each move from a copy to the next is within this factor of the median either way (a
+/// leaf's centre lies off the curve it is drawn along, on the outside of one bend of an
+/// S and the inside of the next: a new user's leaves of an S lay 43 and 70 apart)...
+const MOVE: f64 = 1.8;
+/// ...and turns from the one before by at most this (radians, about 69 degrees: a
+/// strong wave turned its leaves' places by 47 degrees a step, a tight crest by 65; a
+/// path that doubles back is no curve)...
+const MOVE_TURN: f64 = 1.2;
 /// ...and the copies' poses in the curve's frame agree within this (radians, about 20
 /// degrees: a person's hand turns each copy by a few degrees, and the tangent at a copy
 /// is read from the places either side of it).
@@ -36,16 +38,22 @@ const POSE: f64 = 0.35;
 /// degrees): copies that keep their pose are a row's, the lattice's. (Not the turn from
 /// the first copy to the last: an S turns back by as much as it turned.)
 const LEAST_TURN: f64 = 0.3;
-/// The copies' steps turn by amounts at least this far apart (radians, about 17
-/// degrees): a person's hand turns each copy about 2.5 degrees at random, so that the
+/// The copies' steps change their turn where their turns spread over at least this
+/// (radians, about 17 degrees): a person's hand turns each copy about 2.5 degrees at random, so that the
 /// steps of eight leaves along an arc, alike but for it, spread over about 10 degrees.
 const CHANGE: f64 = 0.3;
-/// ...and each by at most this much from the one before (radians, about 29 degrees: a
-/// wave changes its turn gradually, where two mirrored arcs drawn for each petal of a
-/// ring turn by turns one way and the other, by 80 degrees and more; a person's hand,
-/// turning each leaf by a few degrees, put 25 degrees between two steps of a wave
-/// turning 10 degrees a step more each step).
-const SMOOTH: f64 = 0.5;
+/// ...or turn one way past this and the other way past it (radians, about 3 degrees: a
+/// gentle wave's inflection, 13 degrees a step one way and 4 the other);
+const INFLECTS: f64 = 0.05;
+/// Each step's turn changes from the one before by at most this (radians, about 46
+/// degrees: a tight S reversed from 24 degrees a step to -9 in one)...
+const SMOOTH: f64 = 0.8;
+/// ...and not one way, the other and back by more than this each (radians, 20
+/// degrees: two mirrored arcs drawn for each petal of a ring turn by 80 degrees one way
+/// and 30 the other, by turns; a strong wave's crest turned 28, 48 and 19 degrees a
+/// step, one change back; a person's hand, turning each leaf a few degrees at random,
+/// changes a wave's steps by about 6 degrees either way).
+const ZIGZAG: f64 = 0.35;
 /// Past each end, the curve goes on by at most this share of its drawn copies' count
 /// (a guess, and further out a worse one: a wave's leaves three steps past six drawn
 /// were 1.1-1.5 steps off the wave's own)...
@@ -61,6 +69,9 @@ const ON_TURN: f64 = PI / 3.0;
 pub struct Bending {
     pub members: Vec<usize>,
     pub ends: [(Chain, usize); 2],
+    /// The steps' turn changes (by `CHANGE`, or from one way to the other past
+    /// `INFLECTS`): no chain's one step carries the copies.
+    pub changes: bool,
 }
 
 /// The drawing as copies of one stroke along a curve whose turn changes (`Bending`):
@@ -68,7 +79,8 @@ pub struct Bending {
 /// of those left to the one before, from the copy furthest from their mean), each a
 /// move on from the last (`MOVE`, `MOVE_TURN`), lying alike in the curve's frame
 /// (`POSE`), some turned from the first by at least `LEAST_TURN`, the steps' turns
-/// changing by at least `CHANGE` and gradually (`SMOOTH`).
+/// changing gradually (`SMOOTH`, `ZIGZAG`); whether they change at all (`changes`) is
+/// for the caller to weigh against a chain.
 pub fn find_bending(strokes: &[Stroke]) -> Option<Bending> {
     let n = strokes.len();
     if !(4..=super::MAX_STROKES).contains(&n) || strokes.iter().any(Stroke::is_dot) {
@@ -125,21 +137,33 @@ pub fn find_bending(strokes: &[Stroke]) -> Option<Bending> {
         return None;
     }
     // (The copies' own turns, each from the first.)
-    let headings: Vec<f64> = steps.iter().scan(0.0, |h, s| Some(*h + s.turn())).collect();
+    let headings: Vec<f64> = steps
+        .iter()
+        .scan(0.0, |h, s| {
+            *h += s.turn();
+            Some(*h)
+        })
+        .collect();
     let spread = headings.iter().fold(0.0f64, |m, h| m.max(h.abs()));
     if spread < LEAST_TURN {
         return None;
     }
-    // (A turn alike at every step is a chain's: an arc, read from all its copies.)
-    let turns = steps.iter().map(Similarity::turn);
-    let (low, high) = turns.fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), t| (l.min(t), h.max(t)));
-    if high - low < CHANGE || steps.windows(2).any(|w| wrap(w[1].turn() - w[0].turn()).abs() > SMOOTH) {
+    // The turn changes gradually, not by turns one way and the other (mirrored arcs).
+    let changes: Vec<f64> = steps.windows(2).map(|w| wrap(w[1].turn() - w[0].turn())).collect();
+    if changes.iter().any(|c| c.abs() > SMOOTH)
+        || changes.windows(3).any(|c| c[0] * c[1] < 0.0 && c[1] * c[2] < 0.0 && c.iter().all(|c| c.abs() > ZIGZAG))
+    {
         return None;
     }
+    // (A turn alike at every step is a chain's, an arc read from all its copies, where
+    // one is found.)
+    let turns = steps.iter().map(Similarity::turn);
+    let (low, high) = turns.fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), t| (l.min(t), h.max(t)));
+    let changes = high - low >= CHANGE || (high > INFLECTS && low < -INFLECTS);
     let reversed: Vec<usize> = order.iter().rev().copied().collect();
     let inverse: Vec<Similarity> = steps.iter().rev().map(|s| s.inverse()).collect::<Option<_>>()?;
     let ends = [end(&reversed, &inverse, &places, strokes.len())?, end(&order, &steps, &places, strokes.len())?];
-    Some(Bending { members: order, ends })
+    Some(Bending { members: order, ends, changes })
 }
 
 /// The copies in order along the curve through `places`: from the one furthest from
