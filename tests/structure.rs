@@ -1077,7 +1077,8 @@ fn a_stem_and_three_leaves_on_alternate_sides_go_all_along_it() {
 
 /// Leaves drawn along waves and S-curves with no stem by a new user's generator
 /// (tests/fixtures/curves/trial_*: an S, a strong wave, gentle waves with and without
-/// an inflection, small arcs along an S, a gentle arc of ten leaves), at the page's
+/// an inflection, small arcs along an S, a gentle arc of ten leaves, an S of leaves
+/// each drawn with its midrib), at the page's
 /// default output of 1200 x 800. Before: irregular (a scatter, the drawn leaves lost:
 /// 1 of 8 kept), a straight row, or a circle closed round from one end. Now each is a
 /// curve holding the drawing as drawn, carried on past its ends a step at a time (each
@@ -1092,6 +1093,7 @@ fn a_new_users_waves_and_s_curves_go_on_as_curves() {
         "trial_gentle_wave",
         "trial_s_curve_arcs",
         "trial_gentle_arc",
+        "trial_s_curve_midribs",
     ] {
         let path = format!("{}/tests/fixtures/curves/{name}.json", env!("CARGO_MANIFEST_DIR"));
         let drawn: Vec<Stroke> = serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
@@ -1104,7 +1106,16 @@ fn a_new_users_waves_and_s_curves_go_on_as_curves() {
         for (s, d) in r.strokes.iter().zip(&drawn) {
             assert!((centre_of(s) - (centre_of(d) + v)).hypot() < 1e-6, "{name}: a drawn leaf moved");
         }
-        let centres: Vec<Point> = r.strokes[..copy].iter().map(centre_of).collect();
+        // (Of a motif of several strokes, its copies' largest strokes: the leaves.)
+        let big = |s: &Stroke| s.bounds().size().to_vec2().hypot();
+        let largest = drawn.iter().map(big).fold(0.0, f64::max);
+        let leaf = |s: &Stroke| big(s) > 0.6 * largest;
+        let parts = r.strokes[..copy].len() as f64 / r.strokes[..copy].iter().filter(|s| leaf(s)).count() as f64;
+        assert_eq!(parts, drawn.len() as f64 / drawn.iter().filter(|s| leaf(s)).count() as f64, "{name}: copies whole");
+        let drawn: Vec<Stroke> = drawn.iter().filter(|s| leaf(s)).cloned().collect();
+        let first: Vec<&Stroke> = r.strokes[..copy].iter().filter(|s| leaf(s)).collect();
+        let copy = first.len();
+        let centres: Vec<Point> = first.iter().map(|s| centre_of(s)).collect();
         let nearest = |i: usize| {
             (0..copy).filter(|&j| j != i).map(|j| centres[i].distance(centres[j])).fold(f64::INFINITY, f64::min)
         };

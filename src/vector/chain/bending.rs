@@ -74,25 +74,25 @@ pub struct Bending {
     pub changes: bool,
 }
 
-/// The drawing as copies of one stroke along a curve whose turn changes (`Bending`):
-/// every stroke one shape, in order along the curve by their places (each the nearest
+/// The drawing as copies of a motif along a curve whose turn changes (`Bending`): its
+/// largest stroke's copies (`motif`; each copy's other strokes carried with it), in
+/// order along the curve by their places (each the nearest
 /// of those left to the one before, from the copy furthest from their mean), each a
 /// move on from the last (`MOVE`, `MOVE_TURN`), lying alike in the curve's frame
 /// (`POSE`), some turned from the first by at least `LEAST_TURN`, the steps' turns
 /// changing gradually (`SMOOTH`, `ZIGZAG`); whether they change at all (`changes`) is
 /// for the caller to weigh against a chain.
 pub fn find_bending(strokes: &[Stroke]) -> Option<Bending> {
-    let n = strokes.len();
-    if !(4..=super::MAX_STROKES).contains(&n) || strokes.iter().any(Stroke::is_dot) {
+    if !(4..=super::MAX_STROKES).contains(&strokes.len()) {
         return None;
     }
     let sampled: Vec<Vec<Point>> = strokes.iter().map(samples).collect();
     let size = |k: usize| strokes[k].bounds().size().to_vec2().hypot();
-    if !(1..n).all(|j| !relations(&sampled[0], &sampled[j], size(0), SHAPE, MAX_SCALE).is_empty()) {
-        return None;
-    }
     let places: Vec<Point> = sampled.iter().map(|s| centroid(s)).collect();
-    let order = along(&places)?;
+    let (copies, companions) = motif(strokes, &sampled, &places)?;
+    let n = copies.len();
+    let order: Vec<usize> =
+        along(&copies.iter().map(|&k| places[k]).collect::<Vec<_>>())?.into_iter().map(|k| copies[k]).collect();
     let at: Vec<Point> = order.iter().map(|&k| places[k]).collect();
     let moves: Vec<Vec2> = at.windows(2).map(|w| w[1] - w[0]).collect();
     let mut lengths: Vec<f64> = moves.iter().map(|m| m.hypot()).collect();
@@ -162,8 +162,43 @@ pub fn find_bending(strokes: &[Stroke]) -> Option<Bending> {
     let changes = high - low >= CHANGE || (high > INFLECTS && low < -INFLECTS);
     let reversed: Vec<usize> = order.iter().rev().copied().collect();
     let inverse: Vec<Similarity> = steps.iter().rev().map(|s| s.inverse()).collect::<Option<_>>()?;
-    let ends = [end(&reversed, &inverse, &places, strokes.len())?, end(&order, &steps, &places, strokes.len())?];
+    let ends = [end(&reversed, &inverse, &places, &companions)?, end(&order, &steps, &places, &companions)?];
     Some(Bending { members: order, ends, changes })
+}
+
+/// The copies of the drawing's motif: the strokes of its largest stroke's shape (not a
+/// dot), at least four, and each other stroke (a leaf's midrib, its dot) with the copy
+/// whose centre is nearest it, within that copy's size, in drawing order (indexed by
+/// stroke); `None` unless every copy holds as many (each whole).
+fn motif(strokes: &[Stroke], sampled: &[Vec<Point>], places: &[Point]) -> Option<(Vec<usize>, Vec<Vec<usize>>)> {
+    let n = strokes.len();
+    let size = |k: usize| strokes[k].bounds().size().to_vec2().hypot();
+    let big = (0..n).max_by(|&x, &y| size(x).total_cmp(&size(y)))?;
+    if strokes[big].is_dot() {
+        return None;
+    }
+    let copies: Vec<usize> = (0..n)
+        .filter(|&j| {
+            j == big
+                || (!strokes[j].is_dot()
+                    && size(j) * MAX_SCALE >= size(big)
+                    && !relations(&sampled[big], &sampled[j], size(big), SHAPE, MAX_SCALE).is_empty())
+        })
+        .collect();
+    if copies.len() < 4 {
+        return None;
+    }
+    let mut parts = vec![Vec::new(); n];
+    for j in (0..n).filter(|j| !copies.contains(j)) {
+        let &m =
+            copies.iter().min_by(|&&x, &&y| places[x].distance(places[j]).total_cmp(&places[y].distance(places[j])))?;
+        if places[m].distance(places[j]) > size(m) {
+            return None;
+        }
+        parts[m].push(j);
+    }
+    let count = parts[copies[0]].len();
+    copies.iter().all(|&m| parts[m].len() == count).then_some((copies, parts))
 }
 
 /// The copies in order along the curve through `places`: from the one furthest from
@@ -195,8 +230,9 @@ fn along(places: &[Point]) -> Option<Vec<usize>> {
 /// scaled by their mean scale, and carrying
 /// the one before the last onto the last (the next copy is the last move turned so);
 /// and how many copies it goes on by (`ON`, `ON_TURN`).
-fn end(order: &[usize], steps: &[Similarity], places: &[Point], drawn: usize) -> Option<(Chain, usize)> {
+fn end(order: &[usize], steps: &[Similarity], places: &[Point], parts: &[Vec<usize>]) -> Option<(Chain, usize)> {
     let k = order.len();
+    let drawn = k;
     let last = &steps[steps.len().saturating_sub(3)..];
     let turns: Vec<f64> = last.iter().map(Similarity::turn).collect();
     let turn = match turns[..] {
@@ -208,7 +244,7 @@ fn end(order: &[usize], steps: &[Similarity], places: &[Point], drawn: usize) ->
     let members: Vec<usize> = order[k - 2..].to_vec();
     let b = places[members[1]].to_vec2() - mul(a, places[members[0]].to_vec2());
     let by = ((ON * drawn as f64).floor() as usize).min((ON_TURN / turn.abs().max(1e-9)).floor() as usize);
-    let companions = vec![Vec::new(); members.len()];
+    let companions = members.iter().map(|&m| parts[m].clone()).collect();
     Some((Chain { members, companions, step: Similarity { a, b }, upright: false, closes: None }, by))
 }
 
@@ -275,6 +311,28 @@ mod tests {
             let d = p.distance(want);
             assert!(d < 0.2 * 40.0, "{p:?} is {d:.1} off");
         }
+    }
+
+    #[test]
+    fn a_leaf_with_its_midrib_goes_on_whole() {
+        // Each leaf drawn with its midrib, a line along it from its base.
+        let leaves = wave(6, -150.0, 40.0);
+        let mut drawn = Vec::new();
+        for l in &leaves {
+            let (base, tip) = (l.points[0], l.points[12]);
+            drawn.push(l.clone());
+            drawn.push(Stroke::new(vec![base, [0.5 * (base[0] + tip[0]), 0.5 * (base[1] + tip[1])], tip], 1.0, None));
+        }
+        let b = find_bending(&drawn).expect("leaves with midribs along a wave");
+        assert_eq!(b.members.len(), 6);
+        for (end, _) in &b.ends {
+            for (m, parts) in end.members.iter().zip(&end.companions) {
+                assert_eq!(parts, &vec![m + 1], "a leaf's midrib goes with it");
+            }
+        }
+        // A midrib far from any leaf: no motif of whole copies.
+        drawn[3] = drawn[3].translated(200.0, 200.0);
+        assert!(find_bending(&drawn).is_none());
     }
 
     #[test]
