@@ -99,6 +99,7 @@ pub fn inpaint_texture(
         torus: false,
         seed: opts.seed,
         levels: opts.levels,
+        coarsest: None,
         neighbourhood: opts.neighbourhood,
         detail_levels: FILL_DETAIL_LEVELS,
         rematch: true,
@@ -116,6 +117,10 @@ pub struct Fill {
     pub torus: bool,
     pub seed: u64,
     pub levels: Option<usize>,
+    /// Without `levels`, the short side the coarsest exemplar level aims at
+    /// (`synthesis::default_levels`), or `None` for the job's own aim
+    /// (`synthesis::coarsest_side`).
+    pub coarsest: Option<f64>,
     pub neighbourhood: usize,
     /// The finest levels matched with 5 x 5 neighbourhoods (`Params::detail_levels`).
     pub detail_levels: usize,
@@ -166,7 +171,7 @@ impl Fill {
             width: image.width,
             height: image.height,
             seed: self.seed,
-            levels: self.levels,
+            levels: self.levels.or_else(|| self.coarsest.map(|c| synthesis::default_levels(&[&img], w, h, side, c))),
             neighbourhood: side,
             detail_levels: self.detail_levels,
             tileable: self.torus,
