@@ -518,13 +518,28 @@ fn along_bending(
     let mut sources: Vec<u32> = (0..strokes.len() as u32).collect();
     for (end, by) in &bending.ends {
         let room = max_elements.saturating_sub(out.len());
-        let (more, capped) = end.moved(v).extend_by(&drawn, area, seed, room, [*by as i64, 0]);
+        let end = end.moved(v);
+        let (more, capped) = end.extend_by(&drawn, area, seed, room, [*by as i64, 0]);
         if capped {
             return Err(too_large(max_elements));
         }
-        for (s, from) in more {
-            out.push(s);
-            sources.push(from as u32);
+        // Copy by copy (its stroke and its others), none where a stroke is already
+        // placed within half a step: a curve whose end curls back, or a C whose ends
+        // nearly meet, would lay two leaves in one place.
+        let c = drawn[end.members[0]].reference_point();
+        let near = 0.5 * end.step.apply(c).distance(c);
+        // (Each copy begins with its member's stroke, kept wherever the copy is; its
+        // others only inside the output.)
+        let member = end.members[0];
+        for copy in more.chunk_by(|_, (_, from)| *from != member) {
+            let at = copy[0].0.reference_point();
+            if out.iter().any(|s| s.reference_point().distance(at) < near) {
+                break;
+            }
+            for (s, from) in copy {
+                out.push(s.clone());
+                sources.push(*from as u32);
+            }
         }
     }
     continued(out, sources, classification, opts, Structure::Curve, max_elements, progress)

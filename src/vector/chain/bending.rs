@@ -4,7 +4,7 @@
 //! a similarity: a step on along the curve, turned as the curve turns there, its pose
 //! in the curve's frame kept. Xing et al.'s local similarity, read at each end: the
 //! curve goes on past its ends as its last copies step (`Bending::ends`), a few copies
-//! and no further than a bend the drawing shows (a constant step carried far curls the
+//! and at most 60 degrees past an end's tangent (a constant step carried far curls the
 //! curve into a circle).
 //!
 //! Departs from `find`, which asks one step of the whole drawing: a chain fitted to
@@ -61,6 +61,8 @@ const ON: f64 = 1.0 / 3.0;
 /// ...and while it turns by at most this much past the end's tangent (radians, 60
 /// degrees).
 const ON_TURN: f64 = PI / 3.0;
+/// The step past an end scales by at most this either way.
+const SCALE: f64 = 1.05;
 
 /// Copies along a curve whose turn changes: the drawn copies in order along it, and at
 /// each end a chain of its last copies (the first end's read backwards) whose step
@@ -202,8 +204,8 @@ fn motif(strokes: &[Stroke], sampled: &[Vec<Point>], places: &[Point]) -> Option
 }
 
 /// The copies in order along the curve through `places`: from the one furthest from
-/// their mean, each the nearest of those left to the one before; `None` where that
-/// jumps back over the way come (a move longer than twice the one before).
+/// their mean, each the nearest of those left to the one before (an order that jumps
+/// back over the way come fails the caller's `MOVE` test).
 fn along(places: &[Point]) -> Option<Vec<usize>> {
     let n = places.len();
     let mean = (places.iter().fold(Vec2::ZERO, |s, p| s + p.to_vec2()) / n as f64).to_point();
@@ -222,14 +224,17 @@ fn along(places: &[Point]) -> Option<Vec<usize>> {
     Some(order)
 }
 
-/// The chain of the last two copies of `order`, with the step that carries the curve
-/// on past the last: turned as the last three `steps`' turns go on (a line through
-/// them, taken one step on: leaves over a wave's crest turn less each step, and their
-/// mean turn put the next 0.24 of a step off), but never more than the latest two
+/// The chain of the last copy of `order`, with the step that carries the curve on past
+/// it: turned by the last of the last three `steps`' turns plus their change a step
+/// (half the first's to the last's: leaves over a wave's crest turn less each step, and
+/// their mean turn put the next 0.24 of a step off), but never more than the latest two
 /// turned, nor the other way (carried on, a growing turn curls the curve into a knot),
-/// scaled by their mean scale, and carrying
-/// the one before the last onto the last (the next copy is the last move turned so);
-/// and how many copies it goes on by (`ON`, `ON_TURN`).
+/// scaled by their mean scale within `SCALE` (a scale read from three copies, carried a
+/// third of the way again, made a spiral), and carrying the one before the last onto
+/// the last (the next copy is the last move turned so); and how many copies it goes on
+/// by (`ON`, `ON_TURN`). (The last copy alone is carried: with variation, the one
+/// before it, carried two steps, turned by twice the extrapolated turn, and the copies
+/// past an end alternated in pose.)
 fn end(order: &[usize], steps: &[Similarity], places: &[Point], parts: &[Vec<usize>]) -> Option<(Chain, usize)> {
     let k = order.len();
     let drawn = k;
@@ -239,10 +244,11 @@ fn end(order: &[usize], steps: &[Similarity], places: &[Point], parts: &[Vec<usi
         [t1, t2, t3] => (t3 + 0.5 * (t3 - t1)).clamp(t2.min(t3).min(0.0), t2.max(t3).max(0.0)),
         _ => turns.iter().sum::<f64>() / turns.len() as f64,
     };
-    let scale = (last.iter().map(|s| s.scale().ln()).sum::<f64>() / last.len() as f64).exp();
+    let scale = (last.iter().map(|s| s.scale().ln()).sum::<f64>() / last.len() as f64).exp().clamp(1.0 / SCALE, SCALE);
     let a = Vec2::new(turn.cos(), turn.sin()) * scale;
-    let members: Vec<usize> = order[k - 2..].to_vec();
-    let b = places[members[1]].to_vec2() - mul(a, places[members[0]].to_vec2());
+    let (before, latest) = (order[k - 2], order[k - 1]);
+    let b = places[latest].to_vec2() - mul(a, places[before].to_vec2());
+    let members = vec![latest];
     let by = ((ON * drawn as f64).floor() as usize).min((ON_TURN / turn.abs().max(1e-9)).floor() as usize);
     let companions = members.iter().map(|&m| parts[m].clone()).collect();
     Some((Chain { members, companions, step: Similarity { a, b }, upright: false, closes: None }, by))
