@@ -427,8 +427,7 @@ fn along_path(
         return Err(too_large(max_elements));
     }
     let area = Rect::new(0.0, 0.0, opts.width, opts.height);
-    let bounds = strokes.iter().skip(1).fold(strokes[0].bounds(), |r, s| r.union(s.bounds()));
-    let v = area.center() - bounds.center();
+    let v = centring(strokes, area);
     let (out, sources): (Vec<Stroke>, Vec<u32>) = strokes
         .iter()
         .cloned()
@@ -454,8 +453,7 @@ fn along_chain(
     progress: &mut dyn Progress,
 ) -> Result<StrokeResult> {
     let area = Rect::new(0.0, 0.0, opts.width, opts.height);
-    let bounds = strokes.iter().skip(1).fold(strokes[0].bounds(), |r, s| r.union(s.bounds()));
-    let v = area.center() - bounds.center();
+    let v = centring(strokes, area);
     let drawn: Vec<Stroke> = strokes.iter().map(|s| s.translated(v.x, v.y)).collect();
     let chain = chain.moved(v);
     let seed = opts.variation.then_some(opts.seed);
@@ -499,6 +497,12 @@ fn along_chain(
     continued(out, sources, classification, opts, chain.structure(), max_elements, progress)
 }
 
+/// The move that centres the drawing's box in `area`.
+fn centring(strokes: &[Stroke], area: Rect) -> kurbo::Vec2 {
+    let bounds = strokes.iter().skip(1).fold(strokes[0].bounds(), |r, s| r.union(s.bounds()));
+    area.center() - bounds.center()
+}
+
 /// The drawing, centred in the output, with its curve carried on past each end by the
 /// end's own step (`Bending::ends`).
 fn along_bending(
@@ -510,8 +514,7 @@ fn along_bending(
     progress: &mut dyn Progress,
 ) -> Result<StrokeResult> {
     let area = Rect::new(0.0, 0.0, opts.width, opts.height);
-    let bounds = strokes.iter().skip(1).fold(strokes[0].bounds(), |r, s| r.union(s.bounds()));
-    let v = area.center() - bounds.center();
+    let v = centring(strokes, area);
     let drawn: Vec<Stroke> = strokes.iter().map(|s| s.translated(v.x, v.y)).collect();
     let seed = opts.variation.then_some(opts.seed);
     let mut out = drawn.clone();

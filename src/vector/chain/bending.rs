@@ -258,17 +258,9 @@ fn end(order: &[usize], steps: &[Similarity], places: &[Point], parts: &[Vec<usi
 mod tests {
     use super::*;
 
-    /// A leaf 36 long from `at` along `theta`.
+    /// A leaf 36 long from `at` along `theta` (the replay families' own).
     fn leaf(at: Point, theta: f64) -> Stroke {
-        let (c, s) = (theta.cos(), theta.sin());
-        let pts = (0..=24)
-            .map(|k| {
-                let t = k as f64 / 24.0 * std::f64::consts::TAU;
-                let (along, across) = (18.0 * (1.0 - t.cos()), 6.0 * t.sin());
-                [at.x + along * c - across * s, at.y + along * s + across * c]
-            })
-            .collect();
-        Stroke::new(pts, 2.0, None)
+        crate::vector::sequences::leaf(at, theta, 36.0, &mut crate::rng::Rng::new(1), 0.0)
     }
 
     /// Leaves every 40 (of arc length) along `y = 300 + amp sin(x / 64)` from `x0`,
