@@ -1094,6 +1094,10 @@ fn a_new_users_waves_and_s_curves_go_on_as_curves() {
         "trial_s_curve_arcs",
         "trial_gentle_arc",
         "trial_s_curve_midribs",
+        // (An S of two arcs, whose steps turn one way and then at once the other.)
+        "trial_s_of_two_arcs",
+        "trial_s_of_two_arcs_leaning",
+        "trial_s_two_stroke_leaves",
     ] {
         let path = format!("{}/tests/fixtures/curves/{name}.json", env!("CARGO_MANIFEST_DIR"));
         let drawn: Vec<Stroke> = serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();

@@ -34,6 +34,14 @@ const MOVE_TURN: f64 = 1.2;
 /// degrees: a person's hand turns each copy by a few degrees, and the tangent at a copy
 /// is read from the places either side of it).
 const POSE: f64 = 0.35;
+/// A copy's centre lies off the curve (a leaf's, half its length out from its base):
+/// the places' tangent then leans off the curve's by about `d κ` (the offset times the
+/// curvature), one way on one bend of an S and the other way on the next. Where the
+/// curvature read from the places differs from the second copy's, the poses may differ
+/// by that lean's change too (`d` half a copy's size), up to this much more (radians,
+/// about 20 degrees: leaves along an S of two arcs of radius 72, 32 apart, read poses
+/// 23 degrees apart across its inflection).
+const LEAN: f64 = 0.35;
 /// Some copy is turned from the first by at least this much (radians, about 17
 /// degrees): copies that keep their pose are a row's, the lattice's. (Not the turn from
 /// the first copy to the last: an S turns back by as much as it turned.)
@@ -46,7 +54,9 @@ const CHANGE: f64 = 0.3;
 /// gentle wave's inflection, 13 degrees a step one way and 4 the other);
 const INFLECTS: f64 = 0.05;
 /// Each step's turn changes from the one before by at most this (radians, about 46
-/// degrees: a tight S reversed from 24 degrees a step to -9 in one)...
+/// degrees: a tight S reversed from 24 degrees a step to -9 in one), but where the turn
+/// changes sign between two steps whose neighbours change smoothly (an S of two arcs
+/// joined, whose steps turn 25 degrees one way and then 25 the other)...
 const SMOOTH: f64 = 0.8;
 /// ...and not one way, the other and back by more than this each (radians, 20
 /// degrees: two mirrored arcs drawn for each petal of a ring turn by 80 degrees one way
@@ -126,14 +136,22 @@ pub fn find_bending(strokes: &[Stroke]) -> Option<Bending> {
     // (Against the second copy's: an end's tangent is read from one move, half a step
     // off the copy, and is off by half the move's turn, which the end is allowed.)
     let turns: Vec<f64> = moves.windows(2).map(|w| wrap(angle(w[1]) - angle(w[0])).abs()).collect();
+    // (The curvature at each copy from the move turns either side of it, a step's
+    // length apart.)
+    let bend = |t: usize| {
+        let turn = |m: usize| wrap(angle(moves[m + 1]) - angle(moves[m]));
+        turn(t.saturating_sub(1).min(moves.len() - 2)) / median
+    };
+    let half = 0.5 * order.iter().map(|&k| size(k)).sum::<f64>() / n as f64;
     let allowed = |t: usize| {
-        POSE + if t == 0 {
-            0.5 * turns[0]
-        } else if t == n - 1 {
-            0.5 * turns[turns.len() - 1]
-        } else {
-            0.0
-        }
+        POSE + (half * (bend(t) - bend(1)).abs()).min(LEAN)
+            + if t == 0 {
+                0.5 * turns[0]
+            } else if t == n - 1 {
+                0.5 * turns[turns.len() - 1]
+            } else {
+                0.0
+            }
     };
     if (0..n).any(|t| (poses[t] - poses[1]).abs() > allowed(t)) {
         return None;
@@ -152,7 +170,14 @@ pub fn find_bending(strokes: &[Stroke]) -> Option<Bending> {
     }
     // The turn changes gradually, not by turns one way and the other (mirrored arcs).
     let changes: Vec<f64> = steps.windows(2).map(|w| wrap(w[1].turn() - w[0].turn())).collect();
-    if changes.iter().any(|c| c.abs() > SMOOTH)
+    let sharp = |t: usize| changes[t].abs() > SMOOTH;
+    let flips = |t: usize| {
+        steps[t].turn() * steps[t + 1].turn() < 0.0
+            && steps[t].turn().abs().max(steps[t + 1].turn().abs()) <= MOVE_TURN
+            && !(t > 0 && sharp(t - 1))
+            && !(t + 1 < changes.len() && sharp(t + 1))
+    };
+    if (0..changes.len()).any(|t| sharp(t) && !flips(t))
         || changes.windows(3).any(|c| c[0] * c[1] < 0.0 && c[1] * c[2] < 0.0 && c.iter().all(|c| c.abs() > ZIGZAG))
     {
         return None;
