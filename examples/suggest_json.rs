@@ -16,7 +16,16 @@ fn main() {
     };
     for (g, src) in s.strokes.iter().zip(&s.sources) {
         let c = g.reference_point();
-        println!("ghost of {src} at ({:.1}, {:.1}), {} points", c.x, c.y, g.points.len());
+        let n = g.points.len().max(1) as f64;
+        let mean = g.points.iter().fold([0.0, 0.0], |m, p| [m[0] + p[0] / n, m[1] + p[1] / n]);
+        println!(
+            "ghost of {src} at ({:.1}, {:.1}), {} points, mean ({:.1}, {:.1})",
+            c.x,
+            c.y,
+            g.points.len(),
+            mean[0],
+            mean[1]
+        );
     }
     println!("reason: {:?}", s.reason);
     println!("periods: {:?}", s.periods);

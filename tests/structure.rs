@@ -1132,3 +1132,35 @@ fn a_new_users_waves_and_s_curves_go_on_as_curves() {
         }
     }
 }
+
+/// Four leaves drawn in an S (a new user's, from a trial's own generator), which no step
+/// nor lattice reads and which growth adds nothing to: Synthesize gave back the drawing
+/// alone on an empty page. The drawing is repeated whole over the output instead, each
+/// copy apart from the others.
+#[test]
+fn a_drawing_too_few_to_grow_from_is_repeated_whole() {
+    let page = StrokeOptions { width: 1200.0, height: 800.0, ..Default::default() };
+    let path = format!("{}/tests/fixtures/curves/trial_s_four_leaves.json", env!("CARGO_MANIFEST_DIR"));
+    let drawn: Vec<Stroke> = serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
+    let r = synthesize_strokes(&drawn, &page, &mut Silent).unwrap();
+    assert_eq!(r.structure, Structure::Irregular);
+    let n = drawn.len();
+    assert!(r.strokes.len() >= 8 * n, "{} strokes from {n}", r.strokes.len());
+    assert_eq!(r.strokes.len() % n, 0, "whole copies");
+    // Each copy is the drawing moved, its strokes in order.
+    let bounds = |s: &[Stroke]| s.iter().skip(1).fold(s[0].bounds(), |b, t| b.union(t.bounds()));
+    let mut boxes = Vec::new();
+    for copy in r.strokes.chunks(n) {
+        let v = centre_of(&copy[0]) - centre_of(&drawn[0]);
+        for (s, d) in copy.iter().zip(&drawn) {
+            assert!((centre_of(s) - (centre_of(d) + v)).hypot() < 1e-6, "a copy is the drawing moved");
+        }
+        boxes.push(bounds(copy));
+    }
+    // (Copies apart: no two boxes overlap by more than a tenth of one.)
+    for (i, a) in boxes.iter().enumerate() {
+        for b in &boxes[i + 1..] {
+            assert!(a.intersect(*b).area() < 0.1 * a.area(), "copies overlap: {a:?} {b:?}");
+        }
+    }
+}

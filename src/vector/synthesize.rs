@@ -329,6 +329,15 @@ pub fn synthesize_strokes(
         (out, classes, sources, stats, periods, row)
     };
     let structure = if !meshed && (periods.is_some() || row) { Structure::Lattice } else { Structure::Irregular };
+    // A drawing too few and too loose to grow from (four leaves in an S the engine reads
+    // no step of: growth added nothing, and Synthesize gave back the drawing alone) is
+    // repeated whole over the output, as a finished curve is.
+    if structure == Structure::Irregular && !meshed && out.len() <= strokes.len() {
+        let v = centring(strokes, area);
+        let drawn = strokes.iter().map(|s| s.translated(v.x, v.y)).collect();
+        let sources = (0..strokes.len() as u32).collect();
+        return continued(drawn, sources, classification, opts, structure, max_elements, progress);
+    }
     Throttle::new(progress).tick(1.0)?;
     Ok(StrokeResult {
         periods: periods.map(|(a, b)| [[a.x, a.y], [b.x, b.y]]),
@@ -548,8 +557,9 @@ fn along_bending(
     continued(out, sources, classification, opts, Structure::Curve, max_elements, progress)
 }
 
-/// A curve continued as far as it goes (`out`, each stroke with the drawn one it
-/// repeats; a ring or a spiral is returned as it is), repeated over the output where
+/// A curve continued as far as it goes, or an irregular drawing too few to grow from
+/// (`out`, each stroke with the drawn one it repeats; a ring or a spiral is returned
+/// as it is), repeated over the output where
 /// the output holds it at least twice along a
 /// side (`pack::curve`), the rows as far apart as its copies along it, each copy whole
 /// (`pack::moves`): leaves on a drawn arc were one arc in the middle of the page's
@@ -573,7 +583,8 @@ fn continued(
     // (A curve only: a ring is a rosette or the output's, by `rosette::lattice`; a
     // spiral is one. And only where even with no gap the output would hold it twice:
     // the spacing reads every copy.)
-    let repeats = structure == Structure::Curve && pack::curve(bounds, 0.0, area).is_some();
+    let repeats =
+        matches!(structure, Structure::Curve | Structure::Irregular) && pack::curve(bounds, 0.0, area).is_some();
     let lattice =
         repeats.then(|| pack::spacing(&out, &classes)).flatten().and_then(|gap| pack::curve(bounds, gap, area));
     let Some(lattice) = lattice else {
