@@ -1098,3 +1098,32 @@ fn fence_posts_drawn_loosely_get_the_next_post() {
     eprintln!("loosely drawn posts: the next post in {h} of {r}, one off every post in {w}");
     assert!(h >= 12 && w <= 3, "the next post in {h} of {r}, one off every post in {w}");
 }
+
+/// Leaves drawn each as an outline and its midrib, along a gentle wave (a trial's own
+/// generator: seven leaves, 47 apart, the wave turning them up to about 6 degrees a
+/// step): every ghost lies where the wave puts a leaf, within the replay's tolerance
+/// (0.3 of the spacing). The outline holds the midrib, and its turn shows the row's
+/// bend; read from neither part (the two of about one size), the row was carried on
+/// straight past the wave's bend, ghosts one and two leaves on 0.33 and 0.6 of the
+/// spacing off.
+#[test]
+fn leaves_with_midribs_along_a_wave_are_not_carried_on_straight() {
+    #[derive(serde::Deserialize)]
+    struct Case {
+        spacing: f64,
+        strokes: Vec<Stroke>,
+        places: Vec<Vec<[f64; 2]>>,
+    }
+    let path = format!("{}/tests/fixtures/curves/trial_midrib_leaves_gentle_wave.json", env!("CARGO_MANIFEST_DIR"));
+    let case: Case = serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
+    let opts = SuggestOptions { region: Some([0.0, 0.0, 1200.0, 800.0]), ..Default::default() };
+    let s = suggest_strokes(&case.strokes, &opts).unwrap();
+    assert!(!s.strokes.is_empty(), "the next leaf is proposed");
+    for g in &s.strokes {
+        let n = g.points.len() as f64;
+        let mean = g.points.iter().fold([0.0, 0.0], |m, p| [m[0] + p[0] / n, m[1] + p[1] / n]);
+        let off =
+            case.places.iter().flatten().map(|q| (q[0] - mean[0]).hypot(q[1] - mean[1])).fold(f64::INFINITY, f64::min);
+        assert!(off < 0.3 * case.spacing, "a ghost {:.2} of the spacing off the wave's leaves", off / case.spacing);
+    }
+}

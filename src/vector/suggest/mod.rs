@@ -356,7 +356,11 @@ fn suggest_found(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Suggestion
         let size = |s: u32| strokes[s as usize].bounds().size().to_vec2().hypot();
         let mut parts: Vec<(f64, u32)> = motifs.instances[x].iter().map(|&s| (size(s), s)).collect();
         parts.sort_by(|a, b| b.0.total_cmp(&a.0));
-        let dominant = parts.get(1).is_none_or(|second| parts[0].0 > 1.5 * second.0);
+        // (Or one that holds the others inside its box, as a leaf's outline its midrib:
+        // without, leaves drawn with their midribs along a gentle wave were carried on
+        // straight past its bend, their third ghost 0.6 of a step off.)
+        let holds = parts[1..].iter().all(|&(_, s)| encloses(&strokes[parts[0].1 as usize], &strokes[s as usize]));
+        let dominant = parts.get(1).is_none_or(|second| parts[0].0 > 1.5 * second.0) || holds;
         dominant.then(|| motifs.part[parts[0].1 as usize])
     };
     let hand_rows: Vec<Vec<(i64, &Stroke)>> = if fit.b.is_none() {
@@ -448,6 +452,26 @@ fn suggest_found(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Suggestion
     }
     Ok(out)
 }
+
+/// Whether `outline` is a closed loop with `part` inside it (a leaf's outline and its
+/// midrib, most of whose points lie within: one end may touch the outline).
+fn encloses(outline: &Stroke, part: &Stroke) -> bool {
+    let ring = crate::vector::similarity::samples(outline);
+    if !crate::vector::frechet::closed_loop(&ring) || part.points.is_empty() {
+        return false;
+    }
+    let path = kurbo::BezPath::from_vec(
+        std::iter::once(kurbo::PathEl::MoveTo(ring[0]))
+            .chain(ring[1..].iter().map(|&p| kurbo::PathEl::LineTo(p)))
+            .chain(std::iter::once(kurbo::PathEl::ClosePath))
+            .collect(),
+    );
+    let inside = part.points.iter().filter(|p| kurbo::Shape::winding(&path, Point::new(p[0], p[1])) != 0).count();
+    inside as f64 >= ENCLOSED * part.points.len() as f64
+}
+
+/// The share of a part's points inside an outline that holds it.
+const ENCLOSED: f64 = 0.8;
 
 /// Copies of the latest hand-drawn copy's place looked at for its usual turn.
 const USUAL: usize = 16;
