@@ -122,6 +122,8 @@ export interface StyleOptions {
    *  it more closely at the cost of the texture). */
   weight?: number;
   levels?: number; neighbourhood?: number;
+  /** The style's pixels never to copy (a logo, a patch of sky): a mask of the style's size. */
+  sampleMask?: Mask;
 }
 export type Transition = 'linear' | 'ease' | 'steep';
 export interface BlendOptions extends TextureBase {

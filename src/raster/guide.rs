@@ -10,7 +10,7 @@ use super::image::{Image, Rgba};
 use super::pyramid::{self, Edge};
 use super::synthesis::Job;
 use super::texture::{pool_job, run, Guides, TextureOptions};
-use crate::error::Result;
+use crate::error::{invalid, Result};
 use crate::progress::{Progress, Throttle};
 use serde::Deserialize;
 
@@ -30,11 +30,15 @@ pub struct StyleOptions {
     pub weight: f32,
     pub levels: Option<usize>,
     pub neighbourhood: usize,
+    /// The style's pixels never copied (a logo, a patch of sky), as `sampleMask` is for
+    /// `synthesizeTexture` (read by hand at the wasm boundary: an image).
+    #[serde(skip)]
+    pub sample_mask: Option<Vec<bool>>,
 }
 
 impl Default for StyleOptions {
     fn default() -> Self {
-        StyleOptions { seed: 1, weight: STYLE_WEIGHT, levels: None, neighbourhood: 5 }
+        StyleOptions { seed: 1, weight: STYLE_WEIGHT, levels: None, neighbourhood: 5, sample_mask: None }
     }
 }
 
@@ -70,6 +74,14 @@ pub fn transfer_style(style: &Image, target: &Image, opts: &StyleOptions, progre
 
 /// `transfer_style`'s work, prepared (for running its bands on several workers).
 pub fn style_job(style: &Image, target: &Image, opts: &StyleOptions) -> Result<Job> {
+    // (Said of the style image, not as "exemplar 1", which the person never named.)
+    let side = opts.neighbourhood;
+    if style.width < side || style.height < side {
+        return invalid(format!(
+            "The style image is {}x{}, smaller than the {side}x{side} neighbourhood.",
+            style.width, style.height
+        ));
+    }
     let (ls, lt) = (soft(&luminance(style)), soft(&luminance(target)));
     let stats = |img: &Image| {
         let n = img.data.len() as f64;
@@ -90,6 +102,7 @@ pub fn style_job(style: &Image, target: &Image, opts: &StyleOptions) -> Result<J
         levels: opts.levels,
         neighbourhood: opts.neighbourhood,
         guides: Some(Guides { exemplars: vec![ls], target: matched, weight: opts.weight }),
+        sample_masks: vec![opts.sample_mask.clone()],
         ..TextureOptions::default()
     };
     Ok(pool_job(std::slice::from_ref(style), &o)?.0)

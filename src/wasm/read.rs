@@ -324,10 +324,25 @@ pub fn options<T: serde::de::DeserializeOwned + Default>(
 fn serde_words(e: &serde_wasm_bindgen::Error) -> String {
     let text = plain_types(&e.to_string());
     let text = text.strip_prefix("Error: ").unwrap_or(&text);
-    match (text.find("JsValue("), text.find(", expected")) {
+    let text = match (text.find("JsValue("), text.find(", expected")) {
         (Some(a), Some(b)) if a < b => format!("{}an object{}", &text[..a], &text[b..]),
         _ => text.to_string(),
-    }
+    };
+    given_words(&text)
+}
+
+/// serde's "invalid type: floating point `-1.0`, expected ..." as "got -1, expected
+/// ...": the value the person wrote, as they wrote it (a JS number has no `.0`).
+fn given_words(text: &str) -> String {
+    let Some(rest) = text.strip_prefix("invalid type: ") else { return text.to_string() };
+    let Some(comma) = rest.find(", expected") else { return text.to_string() };
+    let (given, expected) = rest.split_at(comma);
+    let given = match given.strip_prefix("floating point `").and_then(|g| g.strip_suffix('`')) {
+        Some(number) => number.strip_suffix(".0").unwrap_or(number).to_string(),
+        None if given.starts_with("string ") => format!("the {given}"),
+        None => given.to_string(),
+    };
+    format!("got {given}{expected}")
 }
 
 /// serde's message with the expected Rust type said in words ("expected f64" reads

@@ -88,7 +88,12 @@ pub(super) fn style_args(
 ) -> Result<(Image, Image, raster::StyleOptions), JsValue> {
     let style = masks::image(&style, "style image")?;
     let target = masks::image(&target, "target image")?;
-    Ok((style, target, options(&opts, "style options", &[], &[])?))
+    let mut o: raster::StyleOptions = options(&opts, "style options", &["sampleMask"], &[])?;
+    if !(opts.is_undefined() || opts.is_null()) {
+        let m = read::get(&opts, "sampleMask", "style options")?;
+        o.sample_mask = masks::sample_masks(&m, &[(style.width, style.height)])?.pop().flatten();
+    }
+    Ok((style, target, o))
 }
 
 /// Replays a synthesis's layout on other maps of its exemplars (normal, roughness,

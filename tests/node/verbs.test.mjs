@@ -219,6 +219,26 @@ test('transferStyle lays the style texture out as the target’s light and dark'
   assert.ok(bright / nb > dark / nd + 15, `bright stripes ${(bright / nb).toFixed(1)}, dark ${(dark / nd).toFixed(1)}`);
 });
 
+test('transferStyle keeps a masked part of the style out (a logo on the photograph)', () => {
+  // Gravel with a red square on it, which a designer keeps out of the result.
+  const gravel = load('gravel');
+  const logo = (x, y) => x >= 40 && x < 72 && y >= 30 && y < 62;
+  const style = make(gravel.width, gravel.height, (x, y) => (logo(x, y) ? [230, 20, 20] : px(gravel, x, y)));
+  const target = make(96, 80, (x, y) => { const v = (x + y) % 48 < 24 ? 230 : 30; return [v, v, v]; });
+  const red = (img) => {
+    let n = 0;
+    for (let i = 0; i < img.width * img.height; i++) n += img.data[4 * i] - img.data[4 * i + 1] > 120 ? 1 : 0;
+    return n;
+  };
+  for (const seed of [1, 2, 3]) {
+    assert.ok(red(ps.transferStyle(style, target, { seed })) > 0 || seed > 1, 'unmasked, the logo is copied');
+    const out = ps.transferStyle(style, target, { seed, sampleMask: maskOf(style.width, style.height, logo) });
+    assert.equal(red(out), 0, `seed ${seed}: no red pixel with the logo masked`);
+  }
+  assert.throws(() => ps.transferStyle(make(3, 3, () => [0, 0, 0]), target), /The style image is 3x3, smaller than the 5x5 neighbourhood/);
+  assert.throws(() => ps.transferStyle(style, target, { sampleMask: maskOf(10, 10, () => true) }), /must be/);
+});
+
 test('bad masks and layouts are refused with the reason', () => {
   const img = load('wood');
   assert.throws(() => ps.inpaintTexture(img, maskOf(64, 64, () => true)), /mask is 64x64; it must be 128x128/);
@@ -227,7 +247,7 @@ test('bad masks and layouts are refused with the reason', () => {
   // A mask that leaves one pixel: the mask is why, not a sample mask nobody gave.
   let err = '';
   try { ps.inpaintTexture(img, maskOf(128, 128, (x, y) => x !== 5 || y !== 5)); } catch (e) { err = e.message; }
-  assert.match(err, /The mask leaves no (pixel|region) to copy from/);
+  assert.match(err, /The mask leaves no (pixel|unmasked patch of \d+x\d+ pixels) to copy from/);
   assert.doesNotMatch(err, /sample mask/);
   assert.throws(() => ps.inpaintTexture({ width: 1, height: 40, data: new Uint8Array(160) }, maskOf(1, 40, (x, y) => y === 5)), /1x40; a fill needs at least 3 pixels on a side/);
   assert.throws(() => ps.inpaintTexture(img, maskOf(128, 128, () => false), { sampleMsk: img }), /unknown option `sampleMsk` \(expected one of [^)]*sampleMask/);

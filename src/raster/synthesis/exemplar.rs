@@ -175,11 +175,14 @@ impl Exemplar {
             for (l, m) in mask::pyramid(a.to_vec(), img.width, img.height, levels, false).into_iter().enumerate() {
                 let list: Vec<u32> = (0..m.len() as u32).filter(|&p| m[p as usize]).collect();
                 if list.is_empty() {
-                    let scale = if l == 0 { String::new() } else { format!(" at 1/{} scale", 1 << l) };
-                    return invalid(format!(
-                        "{kept_out} no {} to copy from{scale}: keep more of the image.",
-                        if l == 0 { "pixel" } else { "region" }
-                    ));
+                    // (Each coarser level reads blocks of the image: a level whose every
+                    // block holds a masked pixel has nothing to copy.)
+                    let what = if l == 0 {
+                        "no pixel".to_string()
+                    } else {
+                        format!("no unmasked patch of {0}x{0} pixels", 1 << l)
+                    };
+                    return invalid(format!("{kept_out} {what} to copy from: keep more of the image."));
                 }
                 planes[l].allowed = Some(Allowed { mask: m, list });
             }
