@@ -12,10 +12,14 @@
 //! - `near`: the mean step across the 9 lines round the wrap, each way, over the mean
 //!   (below 1 where the middle of the band is smoothed over);
 //! - `lines`: the band's strongest column and row against the photograph's strongest
-//!   (`seamless::mend::band_line`, each way; above 1, a line the photograph has nowhere);
+//!   (as `seamless::mend::band_line`, each way, but with the band's boundaries along the
+//!   kept photograph too; above 1, a line the photograph has nowhere);
 //! - with `ENERGY=1`, the band's patch energy (7 x 7 windows round band pixels, read on
 //!   the torus, against the photograph's, exact nearest neighbour, 300 samples);
-//! - with `PROFILE=1`, each seed's column and row steps round the wrap.
+//! - with `PROFILE=1`, each seed's column and row steps round the wrap;
+//! - with `PLAIN=runs`, the plain synthesis of the photograph's size from it (same seed)
+//!   timed beside each mend, `runs` interleaved pairs a seed, and the ratio of the
+//!   medians (issue 30's speed bar: a mend within 1.5 times it).
 //!
 //! Seed 1's tile repeated 2 x 2 goes to out/mend/NAME-2x2.png (`OUT=dir` elsewhere; with
 //! `ALL=1` the other seeds' too, NAME-sN-2x2.png). `SPEED=runs` times bench/verbs.mjs's
@@ -259,12 +263,14 @@ fn main() {
     let peer = std::env::var("PEER").ok();
     let energy = std::env::var("ENERGY").is_ok_and(|e| e == "1");
     let seeds: u64 = std::env::var("SEEDS").ok().and_then(|s| s.parse().ok()).unwrap_or(3);
+    let plain_runs: usize = std::env::var("PLAIN").ok().and_then(|s| s.parse().ok()).unwrap_or(0);
     let mut all = Vec::new();
     println!(
-        "{:<12} {:<40} median  peer  kept   ms  own             near  lines    {}",
+        "{:<12} {:<40} median  peer  kept   ms  own             near  lines    {}{}",
         "photograph",
         "seam by seed",
-        if energy { "energy" } else { "" }
+        if energy { "energy " } else { "" },
+        if plain_runs > 0 { "plain ms  ratio" } else { "" }
     );
     for path in std::env::args().skip(1) {
         let name = std::path::Path::new(&path).file_stem().unwrap().to_string_lossy().to_string();
@@ -274,10 +280,23 @@ fn main() {
             (Vec::new(), Vec::new(), Vec::new(), Vec::new(), Vec::new());
         let (mut wc, mut wr) = (Vec::new(), Vec::new());
         let (mut lc, mut lr) = (Vec::new(), Vec::new());
+        let mut plain = Vec::new();
+        let ex = patternsynth::raster::Image::from_rgba8(photo.width, photo.height, &photo.data).unwrap();
         for seed in 1..=seeds {
-            let t = Instant::now();
-            let tile = mend(&photo, DEFAULT_BAND, None, seed, &mut Silent).unwrap();
-            ms.push(t.elapsed().as_secs_f64() * 1000.0);
+            let mut tile = None;
+            for _ in 0..plain_runs.max(1) {
+                if plain_runs > 0 {
+                    use patternsynth::raster::{synthesize_texture, TextureOptions};
+                    let o = TextureOptions { width: photo.width, height: photo.height, seed, ..Default::default() };
+                    let t = Instant::now();
+                    synthesize_texture(&ex, &o, &mut Silent).unwrap();
+                    plain.push(t.elapsed().as_secs_f64() * 1000.0);
+                }
+                let t = Instant::now();
+                tile = Some(mend(&photo, DEFAULT_BAND, None, seed, &mut Silent).unwrap());
+                ms.push(t.elapsed().as_secs_f64() * 1000.0);
+            }
+            let tile = tile.unwrap();
             seams.push(seam_score(&tile));
             near.push(near_wrap(&tile));
             let (c, r) = wrap_parts(&tile);
@@ -330,19 +349,26 @@ fn main() {
         }
         all.push(m);
         let list: Vec<String> = seams.iter().take(8).map(|s| format!("{s:.2}")).collect();
+        let mend_ms = median(ms);
         println!(
-            "{name:<12} {:<40} {m:.2}    {}  {:.3}  {:<3.0}  {:.2}-{:.2}-{:.2}  {:.2}  {:.2} {:.2}{}",
+            "{name:<12} {:<40} {m:.2}    {}  {:.3}  {:<3.0}  {:.2}-{:.2}-{:.2}  {:.2}  {:.2} {:.2}{}{}",
             list.join(" "),
             theirs.map_or("-   ".into(), |p| format!("{p:.2}")),
             median(kept),
-            median(ms),
+            mend_ms,
             own[0],
             own[1],
             own[2],
             median(near),
             median(lc.clone()),
             median(lr.clone()),
-            if energy { format!("  {:.2}", median(pe)) } else { String::new() }
+            if energy { format!("  {:.2}", median(pe)) } else { String::new() },
+            if plain_runs > 0 {
+                let p = median(plain);
+                format!("  {p:<4.0}  {:.2}", mend_ms / p)
+            } else {
+                String::new()
+            }
         );
     }
     let inside = all.iter().filter(|&&s| (0.8..=1.2).contains(&s)).count();

@@ -3,7 +3,7 @@
 //! (`seamless::mend`). See `synthesis::pinned` for how the fill is searched.
 
 use super::image::{Image, Rgba};
-use super::synthesis::{self, Constraints, Job, Params, Sources, REMATCH_ROUNDS};
+use super::synthesis::{self, Constraints, Finest, Job, Params, Sources, REMATCH_ROUNDS};
 use crate::error::{invalid, Result};
 use crate::progress::{Progress, Throttle};
 use crate::rng::Rng;
@@ -146,12 +146,69 @@ fn fitted_side(side: usize, short: usize) -> usize {
     side.min(odd).max(3)
 }
 
-impl Fill {
-    pub fn run(self, image: &Rgba, progress: &mut dyn Progress) -> Result<Rgba> {
+/// A fill's copies before they are healed, its finest level's last pass not yet made
+/// (`Fill::copies`): a mend measures them before it makes its band again or finishes it.
+pub struct Copies {
+    /// The synthesis, until it is made again from it (`again`), and its copies so far;
+    /// `None` when every pixel is known.
+    job: Option<Job>,
+    finest: Option<Finest>,
+    known: Vec<bool>,
+    torus: bool,
+}
+
+impl Copies {
+    /// Each pixel's source in the image: itself where it is known.
+    fn src(&self) -> Vec<u32> {
+        match &self.finest {
+            Some(finest) => finest.src().to_vec(),
+            None => (0..self.known.len() as u32).collect(),
+        }
+    }
+
+    /// The image with each filled pixel its copy, as it is.
+    pub fn colours(&self, image: &Rgba) -> Rgba {
+        let data = self.src().iter().flat_map(|&s| image.data[4 * s as usize..][..4].iter().copied()).collect();
+        Rgba { width: image.width, height: image.height, data }
+    }
+
+    /// The finest level's last pass (`synthesis::Finest::last_pass`); none once the fill
+    /// has been made again (`again`).
+    pub fn finish(&mut self, progress: &mut dyn Progress) -> Result<()> {
+        match (&self.job, &mut self.finest) {
+            (Some(job), Some(finest)) => finest.last_pass(job, &mut Throttle::new(progress)),
+            _ => Ok(()),
+        }
+    }
+
+    /// The fill made again from a coarsest level nearest `coarsest` pixels on its short
+    /// side (as `Fill::coarsest`) of the same pyramids, these copies kept as they are.
+    pub fn again(&mut self, image: &Rgba, coarsest: f64, progress: &mut dyn Progress) -> Result<Copies> {
+        let mut job = self.job.take();
+        let finest = match &mut job {
+            Some(job) => {
+                let short = image.width.min(image.height);
+                job.keep_finest(synthesis::levels_for(short, short, job.params().neighbourhood, coarsest));
+                Some(synthesis::begin_pinned(job, &mut Throttle::new(progress))?)
+            }
+            None => None,
+        };
+        Ok(Copies { job, finest, known: self.known.clone(), torus: self.torus })
+    }
+
+    /// The copies healed into the known pixels, whole (`heal`).
+    pub fn healed(&self, image: &Rgba) -> Rgba {
         let mut out = image.clone();
+        super::heal::heal(&mut out, image, &self.src(), &self.known, self.torus, 1.0);
+        out
+    }
+}
+
+impl Fill {
+    /// The synthesis prepared, or `None` when every pixel is known.
+    fn job(&self, image: &Rgba) -> Result<Option<Job>> {
         if self.known.iter().all(|&k| k) {
-            progress.report(1.0);
-            return Ok(out);
+            return Ok(None);
         }
         let img = Image::from_rgba8(image.width, image.height, &image.data)?;
         // Positions whose neighbourhood runs off the image are not copied: read clamped
@@ -177,7 +234,7 @@ impl Fill {
             tileable: self.torus,
             constraints: Constraints {
                 allowed: vec![Some(allowed)],
-                known: Some(self.known),
+                known: Some(self.known.clone()),
                 guide: None,
                 // Where the image's opacity varies, it is matched too (`synthesis::opacity`).
                 alpha: image.alpha_varies().then(|| image.data.chunks_exact(4).map(|p| p[3]).collect()),
@@ -185,9 +242,26 @@ impl Fill {
             },
             ..Params::default()
         };
-        let job = Job::new(Sources::One(&img), &params)?;
+        Job::new(Sources::One(&img), &params).map(Some)
+    }
+
+    /// The fill's copies, not yet healed nor finished (`Copies`).
+    pub fn copies(self, image: &Rgba, progress: &mut dyn Progress) -> Result<Copies> {
+        let job = self.job(image)?;
+        let finest = match &job {
+            Some(job) => Some(synthesis::begin_pinned(job, &mut Throttle::new(progress))?),
+            None => None,
+        };
+        Ok(Copies { job, finest, known: self.known, torus: self.torus })
+    }
+
+    pub fn run(self, image: &Rgba, progress: &mut dyn Progress) -> Result<Rgba> {
+        let mut out = image.clone();
+        let Some(job) = self.job(image)? else {
+            progress.report(1.0);
+            return Ok(out);
+        };
         let mut src = synthesis::sources(&job, &mut Throttle::new(progress))?;
-        let known = params.constraints.known.as_ref().expect("set above");
         // The copies keep their detail; a smooth correction takes away the colour step
         // at the hole's edge (`heal`). Matched again to the healed colours, the copies
         // need less of it (`synthesis::REMATCH_ROUNDS`), and the last heal takes half
@@ -197,7 +271,7 @@ impl Fill {
         for round in 0..=rounds {
             let last = round == rounds;
             let strength = if last && self.rematch { LAST_HEAL } else { 1.0 };
-            super::heal::heal(&mut out, image, &src[0], known, params.tileable, strength);
+            super::heal::heal(&mut out, image, &src[0], &self.known, self.torus, strength);
             if !last {
                 job.rematch(&mut src[0], &out, &mut rng);
             }

@@ -50,7 +50,8 @@ fn margin(side: usize, band: f64) -> usize {
 }
 
 /// A band whose strongest line steps more than this many times the photograph's
-/// strongest (`band_line`) is made again from a finer coarsest level (`AGAIN_COARSEST`).
+/// strongest (`band_line`, on the band's copies before the finest level's last pass and
+/// the heal) is made again from a finer coarsest level (`AGAIN_COARSEST`).
 /// At the coarsest level a tile's pyramid aims at (14 pixels for a 224-pixel
 /// photograph, 16 for 128 or 256: `synthesis::coarsest_side`), the band is matched
 /// against a hundred-odd positions, and where one strip of the photograph fits both its
@@ -61,12 +62,12 @@ fn margin(side: usize, band: f64) -> usize {
 /// so the photograph's joint at column 130 ran straight the whole height of the tile at
 /// 206-222, a line at every tile's edge: 3.05 times the tile's mean step (seed 1) where
 /// the photograph's strongest line is 2.32 times its own, 1.28 times as strong (median
-/// of seeds 1-3; its wrap 1.35). The other eleven bands stayed at 0.68-0.94 of their
-/// photograph's strongest line (medians of seeds 1-8); of the ten fixtures, fur's and
-/// tissue's reached 1.22 and 1.30 (a straight edge along a horizontal band) and
-/// the others 0.50-1.02. The fronts of the band, which meet at the wrap, are not the
-/// cause: the onion start filled from a meeting line moved 16 or 32 pixels off the wrap
-/// left paving's joint where it was.
+/// of seeds 1-3; its wrap 1.35). The other eleven bands stay at 0.63-1.02 of their
+/// photograph's strongest line, the ten fixtures' at 0.47-1.01 (seeds 1-3; paving's
+/// 1.25-1.32), so only paving's band is made again, a mend taking two syntheses' time
+/// there. The fronts of the band, which meet at the wrap, are not the cause: the onion
+/// start filled from a meeting line moved 16 or 32 pixels off the wrap left paving's
+/// joint where it was.
 pub const LINE_LIMIT: f64 = 1.1;
 
 /// The coarsest level's aim for a band made again (`LINE_LIMIT`): a plain synthesis's
@@ -81,13 +82,14 @@ pub const LINE_LIMIT: f64 = 1.1;
 /// photograph's own lines (10th percentile 0.57).
 pub const AGAIN_COARSEST: f64 = 32.0;
 
-/// The share of the progress bar the first making of the band takes (a band made
-/// again, `LINE_LIMIT`, takes the rest).
+/// The share of the progress bar the first making of the band takes, up to its finest
+/// level's last pass (that pass, or the band made again, `LINE_LIMIT`, takes the rest).
 const FIRST_SHARE: f64 = 0.9;
 
 /// `input` made to tile: the band re-made from the whole image (where `allowed`, if
 /// given) on a torus; made again from a finer coarsest level where it holds a line the
-/// photograph has nowhere (`LINE_LIMIT`), the band with the weaker line kept.
+/// photograph has nowhere (`LINE_LIMIT`), the band with the weaker line kept; healed once,
+/// whichever is kept.
 pub fn mend(
     input: &Rgba,
     band: f64,
@@ -98,39 +100,43 @@ pub fn mend(
     if !(band.is_finite() && band > 0.0 && band < 1.0) {
         return invalid(format!("band must be above 0 and below 1 (a share of each side), got {band}."));
     }
-    let mask = band_mask(input.width, input.height, band);
-    let margins = (margin(input.width, band), margin(input.height, band));
-    let fill = |coarsest: Option<f64>, allowed: Option<Vec<bool>>| Fill {
+    let (w, h) = (input.width, input.height);
+    let mask = band_mask(w, h, band);
+    let margins = (margin(w, band), margin(h, band));
+    let fill = Fill {
         known: mask.iter().map(|&m| !m).collect(),
         allowed,
         torus: true,
         seed,
         levels: None,
-        coarsest,
+        coarsest: None,
         neighbourhood: NEIGHBOURHOOD,
         detail_levels: DETAIL_LEVELS,
         rematch: false,
         kept_out: "The sample mask leaves",
     };
-    let tile = fill(None, allowed.clone()).run(input, &mut |f: f64| progress.report(FIRST_SHARE * f))?;
-    let line = band_line(&tile, input, margins);
+    // The band's line is measured on its copies as they are, before the finest level's
+    // last pass and the heal: what a band made again does not need.
+    let mut first = fill.copies(input, &mut |f: f64| progress.report(FIRST_SHARE * f))?;
+    let line = band_line(&first.colours(input), input, margins);
     if line <= LINE_LIMIT {
-        progress.report(1.0);
-        return Ok(tile);
+        first.finish(&mut |f: f64| progress.report(FIRST_SHARE + (1.0 - FIRST_SHARE) * f))?;
+        return Ok(first.healed(input));
     }
-    let again = fill(Some(AGAIN_COARSEST), allowed)
-        .run(input, &mut |f: f64| progress.report(FIRST_SHARE + (1.0 - FIRST_SHARE) * f))?;
-    Ok(if band_line(&again, input, margins) < line { again } else { tile })
+    let again =
+        first.again(input, AGAIN_COARSEST, &mut |f: f64| progress.report(FIRST_SHARE + (1.0 - FIRST_SHARE) * f))?;
+    let kept = if band_line(&again.colours(input), input, margins) < line { again } else { first };
+    Ok(kept.healed(input))
 }
 
 /// How strong the band's strongest straight line is against the photograph's: the
 /// largest mean step (Euclidean, RGB) across a column boundary whose two columns lie
-/// wholly in the band (the wrap among them), over the mean step across every boundary
-/// of the tile, divided by the same for the photograph's boundaries (its wrap left out);
-/// and the same for rows; the larger of the two. Above 1 the band holds a line (a joint
-/// or an edge run straight along it) stronger than any of the photograph's, which the
-/// tile repeats at each of its edges. `margins`: the band's columns and rows along each
-/// edge.
+/// wholly in the band (the wrap among them) and more than `EDGE` columns from the kept
+/// photograph, over the mean step across every boundary of the tile, divided by the
+/// same for the photograph's boundaries (its wrap left out); and the same for rows; the
+/// larger of the two. Above 1 the band holds a line (a joint or an edge run straight
+/// along it) stronger than any of the photograph's, which the tile repeats at each of
+/// its edges. `margins`: the band's columns and rows along each edge.
 pub fn band_line(tile: &Rgba, photo: &Rgba, margins: (usize, usize)) -> f64 {
     let (w, h) = (tile.width, tile.height);
     let (cols, rows) = (column_steps(tile), row_steps(tile));
@@ -140,8 +146,20 @@ pub fn band_line(tile: &Rgba, photo: &Rgba, margins: (usize, usize)) -> f64 {
     if m == 0.0 {
         return 0.0; // A flat tile: no line.
     }
-    // A boundary of the band: the columns (rows) on both its sides re-made.
-    let in_band = |b: usize, n: usize, margin: usize| [b, (b + 1) % n].iter().all(|&x| x < margin || x + margin >= n);
+    // A boundary of the band: the columns (rows) on both its sides re-made, each more than
+    // `EDGE` from the kept photograph (at most half the margin).
+    let in_band = |b: usize, n: usize, margin: usize| {
+        let depth = |x: usize| {
+            if x < margin {
+                margin - x
+            } else if x + margin >= n {
+                x + margin + 1 - n
+            } else {
+                0
+            }
+        };
+        [b, (b + 1) % n].iter().all(|&x| depth(x) > EDGE.min(margin / 2))
+    };
     let strongest = |v: &[f64], n: usize, margin: usize| {
         (0..n).filter(|&b| in_band(b, n, margin)).map(|b| v[b]).fold(0.0, f64::max)
     };
@@ -160,6 +178,14 @@ pub fn band_line(tile: &Rgba, photo: &Rgba, margins: (usize, usize)) -> f64 {
     let r = ratio(strongest(&rows, h, margins.1), own_strongest(&own_rows));
     c.max(r)
 }
+
+/// The band's columns (rows) along the kept photograph that `band_line` leaves out: there
+/// the band's first copies meet the photograph, and the heal's correction changes most.
+/// Fur's and tissue's bands stepped most there (1.14-1.52 of their photographs'
+/// strongest lines, healed; seeds 1-3), a line no finer coarsest level took away
+/// (tissue's bands made again: 1.18-1.31), and each mend of them took the time of two;
+/// without those two boundaries, 0.87-0.98.
+const EDGE: usize = 2;
 
 /// The mean step across each column boundary of `img`: boundary `b` between columns `b`
 /// and `b + 1`, the last across the wrap.

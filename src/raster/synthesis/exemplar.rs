@@ -232,20 +232,29 @@ pub(crate) fn distance(
     let img = &ex.levels[level];
     let (x, y) = img.xy(pos);
     let mut own = Sum::zero();
-    let k = block(img, x, y, shape.half, &shape.own, &off.own, feature, &mut own);
+    let k = block(img, x, y, shape.half, &shape.own, &off.own, feature, bound, &mut own);
     let own = own.total();
     if own > bound || k == feature.len() {
         return own;
     }
     let mut parent = Sum::zero();
-    block(&ex.upsampled[level], x, y, 2, &off.parent_points, &off.parent, &feature[k..], &mut parent);
+    block(&ex.upsampled[level], x, y, 2, &off.parent_points, &off.parent, &feature[k..], f32::INFINITY, &mut parent);
     own + PARENT_WEIGHT * parent.total()
 }
 
+/// Points from which a neighbourhood's own level is summed in runs of `RUN`, each
+/// followed by a look at the bound: an 11 x 11 one (a fill's and a mend's coarser
+/// levels, 120 points) was summed whole for every candidate, and those levels took 8%
+/// longer. The sums and so the matches are the same; a 5 x 5 one (24 points) is summed
+/// as before.
+const RUNS_FROM: usize = 32;
+const RUN: usize = 16;
+
 /// Adds to `acc` the squared differences between the pixels of `img` at `points` around
-/// (x, y) and `feature`'s first pixels; returns how many it read. Index deltas `linear`
-/// serve when the block lies inside the image (within `half` of the centre), clamped
-/// reads at the border.
+/// (x, y) and `feature`'s first pixels; returns how many it was given (it may stop
+/// early once `acc` is past `bound`, `RUNS_FROM`). Index deltas `linear` serve when
+/// the block lies inside the image (within `half` of the centre), clamped reads at the
+/// border.
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
 fn block(
@@ -256,10 +265,38 @@ fn block(
     points: &[(isize, isize)],
     linear: &[isize],
     feature: &[Px],
+    bound: f32,
     acc: &mut Sum,
 ) -> usize {
-    let (w, h) = (img.width as isize, img.height as isize);
     let feature = &feature[..points.len()];
+    if points.len() < RUNS_FROM {
+        add_points(img, x, y, half, points, linear, feature, acc);
+        return points.len();
+    }
+    for (start, f) in (0..points.len()).step_by(RUN).zip(feature.chunks(RUN)) {
+        let end = start + f.len();
+        add_points(img, x, y, half, &points[start..end], &linear[start..end], f, acc);
+        if acc.total() > bound {
+            break;
+        }
+    }
+    points.len()
+}
+
+/// `block`'s sum over all of `points`.
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn add_points(
+    img: &Plane,
+    x: isize,
+    y: isize,
+    half: isize,
+    points: &[(isize, isize)],
+    linear: &[isize],
+    feature: &[Px],
+    acc: &mut Sum,
+) {
+    let (w, h) = (img.width as isize, img.height as isize);
     if x >= half && x < w - half && y >= half && y < h - half {
         let base = y * w + x;
         for (&o, f) in linear.iter().zip(feature) {
@@ -276,5 +313,4 @@ fn block(
             acc.add(img.clamped(x + dx, y + dy), f);
         }
     }
-    points.len()
 }

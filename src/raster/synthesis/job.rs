@@ -327,6 +327,30 @@ impl Job {
         out
     }
 
+    /// The job with its `levels` finest levels only, the coarsest of them started afresh
+    /// (a mended band made again from a finer coarsest level, `inpaint::Copies::again`):
+    /// what `Job::new` makes with that many levels, without building the pyramids again.
+    pub(crate) fn keep_finest(&mut self, levels: usize) {
+        debug_assert!(self.known.is_some(), "a job started from its known pixels");
+        if levels == 0 || levels >= self.levels {
+            return;
+        }
+        self.levels = levels;
+        self.params.levels = Some(levels);
+        self.sizes.truncate(levels);
+        for ex in &mut self.mix.exs {
+            ex.levels.truncate(levels);
+            ex.upsampled.truncate(levels - 1);
+        }
+        if let Some(k) = &mut self.known {
+            k.truncate(levels);
+        }
+        if let Some(t) = &mut self.target {
+            t.truncate(levels);
+        }
+        self.starts = OnceLock::new();
+    }
+
     /// The parameters it was made with.
     pub fn params(&self) -> &Params {
         &self.params

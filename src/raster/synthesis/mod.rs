@@ -40,6 +40,7 @@ mod reuse;
 pub use job::Job;
 pub(crate) use pass::{Map, Scratch};
 pub use pinned::REMATCH_ROUNDS;
+pub(crate) use pinned::{begin as begin_pinned, Finest};
 pub use reuse::Uses;
 
 use super::image::{Image, Rgba};
@@ -221,7 +222,12 @@ pub(crate) fn coarsest_side(tileable: bool, fill: bool) -> f64 {
 /// (the fixtures' 128) keep their levels.
 pub(crate) fn default_levels(exemplars: &[&Image], width: usize, height: usize, side: usize, coarsest: f64) -> usize {
     let ex = exemplars.iter().map(|e| e.width.min(e.height)).min().unwrap_or(1);
-    let out = width.min(height);
+    levels_for(ex, width.min(height), side, coarsest)
+}
+
+/// `default_levels` for exemplars whose short side is at least `ex` and an output whose
+/// short side is `out`.
+pub(crate) fn levels_for(ex: usize, out: usize, side: usize, coarsest: f64) -> usize {
     let mut levels = 1;
     while levels < 5
         && (ex >> levels) >= side

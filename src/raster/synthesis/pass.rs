@@ -77,12 +77,26 @@ pub(crate) struct Scratch {
     own: Vec<Px>,
     /// Candidate positions with their numbers of proposals.
     cands: Vec<(u32, u16)>,
+    /// For a wide neighbourhood's candidates (`SLOTS_FROM`), each exemplar position's
+    /// place in `cands` plus one (0: not proposed), cleared after each pixel.
+    slots: Vec<u32>,
 }
+
+/// Neighbours from which the candidates they propose are told apart by `Scratch::slots`
+/// rather than by looking through those already proposed: so, an 11 x 11 neighbourhood's
+/// 120 proposals (a mend's coarser levels) took a tenth longer. The same candidates in
+/// the same order, with the same votes.
+const SLOTS_FROM: usize = 32;
 
 impl Scratch {
     pub fn new(full: &Shape) -> Scratch {
         let points = full.own.len() + full.parent.len();
-        Scratch { f: Vec::with_capacity(points), own: Vec::with_capacity(points), cands: Vec::with_capacity(64) }
+        Scratch {
+            f: Vec::with_capacity(points),
+            own: Vec::with_capacity(points),
+            cands: Vec::with_capacity(64),
+            slots: Vec::new(),
+        }
     }
 }
 
@@ -192,7 +206,7 @@ impl Pass<'_> {
         scratch: &mut Scratch,
     ) {
         let level = self.level;
-        let Scratch { f, own, cands } = scratch;
+        let Scratch { f, own, cands, slots } = scratch;
         // Where the neighbourhood lies inside the map, neighbours are read by index delta.
         let centre = map.inside(x, y, shape.half);
         self.feature(map, centre, x, y, shape, f);
@@ -227,7 +241,8 @@ impl Pass<'_> {
                 });
                 best.1
             } else {
-                self.coherent_candidates(map, centre, e, shape, x, y, img, rng, cands);
+                let slots = (shape.own.len() >= SLOTS_FROM).then_some(&mut *slots);
+                self.coherent_candidates(map, centre, e, shape, x, y, img, rng, cands, slots);
                 let n = shape.own.len() as f32;
                 let mut best = (f32::INFINITY, cands[0].0);
                 for &(pos, votes) in cands.iter() {
@@ -303,14 +318,32 @@ impl Pass<'_> {
         img: &Plane,
         rng: &mut Rng,
         cands: &mut Vec<(u32, u16)>,
+        mut slots: Option<&mut Vec<u32>>,
     ) {
         cands.clear();
         let (ew, eh) = (img.width as isize, img.height as isize);
+        if let Some(s) = slots.as_deref_mut() {
+            s.resize(s.len().max(img.data.len()), 0);
+        }
         // Positions a sample mask keeps out are never candidates.
-        let push = |c: u32, cands: &mut Vec<(u32, u16)>| match cands.iter_mut().find(|(q, _)| *q == c) {
-            Some((_, votes)) => *votes += 1,
-            None if img.allows(c) => cands.push((c, 1)),
-            None => {}
+        let mut push = |c: u32, cands: &mut Vec<(u32, u16)>| {
+            let known = match slots.as_deref_mut() {
+                Some(s) => match s[c as usize] {
+                    0 => None,
+                    k => Some(k as usize - 1),
+                },
+                None => cands.iter().position(|(q, _)| *q == c),
+            };
+            match known {
+                Some(k) => cands[k].1 += 1,
+                None if img.allows(c) => {
+                    cands.push((c, 1));
+                    if let Some(s) = slots.as_deref_mut() {
+                        s[c as usize] = cands.len() as u32;
+                    }
+                }
+                None => {}
+            }
         };
         for &(dx, dy) in &shape.own {
             let (sx, sy) = img.xy(map.src[e][map.around(centre, x, y, dx, dy)]);
@@ -334,6 +367,9 @@ impl Pass<'_> {
         }
         for _ in 0..self.random.max(usize::from(cands.is_empty())) {
             push(img.random(rng), cands);
+        }
+        if let Some(s) = slots {
+            cands.iter().for_each(|&(c, _)| s[c as usize] = 0);
         }
     }
 }
