@@ -39,6 +39,21 @@ impl Shape {
         Shape { own, parent: parent_block(), half }
     }
 
+    /// The shape without the own offsets `own` refuses and the parent offsets `parent`
+    /// refuses (a neighbourhood cut off by the output's border), or `None` when both keep
+    /// every offset.
+    pub fn clipped(&self, own: impl Fn(isize, isize) -> bool, parent: impl Fn(isize, isize) -> bool) -> Option<Shape> {
+        let keep = |v: &[(isize, isize)], f: &dyn Fn(isize, isize) -> bool| -> Vec<(isize, isize)> {
+            v.iter().copied().filter(|&(dx, dy)| f(dx, dy)).collect()
+        };
+        let (o, p) = (keep(&self.own, &own), keep(&self.parent, &parent));
+        (o.len() < self.own.len() || p.len() < self.parent.len()).then_some(Shape {
+            own: o,
+            parent: p,
+            half: self.half,
+        })
+    }
+
     /// Feature length (three channels per pixel) with or without the parent level.
     pub fn dim(&self, with_parent: bool) -> usize {
         3 * (self.own.len() + if with_parent { self.parent.len() } else { 0 })

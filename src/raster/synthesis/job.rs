@@ -393,6 +393,13 @@ impl Job {
         self.mix.exs[e].levels[level].random(rng)
     }
 
+    /// Whether the output is read on a torus: a tile, and a synthesis from scratch (whose
+    /// output then nearly tiles; its first rows are matched against its last); not an
+    /// image filled around known pixels (`inpaint`), which is no tile.
+    pub(crate) fn torus(&self) -> bool {
+        self.params.tileable || self.known.is_none()
+    }
+
     /// Whether output pixel `i` of `level` is known (pinned to the same exemplar pixel).
     #[inline]
     pub(crate) fn is_known(&self, level: usize, i: usize) -> bool {
@@ -451,6 +458,7 @@ impl Job {
             // Around known pixels the bias grew one coherent patch over the whole hole and
             // kept it against the hole's border (see `pinned::PINNED_COHERENCE`).
             coherence: if self.known.is_some() { super::pinned::PINNED_COHERENCE } else { super::pass::COHERENCE },
+            torus: self.torus(),
         }
     }
 

@@ -122,6 +122,9 @@ pub(crate) struct Pass<'a> {
     pub(super) target: Option<(&'a [f32], &'a [f32])>,
     /// The coherence bias: `COHERENCE`, or none around known pixels (`pinned`).
     pub(super) coherence: f32,
+    /// Whether the output is read on a torus (`Job::torus`); if not, a neighbourhood
+    /// leaves out the points past the output's border (`cut`).
+    pub(super) torus: bool,
 }
 
 impl Pass<'_> {
@@ -207,13 +210,19 @@ impl Pass<'_> {
     ) {
         let level = self.level;
         let Scratch { f, own, cands, slots } = scratch;
+        let cut = if self.torus { None } else { self.cut(shape, x, y) };
+        let shape = cut.as_ref().map_or(shape, |(s, _)| s);
         // Where the neighbourhood lies inside the map, neighbours are read by index delta.
         let centre = map.inside(x, y, shape.half);
         self.feature(map, centre, x, y, shape, f);
         for (e, ex) in self.mix.exs.iter().enumerate() {
             let weight = self.mix.weight(e, level, x, y);
             let img = &ex.levels[level];
-            let off = if use_full { &self.offsets[e].1 } else { &self.offsets[e].0 };
+            let off = match &cut {
+                Some((_, offsets)) => &offsets[e],
+                None if use_full => &self.offsets[e].1,
+                None => &self.offsets[e].0,
+            };
             // Where an exemplar has a partial weight, it is matched against the mixed
             // neighbourhood only in proportion to that weight; the rest is its own
             // choices around the pixel. At weight 1 this is the paper's rule; as the
@@ -263,6 +272,38 @@ impl Pass<'_> {
                 u.moved(e, old, best);
             }
         }
+    }
+
+    /// `shape` around (x, y) without the points past the output's border, own and parent
+    /// (where a parent point's reads reach past the parent level's), with its offsets per
+    /// exemplar; `None` when the neighbourhood lies inside. An output that is no tile
+    /// says nothing of what lies past one border by what lies inside the other: read on
+    /// the torus, a hole along the bottom of grass under the sky was filled with sky
+    /// (a new user's trial, issue 30), and clamped reads (the border's pixels repeated)
+    /// made copies of the border's own pixels win: a fill beside a bright edge took
+    /// more of that edge (`tests/fill.rs`).
+    fn cut(&self, shape: &Shape, x: usize, y: usize) -> Option<(Shape, Vec<Offsets>)> {
+        let (x, y, half) = (x as isize, y as isize, shape.half);
+        let (lw, lh) = (self.lw as isize, self.lh as isize);
+        let (pw, ph) = (self.parent_size.0 as isize, self.parent_size.1 as isize);
+        let (ox, oy) = (x % 2, y % 2);
+        let inside = |v: isize, n: isize| (0..n).contains(&v);
+        // (Parent point (dx, dy) reads parent columns x / 2 + dx and, for odd x, the
+        // next one; see `parent_feature`.)
+        let parent = |dx: isize, dy: isize| {
+            !self.with_parent
+                || inside(x / 2 + dx, pw)
+                    && inside(x / 2 + dx + ox, pw)
+                    && inside(y / 2 + dy, ph)
+                    && inside(y / 2 + dy + oy, ph)
+        };
+        let own = |dx: isize, dy: isize| inside(x + dx, lw) && inside(y + dy, lh);
+        if own(-half, -half) && own(half, half) && parent(-1, -1) && parent(1, 1) {
+            return None;
+        }
+        let cut = shape.clipped(own, parent)?;
+        let offsets = self.mix.exs.iter().map(|ex| Offsets::new(&cut, ex.levels[self.level].width)).collect();
+        Some((cut, offsets))
     }
 
     /// The neighbourhood of exemplar `e`'s own choices around (x, y): each neighbour's

@@ -237,7 +237,7 @@ impl Job {
         let known = &self.known.as_ref().expect("a job with known pixels")[level];
         let plane = self.plane(0, level);
         let target = self.target.as_ref().map(|t| &t[level]);
-        let torus = self.params.tileable;
+        let torus = self.torus();
         let neighbour = |x: usize, y: usize, dx: isize, dy: isize| -> Option<usize> {
             let (nx, ny) = (x as isize + dx, y as isize + dy);
             if torus {
@@ -332,22 +332,24 @@ impl Job {
         let mut shape = Shape::full(2);
         shape.own.push((0, 0));
         shape.parent.clear();
-        let off = Offsets::new(&shape, plane.width);
-        let torus = self.params.tileable;
-        let at = |x: usize, y: usize, dx: isize, dy: isize| -> usize {
-            let (nx, ny) = (x as isize + dx, y as isize + dy);
-            if torus {
-                wrap(ny, h) * w + wrap(nx, w)
-            } else {
-                ny.clamp(0, h as isize - 1) as usize * w + nx.clamp(0, w as isize - 1) as usize
-            }
-        };
-        let mut f: Vec<Px> = Vec::with_capacity(shape.own.len());
+        let whole = (Offsets::new(&shape, plane.width), shape);
+        let torus = self.torus();
+        let at = |x: usize, y: usize, dx: isize, dy: isize| wrap(y as isize + dy, h) * w + wrap(x as isize + dx, w);
+        let mut f: Vec<Px> = Vec::with_capacity(whole.1.own.len());
         for i in (0..w * h).filter(|&i| !known[i]) {
             let (x, y) = (i % w, i / w);
+            // Off a torus, the points past the border are left out (as `Pass::cut` does).
+            let inside = |dx: isize, dy: isize| {
+                (0..w as isize).contains(&(x as isize + dx)) && (0..h as isize).contains(&(y as isize + dy))
+            };
+            let cut = (!(torus || inside(-2, -2) && inside(2, 2)))
+                .then(|| whole.1.clipped(inside, |_, _| true))
+                .flatten()
+                .map(|s| (Offsets::new(&s, plane.width), s));
+            let (off, shape) = cut.as_ref().unwrap_or(&whole);
             f.clear();
             f.extend(shape.own.iter().map(|&(dx, dy)| target[at(x, y, dx, dy)]));
-            let score = |pos: u32, bound: f32| distance(ex, 0, pos, &shape, &off, &f, bound);
+            let score = |pos: u32, bound: f32| distance(ex, 0, pos, shape, off, &f, bound);
             let mut best = (score(src[i], f32::INFINITY), src[i]);
             for &(dx, dy) in &shape.own {
                 if let Some(c) = plane.continuation(src[at(x, y, dx, dy)], dx, dy).filter(|&c| c != best.1) {
