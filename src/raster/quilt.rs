@@ -103,6 +103,8 @@ impl Quilt {
         const FREE: u32 = u32::MAX;
         let mut out = vec![FREE; lw * lh];
         let mut err = vec![0f32; b * b];
+        let mut cells: Vec<(u32, u32, u32)> = Vec::with_capacity(b * b);
+        let (mut row_e, mut row_g) = (vec![0f32; ew], vec![0f32; ew]);
         let windows = lw.div_ceil(step) * lh.div_ceil(step);
         let guided_cap = (GUIDED_BUDGET / (windows * b * b).max(1)).max(16);
         let diff = |a: u32, p: u32| {
@@ -148,26 +150,35 @@ impl Quilt {
                     }
                     origin
                 };
-                let cost = |origin: (usize, usize)| {
-                    let (mut e, mut overlap, mut g, mut laid) = (0.0, 0.0f32, 0.0, 0.0f32);
-                    for dy in 0..b {
-                        for dx in 0..b {
-                            let Some(i) = at(dx, dy) else { continue };
-                            let p = pos(origin, dx, dy);
-                            if out[i] != FREE {
-                                e += diff(p, out[i]);
-                                overlap += 1.0;
-                            }
-                            if let Some(gd) = guide {
-                                let d = gd.exemplar[p as usize] - gd.target[i];
-                                g += d * d;
-                                laid += 1.0;
-                            }
+                // The window's pixels inside the output, found once for every origin tried:
+                // each one's offset from the origin in the exemplar, its output pixel, and
+                // the position laid there (`FREE` if none). (Found again for each origin,
+                // a guided quilt's 625-1,024 tries were a sixth of a guided synthesis.)
+                cells.clear();
+                for dy in 0..b {
+                    for dx in 0..b {
+                        if let Some(i) = at(dx, dy) {
+                            cells.push(((dy * ew + dx) as u32, i as u32, out[i]));
                         }
                     }
+                }
+                let overlap = cells.iter().filter(|c| c.2 != FREE).count() as f32;
+                let cells = &cells;
+                let cost = |origin: (usize, usize)| {
+                    let base = pos(origin, 0, 0);
+                    let e: f32 = cells.iter().filter(|c| c.2 != FREE).map(|&(d, _, laid)| diff(base + d, laid)).sum();
                     match guide {
                         None => e,
-                        Some(gd) => e / overlap.max(1.0) + gd.weight * g / laid.max(1.0),
+                        Some(gd) => {
+                            let g: f32 = cells
+                                .iter()
+                                .map(|&(d, i, _)| {
+                                    let d = gd.exemplar[(base + d) as usize] - gd.target[i as usize];
+                                    d * d
+                                })
+                                .sum();
+                            e / overlap.max(1.0) + gd.weight * g / (cells.len() as f32).max(1.0)
+                        }
                     }
                 };
                 let origin = match guide {
@@ -182,14 +193,39 @@ impl Quilt {
                         }
                         best.1
                     }
-                    Some(_) => {
+                    Some(gd) => {
                         let tries = self.candidates.min(guided_cap).max(1);
                         let mut costs: Vec<(f32, (usize, usize))> = if nx * ny <= tries {
-                            (0..nx * ny)
-                                .map(|t| (t % nx, t / nx))
-                                .filter(|&o| inside(o))
-                                .map(|o| (cost(o), o))
-                                .collect()
+                            // Every origin, a row of them at a time: each cell's terms for
+                            // the row's origins lie side by side in the exemplar, a loop the
+                            // compiler turns into SIMD (the same sums as `cost`'s, in the
+                            // same order; origin by origin, this was 10% of a guided
+                            // synthesis).
+                            let mut costs = Vec::with_capacity(nx * ny);
+                            for oy in 0..ny {
+                                let (e, g) = (&mut row_e[..nx], &mut row_g[..nx]);
+                                e.fill(0.0);
+                                g.fill(0.0);
+                                for &(d, i, laid) in cells.iter() {
+                                    let start = oy * ew + d as usize;
+                                    if laid != FREE {
+                                        for (acc, a) in e.iter_mut().zip(start as u32..) {
+                                            *acc += diff(a, laid);
+                                        }
+                                    }
+                                    let t = gd.target[i as usize];
+                                    for (acc, &v) in g.iter_mut().zip(&gd.exemplar[start..start + nx]) {
+                                        *acc += (v - t) * (v - t);
+                                    }
+                                }
+                                let n = (cells.len() as f32).max(1.0);
+                                costs.extend(
+                                    (0..nx)
+                                        .filter(|&ox| inside((ox, oy)))
+                                        .map(|ox| (e[ox] / overlap.max(1.0) + gd.weight * g[ox] / n, (ox, oy))),
+                                );
+                            }
+                            costs
                         } else {
                             (0..tries).map(|_| random(rng)).map(|o| (cost(o), o)).collect()
                         };
