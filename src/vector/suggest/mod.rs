@@ -391,9 +391,12 @@ fn suggest_found(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Suggestion
         // than the tolerance (fill is asked for explicitly and goes everywhere); a row
         // drifts as far as its turn may take it.
         let bent = match (row_turn, hand_rows.get(m).and_then(|r| Some((r.first()?.0, r.last()?.0)))) {
-            (Some(turn), Some((first, last))) => {
+            (Some((turn, error)), Some((first, last))) => {
                 let past = (cell.0 - last).max(first - cell.0).max(0);
-                drift::drift(fit.a.hypot(), turn.abs(), (last - first) as f64, past as f64)
+                // (Two copies or more past the hand's, the turn it may hide too: see
+                // `drift::row_turn`.)
+                let turn = turn.abs() + if past >= 2 { error } else { 0.0 };
+                drift::drift(fit.a.hypot(), turn, (last - first) as f64, past as f64)
             }
             _ => 0.0,
         };
