@@ -105,6 +105,11 @@ impl Quilt {
         let mut err = vec![0f32; b * b];
         let mut cells: Vec<(u32, u32, u32)> = Vec::with_capacity(b * b);
         let (mut row_e, mut row_g) = (vec![0f32; ew], vec![0f32; ew]);
+        // (The exemplar's channels apart, for a guided quilt's rows of origins.)
+        let channels: [Vec<f32>; 3] = match guide {
+            Some(_) => [0, 1, 2].map(|k| ex.data.iter().map(|p| p[k]).collect()),
+            None => Default::default(),
+        };
         let windows = lw.div_ceil(step) * lh.div_ceil(step);
         let guided_cap = (GUIDED_BUDGET / (windows * b * b).max(1)).max(16);
         let diff = |a: u32, p: u32| {
@@ -209,8 +214,11 @@ impl Quilt {
                                 for &(d, i, laid) in cells.iter() {
                                     let start = oy * ew + d as usize;
                                     if laid != FREE {
-                                        for (acc, a) in e.iter_mut().zip(start as u32..) {
-                                            *acc += diff(a, laid);
+                                        let c = ex.data[laid as usize];
+                                        let [r, g, b] = [0, 1, 2].map(|k| &channels[k][start..start + nx]);
+                                        for (acc, ((r, g), b)) in e.iter_mut().zip(r.iter().zip(g).zip(b)) {
+                                            let (dr, dg, db) = (r - c[0], g - c[1], b - c[2]);
+                                            *acc += dr * dr + dg * dg + db * db;
                                         }
                                     }
                                     let t = gd.target[i as usize];
