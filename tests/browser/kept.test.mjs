@@ -68,6 +68,34 @@ test('an opened image is there after a reload made as soon as it shows', async (
   }
 });
 
+// A built-in photograph still loading when a file is opened (a slow network, a busy
+// machine: CI under load) arrived after the file and replaced it on the canvas.
+test('a file opened while a built-in photograph is still loading is not replaced by it', async () => {
+  for (const [t, input, canvas, select] of [
+    ['seamless', '#seam-file', '#seam-source', '#seam-texture'],
+    ['retouch', '#ret-file', '#ret-source', '#ret-texture'],
+    ['blend', '[data-slot="a"] input[type=file]', '[data-slot="a"] canvas', '[data-slot="a"] select'],
+  ]) {
+    await tab(t);
+    let release, served;
+    const held = new Promise((r) => (release = r));
+    const done = new Promise((r) => (served = r));
+    await page.route('**/textures/gravel.png', async (route) => {
+      await held;
+      await route.continue();
+      served();
+    });
+    await page.selectOption(select, 'gravel');
+    await page.setInputFiles(input, { name: 'small.png', mimeType: 'image/png', buffer: png });
+    await page.waitForFunction((c) => document.querySelector(c).width === 64, canvas);
+    release();
+    await done;
+    await page.waitForTimeout(300);
+    await page.unroute('**/textures/gravel.png');
+    assert.equal(await page.$eval(canvas, (c) => `${c.width}x${c.height}`), `${W}x${H}`, `${t}: the late built-in replaced the file`);
+  }
+});
+
 test('a fill mask stroke, and an erase, are there after an immediate reload', async () => {
   await tab('retouch');
   await page.click('#ret-clear');

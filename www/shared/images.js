@@ -99,15 +99,23 @@ export function imagePicker({ select, file, drop, textures, fallback, maxSide, k
     show(rgba);
     return note;
   }
+  // The picture asked for last wins: a built-in one still loading when a file is opened
+  // (a slow network, a busy machine) must not replace the file when it arrives. Each
+  // request takes a ticket; what arrives for an older one is dropped.
+  let latest = 0;
   async function builtin(name) {
+    const ticket = ++latest;
     try {
-      use(await builtinBitmap(name), name);
+      const bitmap = await builtinBitmap(name);
+      if (ticket === latest) use(bitmap, name);
     } catch (e) {
-      say(`Could not load the built-in ${noun} '${name}': ${e.message}`, 'error');
+      if (ticket === latest) say(`Could not load the built-in ${noun} '${name}': ${e.message}`, 'error');
     }
   }
   async function open(f) {
+    const ticket = ++latest;
     const bitmap = await fileBitmap(f);
+    if (ticket !== latest) return;
     if (!bitmap) return say(`${f.name} is not an image this browser can read (use PNG or JPEG).`, 'error');
     const note = use(bitmap, f.name);
     select.value = '';
@@ -132,7 +140,10 @@ export function imagePicker({ select, file, drop, textures, fallback, maxSide, k
     /** Shows the picture the settings name, the one kept, or `fallback`. */
     async start() {
       if (!settings.texture) {
+        const ticket = ++latest;
         const kept = await keptImage(key);
+        // (Something picked meanwhile stands.)
+        if (ticket !== latest) return;
         if (kept) return void use(kept.bitmap, kept.name);
       }
       select.value = settings.texture || fallback;

@@ -95,16 +95,23 @@ export function mountBlend(root, client) {
     return note;
   }
 
+  // The texture asked for last in a slot wins (as `imagePicker`'s): a built-in one still
+  // loading when a file is opened must not replace the file when it arrives.
+  const latest = { a: 0, b: 0 };
   async function loadBuiltin(key, name) {
+    const ticket = ++latest[key];
     try {
-      useBitmap(key, await builtinBitmap(name), name);
+      const bitmap = await builtinBitmap(name);
+      if (ticket === latest[key]) useBitmap(key, bitmap, name);
     } catch (e) {
-      say(`Could not load the built-in texture '${name}': ${e.message}`, 'error');
+      if (ticket === latest[key]) say(`Could not load the built-in texture '${name}': ${e.message}`, 'error');
     }
   }
 
   async function loadFile(key, file) {
+    const ticket = ++latest[key];
     const bitmap = await fileBitmap(file);
+    if (ticket !== latest[key]) return;
     if (!bitmap) return say(`${file.name} is not an image this browser can read (use PNG or JPEG).`, 'error');
     const note = useBitmap(key, bitmap, file.name);
     slots[key].select.value = '';
@@ -118,7 +125,10 @@ export function mountBlend(root, client) {
 
   /** A texture kept from an earlier visit; false when there is none. */
   async function loadKept(key) {
+    const ticket = ++latest[key];
     const kept = await keptImage(`${exemplarKey}.${key}`);
+    // (Something picked meanwhile stands: nothing more to load.)
+    if (ticket !== latest[key]) return true;
     if (kept) useBitmap(key, kept.bitmap, kept.name);
     return Boolean(kept);
   }
