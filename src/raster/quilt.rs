@@ -169,6 +169,9 @@ impl Quilt {
                 }
                 let overlap = cells.iter().filter(|c| c.2 != FREE).count() as f32;
                 let cells = &cells;
+                // A guided cost from its overlap's sum `e` and its guide's sum `g`.
+                let guided =
+                    |e: f32, g: f32, weight: f32| e / overlap.max(1.0) + weight * g / (cells.len() as f32).max(1.0);
                 let cost = |origin: (usize, usize)| {
                     let base = pos(origin, 0, 0);
                     let e: f32 = cells.iter().filter(|c| c.2 != FREE).map(|&(d, _, laid)| diff(base + d, laid)).sum();
@@ -182,7 +185,7 @@ impl Quilt {
                                     d * d
                                 })
                                 .sum();
-                            e / overlap.max(1.0) + gd.weight * g / (cells.len() as f32).max(1.0)
+                            guided(e, g, gd.weight)
                         }
                     }
                 };
@@ -226,11 +229,10 @@ impl Quilt {
                                         *acc += (v - t) * (v - t);
                                     }
                                 }
-                                let n = (cells.len() as f32).max(1.0);
                                 costs.extend(
                                     (0..nx)
                                         .filter(|&ox| inside((ox, oy)))
-                                        .map(|ox| (e[ox] / overlap.max(1.0) + gd.weight * g[ox] / n, (ox, oy))),
+                                        .map(|ox| (guided(e[ox], g[ox], gd.weight), (ox, oy))),
                                 );
                             }
                             costs
