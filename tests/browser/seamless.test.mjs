@@ -129,7 +129,7 @@ test('a 2048 x 2048 photograph is scaled to fit with a message, and its tile is 
   const png = Buffer.from(encodePng({ width: side, height: side, data }));
   await page.setInputFiles('#seam-file', { name: 'large.png', mimeType: 'image/png', buffer: png });
   await page.waitForFunction(() => document.querySelector('#seam-source').width === 1024, null, { timeout: 60000 });
-  assert.match(await page.textContent('#seam-messages'), /large\.png: scaled from 2048×2048 to fit 1024 px/);
+  assert.match(await page.textContent('#seam-messages'), /large\.png: scaled from 2048×2048 to 1024×1024 \(textures are capped at 1024 px/);
   await page.selectOption('#seam-method', 'etfmcm');
   await page.selectOption('#seam-size', '128');
   await run();

@@ -86,15 +86,18 @@ export function onDropFile(zone, handle) {
 /**
  * One picture input of a raster tab: a select of built-in photographs, an Open… file
  * input and a drop zone; a picture the person opened is kept under `key` and comes
- * back after a reload, a built-in one is named in `settings.texture` ('' for an opened
- * one). `show(rgba)` puts it on the page; `say(text, kind)` reports.
+ * back after a reload, a built-in one is named in `settings[setting]` ('' for an opened
+ * one). `show(rgba)` puts it on the page; `say(text, kind)` reports, naming the picture
+ * `as` (the Blend tab's "texture A") where a tab has several.
  */
-export function imagePicker({ select, file, drop, textures, fallback, maxSide, key, settings, save, say, show, noun = 'image' }) {
+export function imagePicker({ select, file, drop, textures, fallback, maxSide, key, settings, setting = 'texture', save, say, show, noun = 'image', as = '' }) {
   select.append(new Option('Built-in…', ''), ...textures.map((t) => new Option(t, t)));
   /** Shows a bitmap, scaled down to the cap; returns the note saying so (empty when it fits). */
   function use(bitmap, name) {
     const { rgba, scaledFrom } = rgbaOf(bitmap, maxSide);
-    const note = scaledFrom ? `${name}: scaled from ${scaledFrom[0]}×${scaledFrom[1]} to fit ${maxSide} px.` : '';
+    const note = scaledFrom
+      ? `${name}: scaled from ${scaledFrom[0]}×${scaledFrom[1]} to ${rgba.width}×${rgba.height} (${noun}s are capped at ${maxSide} px to keep synthesis quick).`
+      : '';
     if (note) say(note, 'warn');
     show(rgba);
     return note;
@@ -119,14 +122,15 @@ export function imagePicker({ select, file, drop, textures, fallback, maxSide, k
     if (!bitmap) return say(`${f.name} is not an image this browser can read (use PNG or JPEG).`, 'error');
     const note = use(bitmap, f.name);
     select.value = '';
-    settings.texture = '';
+    settings[setting] = '';
     save();
     const kept = await keepImage(key, f.name, f);
-    say(`Loaded ${f.name}.${note ? ` ${note}` : ''}${kept ? '' : ' (This browser would not keep it: it will not survive a reload.)'}`, kept && !note ? '' : 'warn');
+    // (The scaling note stays in the message: it is what the person most needs to know.)
+    say(`Loaded ${f.name}${as ? ` as ${as}` : ''}.${note ? ` ${note}` : ''}${kept ? '' : ' (This browser would not keep it: it will not survive a reload.)'}`, kept && !note ? '' : 'warn');
   }
   select.addEventListener('change', () => {
     if (!select.value) return;
-    settings.texture = select.value;
+    settings[setting] = select.value;
     save();
     forgetImage(key);
     builtin(select.value);
@@ -139,14 +143,14 @@ export function imagePicker({ select, file, drop, textures, fallback, maxSide, k
   return {
     /** Shows the picture the settings name, the one kept, or `fallback`. */
     async start() {
-      if (!settings.texture) {
+      if (!settings[setting]) {
         const ticket = ++latest;
         const kept = await keptImage(key);
         // (Something picked meanwhile stands.)
         if (ticket !== latest) return;
         if (kept) return void use(kept.bitmap, kept.name);
       }
-      select.value = settings.texture || fallback;
+      select.value = settings[setting] || fallback;
       await builtin(select.value);
     },
   };

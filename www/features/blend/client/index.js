@@ -6,7 +6,7 @@ import { offerDownload, runControls } from '../../../shared/run.js';
 import { zoomable } from '../../../shared/zoom.js';
 import { keptResult } from '../../../shared/results.js';
 import { keyboardBrush } from '../../../shared/mask.js';
-import { builtinBitmap, fileBitmap, forgetImage, keepImage, keptImage, onDropFile, rgbaOf } from '../../../shared/images.js';
+import { imagePicker } from '../../../shared/images.js';
 
 /** The coefficient transfers, as the engine defines them (mu of A in [0, 1]). */
 const TRANSFER = {
@@ -57,26 +57,8 @@ export function mountBlend(root, client) {
   };
   let resultUrl = null;
 
-  // --- exemplar slots ---
+  // --- exemplar slots: one picture input each (`imagePicker`), texture A and B ---
   const slots = {};
-  for (const key of ['a', 'b']) {
-    const fig = root.querySelector(`[data-slot="${key}"]`);
-    const slot = (slots[key] = { fig, canvas: fig.querySelector('canvas'), select: fig.querySelector('select'), image: null });
-    slot.select.append(new Option('Built-in…', ''), ...textures.map((t) => new Option(t, t)));
-    slot.select.addEventListener('change', async () => {
-      if (!slot.select.value) return;
-      settings[key] = slot.select.value;
-      save();
-      forgetImage(`${exemplarKey}.${key}`);
-      await loadBuiltin(key, slot.select.value);
-    });
-    fig.querySelector('input[type=file]').addEventListener('change', async (e) => {
-      if (e.target.files[0]) await loadFile(key, e.target.files[0]);
-      e.target.value = '';
-    });
-    onDropFile(fig, (file) => loadFile(key, file));
-  }
-
   function setSlot(key, rgba) {
     const { canvas } = slots[key];
     canvas.width = rgba.width;
@@ -84,53 +66,14 @@ export function mountBlend(root, client) {
     canvas.getContext('2d').putImageData(new ImageData(new Uint8ClampedArray(rgba.data), rgba.width, rgba.height), 0, 0);
     slots[key].image = rgba;
   }
-
-  /** Shows a bitmap in slot `key`, scaled down to the cap; returns the note saying so
-   *  (empty when it fits), which is also shown. */
-  function useBitmap(key, bitmap, name) {
-    const { rgba, scaledFrom } = rgbaOf(bitmap, maxExemplarSide);
-    const note = scaledFrom ? `${name}: scaled from ${scaledFrom[0]}×${scaledFrom[1]} to ${rgba.width}×${rgba.height} (exemplars are capped at ${maxExemplarSide} px to keep synthesis quick).` : '';
-    if (note) say(note, 'warn');
-    setSlot(key, rgba);
-    return note;
-  }
-
-  // The texture asked for last in a slot wins (as `imagePicker`'s): a built-in one still
-  // loading when a file is opened must not replace the file when it arrives.
-  const latest = { a: 0, b: 0 };
-  async function loadBuiltin(key, name) {
-    const ticket = ++latest[key];
-    try {
-      const bitmap = await builtinBitmap(name);
-      if (ticket === latest[key]) useBitmap(key, bitmap, name);
-    } catch (e) {
-      if (ticket === latest[key]) say(`Could not load the built-in texture '${name}': ${e.message}`, 'error');
-    }
-  }
-
-  async function loadFile(key, file) {
-    const ticket = ++latest[key];
-    const bitmap = await fileBitmap(file);
-    if (ticket !== latest[key]) return;
-    if (!bitmap) return say(`${file.name} is not an image this browser can read (use PNG or JPEG).`, 'error');
-    const note = useBitmap(key, bitmap, file.name);
-    slots[key].select.value = '';
-    settings[key] = '';
-    save();
-    // Kept across reloads like everything else the person made.
-    const kept = await keepImage(`${exemplarKey}.${key}`, file.name, file);
-    // The scaling note stays in the message: it is what the person most needs to know.
-    say(`Loaded ${file.name} as texture ${key.toUpperCase()}.${note ? ` ${note}` : ''}${kept ? '' : ' (This browser would not keep it: it will not survive a reload.)'}`, kept && !note ? '' : 'warn');
-  }
-
-  /** A texture kept from an earlier visit; false when there is none. */
-  async function loadKept(key) {
-    const ticket = ++latest[key];
-    const kept = await keptImage(`${exemplarKey}.${key}`);
-    // (Something picked meanwhile stands: nothing more to load.)
-    if (ticket !== latest[key]) return true;
-    if (kept) useBitmap(key, kept.bitmap, kept.name);
-    return Boolean(kept);
+  for (const [key, fallback] of [['a', 'wood'], ['b', 'gravel']]) {
+    const fig = root.querySelector(`[data-slot="${key}"]`);
+    slots[key] = { fig, canvas: fig.querySelector('canvas'), image: null };
+    slots[key].picker = imagePicker({
+      select: fig.querySelector('select'), file: fig.querySelector('input[type=file]'), drop: fig, textures, fallback,
+      maxSide: maxExemplarSide, key: `${exemplarKey}.${key}`, settings, setting: key, save, say,
+      show: (rgba) => setSlot(key, rgba), noun: 'texture', as: `texture ${key.toUpperCase()}`,
+    });
   }
 
   // --- settings ---
@@ -343,9 +286,5 @@ export function mountBlend(root, client) {
     const blob = typeof savedMask === 'string' ? fetch(savedMask).then((r) => r.blob()) : Promise.resolve(savedMask);
     blob.then(createImageBitmap).then((bitmap) => mctx.drawImage(bitmap, 0, 0, mask.width, mask.height), drawShape);
   } else drawShape();
-  for (const [key, fallback] of [['a', 'wood'], ['b', 'gravel']]) {
-    slots[key].select.value = settings[key];
-    if (settings[key]) loadBuiltin(key, settings[key]);
-    else loadKept(key).then((ok) => ok || loadBuiltin(key, fallback));
-  }
+  for (const slot of Object.values(slots)) slot.picker.start();
 }
