@@ -7,6 +7,7 @@ import { zoomable } from '../../../shared/zoom.js';
 import { keptResult } from '../../../shared/results.js';
 import { keyboardBrush } from '../../../shared/mask.js';
 import { imagePicker } from '../../../shared/images.js';
+import { sayInto } from '../../../shared/say.js';
 
 /** The coefficient transfers, as the engine defines them (mu of A in [0, 1]). */
 const TRANSFER = {
@@ -48,13 +49,7 @@ export function mountBlend(root, client) {
   const $ = (id) => root.querySelector(`#${id}`);
   const settings = { ...defaultOptions, ...load(storageKey, {}) };
   const save = () => store(storageKey, settings);
-  const messages = $('blend-messages');
-  const say = (text, kind = '') => {
-    const p = document.createElement('p');
-    p.className = kind;
-    p.textContent = text;
-    messages.replaceChildren(p);
-  };
+  const say = sayInto($('blend-messages'));
   let resultUrl = null;
 
   // --- exemplar slots: one picture input each (`imagePicker`), texture A and B ---

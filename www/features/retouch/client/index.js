@@ -8,17 +8,13 @@ import { offerDownload, runControls, withdrawDownload } from '../../../shared/ru
 import { maskPainter } from '../../../shared/mask.js';
 import { fileBitmap, imagePicker } from '../../../shared/images.js';
 import { keptResult } from '../../../shared/results.js';
+import { sayInto } from '../../../shared/say.js';
 
 export function mountRetouch(root, client) {
   const $ = (id) => root.querySelector(`#${id}`);
   const settings = { ...defaultOptions, ...load(storageKey, {}) };
   const save = () => store(storageKey, settings);
-  const say = (text, kind = '') => {
-    const p = document.createElement('p');
-    p.className = kind;
-    p.textContent = text;
-    $('ret-messages').replaceChildren(p);
-  };
+  const say = sayInto($('ret-messages'));
   let image = null;
   let maps = []; // [{ name, rgba }]: the material's other maps, at the photograph's size
   const urls = [];

@@ -7,17 +7,13 @@ import { zoomable } from '../../../shared/zoom.js';
 import { tilePanel } from '../../../shared/tile.js';
 import { imagePicker } from '../../../shared/images.js';
 import { keptResult } from '../../../shared/results.js';
+import { sayInto } from '../../../shared/say.js';
 
 export function mountSeamless(root, client) {
   const $ = (id) => root.querySelector(`#${id}`);
   const settings = { ...defaultOptions, ...load(storageKey, {}) };
   const save = () => store(storageKey, settings);
-  const say = (text, kind = '') => {
-    const p = document.createElement('p');
-    p.className = kind;
-    p.textContent = text;
-    $('seam-messages').replaceChildren(p);
-  };
+  const say = sayInto($('seam-messages'));
   let image = null;
   let resultUrl = null;
   let shownScale = 1; // the tile's screen pixels per pixel in its repeat (see `tilePanel.show`)

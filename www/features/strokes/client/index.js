@@ -11,6 +11,7 @@ import { tilePanel } from '../../../shared/tile.js';
 import { keptResult } from '../../../shared/results.js';
 import { zoomable } from '../../../shared/zoom.js';
 import { checkStyle, restyleSvg } from '../../../pkg/restyle.js';
+import { sayInto } from '../../../shared/say.js';
 
 const SETTINGS_KEY = 'patternsynth.strokes.settings.v1';
 
@@ -26,7 +27,6 @@ const STRUCTURE = {
 export function mountStrokes(root, client) {
   const $ = (id) => root.querySelector(`#${id}`);
   const canvas = $('draw');
-  const messages = $('messages');
   // The pen's width is `penWidth` in the settings: `width` is the output's.
   const { width: _penWidth, ...pen } = defaultPen;
   let settings = { ...defaultOptions, ...pen, ...defaultStyle, ...load(SETTINGS_KEY, {}) };
@@ -35,12 +35,7 @@ export function mountStrokes(root, client) {
   let classifyAbort = null;
   let resultUrl = null;
 
-  const say = (text, kind = '') => {
-    const p = document.createElement('p');
-    p.className = kind;
-    p.textContent = text;
-    messages.replaceChildren(p);
-  };
+  const say = sayInto($('messages'));
   const runs = runControls({ run: $('synthesize'), cancel: $('cancel'), progress: $('progress'), say });
 
   // --- pen and settings inputs ---
