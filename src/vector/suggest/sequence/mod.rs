@@ -415,7 +415,7 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
         {
             return unfollowed().map(|s| (s, Vec::new()));
         }
-        from_three = hand.len() < 4;
+        from_three = ring && hand.len() < 4;
     }
     // (A ring snapped to its count, with no lead-in, closes whole: its turn holds by
     // construction and cannot bend the other way, which is what the backtest looks for,
@@ -424,10 +424,12 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
     // eight after five, were held back as though bending, by 1.8 times: the first
     // ghost's reach 0.37 of the step, against 0.20; six veined petals by a person's hand
     // at 3%, snapped after four, by 2.4 times: 0.46 against 0.19.)
-    let inflate = match (closes.is_some() && lead.is_none(), from_three) {
-        (true, true) => RING_FROM_THREE,
-        (true, false) => 1.0,
-        _ => backtest(d, &run, step, shapes, lead, upright),
+    let inflate = if from_three {
+        RING_FROM_THREE
+    } else if closes.is_some() && lead.is_none() {
+        1.0
+    } else {
+        backtest(d, &run, step, shapes, lead, upright)
     };
     // The turn a copy takes from copy `from` to copy `to`: the orbit's, or none.
     let turn_of = |from: i64, to: i64| if upright { Vec2::new(1.0, 0.0) } else { orbit.turn(from, to) };
