@@ -476,6 +476,7 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
     };
     // The latest copy's other strokes carried to copy `t`, where none is drawn yet (the
     // copy that closes a ring may lack one).
+    let ring_centre = orbit.centre();
     let parts_at = |t: i64, here: f64| -> Vec<(Stroke, usize)> {
         let turn = turn_of(h as i64, t);
         let to = Similarity { a: turn, b: orbit.at(t).to_vec2() - mul(turn, d.z(last).to_vec2()) };
@@ -501,7 +502,7 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
                 // each tip, by a person's hand: a dot carried to the copy drawn last fell
                 // 13.6 from the dot drawn there, past 0.3 of the petals' step, and was
                 // proposed again beside it.)
-                let own = orbit.centre().map_or(1.0, |c| {
+                let own = ring_centre.map_or(1.0, |c| {
                     let r = orbit.at(t).distance(c);
                     if r > 0.0 {
                         (p.distance(c) / r).max(1.0)
