@@ -1,7 +1,8 @@
 //! Ghosts after the first three and four copies of rings drawn by a person's hand
 //! (issue 27): how many are shown, how many are wrong (further than 0.3 of the step
 //! from every copy still to draw), over seeds 1-10.
-//! `cargo run --release --example ring_ghosts [turn degrees, default 2.5]`
+//! `cargo run --release --example ring_ghosts [turn degrees, default 2.5]` (`REASONS=1`: what
+//! each case with no ghost is told)
 use patternsynth::vector::sequences::{composite, drawn_by, HandTurn};
 use patternsynth::vector::{suggest_strokes, SuggestOptions};
 
@@ -41,6 +42,9 @@ fn main() {
                         ..SuggestOptions::default()
                     };
                     let s = suggest_strokes(&q.strokes[..n], &opts).unwrap();
+                    if std::env::var("REASONS").is_ok() && s.strokes.is_empty() {
+                        println!("  REASON {} seed {seed} w {wobble} drawn {drawn}: {:?}", q.name, s.reason);
+                    }
                     if let Ok(path) = std::env::var("DUMP_JSON") {
                         std::fs::write(path, serde_json::to_string(&q.strokes[..n]).unwrap()).unwrap();
                     }

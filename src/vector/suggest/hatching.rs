@@ -72,14 +72,25 @@ struct Line {
     len: f64,
 }
 
+/// Whether `s` is a straight line (as hatching's lines are): any two lines are one shape
+/// up to a similarity, which says nothing of a repetition.
+pub(super) fn straight(s: &Stroke) -> bool {
+    Line::through(s).is_some()
+}
+
 impl Line {
     /// The line `s` is, if straight (see `STRAIGHT`, `LONG`).
     fn of(s: &Stroke) -> Option<Line> {
+        Line::through(s).filter(|l| l.len >= LONG * s.width.max(1.0))
+    }
+
+    /// The line through `s`'s ends, if it keeps to it (see `STRAIGHT`), however short.
+    fn through(s: &Stroke) -> Option<Line> {
         let (first, last) = (s.points.first()?, s.points.last()?);
         let (p, q) = (Point::new(first[0], first[1]), Point::new(last[0], last[1]));
         let chord = q - p;
         let len = chord.hypot();
-        if len < LONG * s.width.max(1.0) {
+        if len == 0.0 {
             return None;
         }
         let dir = chord / len;

@@ -273,7 +273,9 @@ fn suggest_found(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Suggestion
     let Some(mut fit) = Fit::find(&elems, &weight, &parts, &spread) else {
         // No lattice: the latest strokes may still repeat one another by turns (a ring
         // of petals, hatching that bends: see `sequence`).
-        return Ok(by_turns(strokes, &accepted, &ask(true)).unwrap_or_else(|| nothing(NO_REPETITION)));
+        let unread =
+            || nothing(if sequence::repeats(strokes, &accepted) { sequence::UNFOLLOWED } else { NO_REPETITION });
+        return Ok(by_turns(strokes, &accepted, &ask(true)).unwrap_or_else(unread));
     };
     // A ring round a centre that holds the latest stroke turns its copies: they carry
     // on by turns, whatever lattice their places also fit (six petals round a drawn

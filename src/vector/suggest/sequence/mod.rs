@@ -266,6 +266,37 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
     }
 }
 
+/// Whether the latest strokes repeat a shape: the latest hand-drawn one with a shape of
+/// its own (not a dot, nor a straight line, which any two lines share), among the latest
+/// `MAX_STRIDE` hand-drawn ones (a petal's dot or vein may come after it), has at least
+/// `REPEATED` copies before it among the latest `LOOK_BACK_COPIES` strokes, one shape up
+/// to a similarity and drawn with the same pen. Where nothing is proposed, the page then says the copies do not yet
+/// show where the next goes, not that there is no repetition (three or four petals a
+/// person turned read "no repetition yet" at 59 of 180 calls of `examples/ring_ghosts`).
+pub(super) fn repeats(strokes: &[Stroke], accepted: &[bool]) -> bool {
+    let n = strokes.len();
+    let from = n.saturating_sub(LOOK_BACK_COPIES + 1);
+    let hand: Vec<usize> = (from..n).rev().filter(|&i| !accepted.get(i).copied().unwrap_or(false)).collect();
+    let shaped = |i: usize| !strokes[i].is_dot() && !super::hatching::straight(&strokes[i]);
+    let Some(&last) = hand.iter().take(MAX_STRIDE).find(|&&i| shaped(i)) else { return false };
+    let shape = samples(&strokes[last]);
+    let size = strokes[last].bounds().size().to_vec2().hypot();
+    // (Drawn with the same pen: a sketch's wandering curves of any colour and width
+    // match one another's shapes now and then.)
+    let pen = |i: usize| {
+        let (s, t) = (&strokes[i], &strokes[last]);
+        s.stroke == t.stroke && s.fill == t.fill && (s.width - t.width).abs() <= 0.25 * t.width
+    };
+    (from..last)
+        .rev()
+        .filter(|&i| shaped(i) && pen(i) && !relations(&samples(&strokes[i]), &shape, size).is_empty())
+        .nth(REPEATED - 1)
+        .is_some()
+}
+
+/// Copies before the latest that make it a repetition for `repeats`.
+const REPEATED: usize = 2;
+
 /// A stroke under this many pen widths across is small: its shape is mostly the hand's
 /// wobble (a circle drawn in a petal).
 const SMALL: f64 = 2.0 * DOT;
