@@ -2,13 +2,14 @@
 //! (issue 27): how many are shown, how many are wrong (further than 0.3 of the step
 //! from every copy still to draw), over seeds 1-10.
 //! `cargo run --release --example ring_ghosts [turn degrees, default 2.5]` (`REASONS=1`: what
-//! each case with no ghost is told)
+//! each case with no ghost is told; `SIZE=0.1`: each petal 10% longer or shorter at random)
 use patternsynth::vector::sequences::{composite, drawn_by, HandTurn};
 use patternsynth::vector::{suggest_strokes, SuggestOptions};
 
 fn main() {
     let turn: f64 = std::env::args().nth(1).and_then(|a| a.parse().ok()).unwrap_or(2.5);
     let verbose = std::env::var("VERBOSE").is_ok();
+    let size: f64 = std::env::var("SIZE").ok().and_then(|v| v.parse().ok()).unwrap_or(0.0);
     // (REPLAY=name:seed:wobble replays that sequence alone, stroke by stroke.)
     if let Ok(r) = std::env::var("REPLAY") {
         let f: Vec<&str> = r.split(':').collect();
@@ -35,7 +36,20 @@ fn main() {
             for seed in 1..=10 {
                 let hand = HandTurn(turn.to_radians());
                 let all = drawn_by(wobble, hand, seed).into_iter().chain(composite(wobble, hand, seed));
-                for q in all.filter(|q| q.name.starts_with("ring") && wanted(&q.name, seed, wobble, drawn)) {
+                for mut q in all.filter(|q| q.name.starts_with("ring") && wanted(&q.name, seed, wobble, drawn)) {
+                    // (SIZE=s: each petal drawn s longer or shorter at random, a standard
+                    // deviation, out from the ring's centre, as a person's petals vary.)
+                    if size > 0.0 {
+                        let mut rng = patternsynth::rng::Rng::new(seed * 7 + 1);
+                        for copy in q.strokes.chunks_mut(q.parts) {
+                            let k = 1.0 + size * rng.normal();
+                            for s in copy {
+                                for p in &mut s.points {
+                                    *p = [300.0 + (p[0] - 300.0) * k, 300.0 + (p[1] - 300.0) * k];
+                                }
+                            }
+                        }
+                    }
                     let n = drawn * q.parts;
                     let opts = SuggestOptions {
                         region: Some([q.canvas.x0, q.canvas.y0, q.canvas.width(), q.canvas.height()]),
