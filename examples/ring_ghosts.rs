@@ -3,6 +3,7 @@
 //! from every copy still to draw), over seeds 1-10.
 //! `cargo run --release --example ring_ghosts [turn degrees, default 2.5]` (`REASONS=1`: what
 //! each case with no ghost is told; `SIZE=0.1`: each petal 10% longer or shorter at random)
+use kurbo::Point;
 use patternsynth::vector::sequences::{composite, drawn_by, HandTurn};
 use patternsynth::vector::{suggest_strokes, SuggestOptions};
 
@@ -36,20 +37,10 @@ fn main() {
             for seed in 1..=10 {
                 let hand = HandTurn(turn.to_radians());
                 let all = drawn_by(wobble, hand, seed).into_iter().chain(composite(wobble, hand, seed));
-                for mut q in all.filter(|q| q.name.starts_with("ring") && wanted(&q.name, seed, wobble, drawn)) {
+                for q in all.filter(|q| q.name.starts_with("ring") && wanted(&q.name, seed, wobble, drawn)) {
                     // (SIZE=s: each petal drawn s longer or shorter at random, a standard
                     // deviation, out from the ring's centre, as a person's petals vary.)
-                    if size > 0.0 {
-                        let mut rng = patternsynth::rng::Rng::new(seed * 7 + 1);
-                        for copy in q.strokes.chunks_mut(q.parts) {
-                            let k = 1.0 + size * rng.normal();
-                            for s in copy {
-                                for p in &mut s.points {
-                                    *p = [300.0 + (p[0] - 300.0) * k, 300.0 + (p[1] - 300.0) * k];
-                                }
-                            }
-                        }
-                    }
+                    let q = if size > 0.0 { q.sized_about(Point::new(300.0, 300.0), size, seed) } else { q };
                     let n = drawn * q.parts;
                     let opts = SuggestOptions {
                         region: Some([q.canvas.x0, q.canvas.y0, q.canvas.width(), q.canvas.height()]),

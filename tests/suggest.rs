@@ -1171,3 +1171,30 @@ fn leaves_with_midribs_along_a_wave_are_not_carried_on_straight() {
         assert!(off < 0.3 * case.spacing, "a ghost {:.2} of the spacing off the wave's leaves", off / case.spacing);
     }
 }
+
+/// A ring whose petals a person drew longer and shorter (each 10% at random, out from
+/// the centre) reads from three petals as a spiral about the ring's centre as often as a
+/// ring: its ghosts past the first are then held back, not carried on round the spiral
+/// (`PERSON_SIZE`). Six plain and six veined petals, seed 2, at 1%: ghosts off every
+/// petal still to draw by 0.36-0.45 of the step before.
+#[test]
+fn petals_of_varying_length_are_not_carried_round_a_spiral() {
+    let centre = kurbo::Point::new(300.0, 300.0);
+    for name in ["ring of 6", "ring of 6 veined petals"] {
+        let q = drawn_by(0.01, HandTurn::PERSON, 2)
+            .into_iter()
+            .chain(composite(0.01, HandTurn::PERSON, 2))
+            .find(|q| q.name == name)
+            .unwrap()
+            .sized_about(centre, 0.1, 2);
+        let n = 3 * q.parts;
+        let s = suggest_strokes(&q.strokes[..n], &SuggestOptions::default()).unwrap();
+        for g in &s.strokes {
+            let miss = q.strokes[n..]
+                .iter()
+                .map(|t| t.reference_point().distance(g.reference_point()))
+                .fold(f64::INFINITY, f64::min);
+            assert!(miss <= 0.3 * q.step, "{name}: a ghost {miss:.1} off (step {:.1})", q.step);
+        }
+    }
+}

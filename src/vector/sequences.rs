@@ -45,6 +45,19 @@ impl Sequence {
         replay_each(strokes, &self.classes, self.canvas, &tol, &past)
     }
 
+    /// The copies drawn larger and smaller out from `centre` (a ring's), each by a factor
+    /// `1 + spread N(0, 1)`, as a person's petals drawn from the centre vary in length.
+    pub fn sized_about(mut self, centre: Point, spread: f64, seed: u64) -> Sequence {
+        let mut rng = Rng::new(seed * 7 + 1);
+        for copy in self.strokes.chunks_mut(self.parts) {
+            let k = 1.0 + spread * rng.normal();
+            for p in copy.iter_mut().flat_map(|s| s.points.iter_mut()) {
+                *p = [centre.x + (p[0] - centre.x) * k, centre.y + (p[1] - centre.y) * k];
+            }
+        }
+        self
+    }
+
     /// A family of single strokes `step` apart (its steps, classes and canvas set by
     /// `finish`).
     fn of_strokes(name: &str, strokes: Vec<Stroke>, step: f64) -> Sequence {

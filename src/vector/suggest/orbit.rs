@@ -53,6 +53,10 @@ pub(super) struct Orbit {
     /// Variance of `a` (both components together), from shapes and places; zero once a
     /// ring's turn is snapped to a whole fraction.
     pub var_a: f64,
+    /// Variance of the step's scale over what `var_a` holds, where the shapes leave it
+    /// open whether the copies scale at all (`sequence::model`'s `PERSON_SIZE`): the
+    /// sites further on may lie on the ring as well as on the spiral.
+    pub var_scale: f64,
     /// `a` is held to a pure turn (its error is then along the turn only).
     unit: bool,
     members: Vec<Placed>,
@@ -308,6 +312,7 @@ impl Orbit {
             copies: (hand - 3.0).max(0.0) + PRIOR_COPIES,
             sums,
             var_a,
+            var_scale: 0.0,
             unit,
             members: copies.to_vec(),
         })
@@ -322,6 +327,11 @@ impl Orbit {
         let mut o = Orbit::with(copies, a, 0.0, |ssr| (ssr + PRIOR_COPIES * prior) / (free + PRIOR_COPIES), 0.0, true)?;
         o.copies = free + PRIOR_COPIES;
         Some(o)
+    }
+
+    /// Whether the step scales (a spiral), not held to a pure turn.
+    pub fn scales(&self) -> bool {
+        !self.unit
     }
 
     /// The turn and scale carrying copy `from` onto copy `to`.
@@ -360,7 +370,9 @@ impl Orbit {
             // (Along the turn: `a i` is the tangent of the unit circle at `a`.)
             moved(mul(self.a, Vec2::new(0.0, 1.0))) * self.var_a
         } else {
+            // (And out along `a` itself, its scale, by what `var_scale` adds.)
             0.5 * (moved(Vec2::new(1.0, 0.0)) + moved(Vec2::new(0.0, 1.0))) * self.var_a
+                + moved(self.a / self.a.hypot()) * self.var_scale
         };
         (self.scatter * (1.0 + leverage) + from_a).sqrt()
     }

@@ -33,6 +33,15 @@ const SNAP_SURE: f64 = 20.0;
 /// likelier than eight, its ghosts two and three copies on 0.9 and 1.05 of the step
 /// off. A turned copy's centre moves with it, by about half its size times the turn.
 const PERSON_TURN: f64 = 0.0436;
+/// A person draws copies of one shape at sizes that vary by about this share at random (a
+/// standard deviation): the shapes' mean scale over `s` steps, their sizes' last against
+/// first, then varies by `sqrt(2)` times it over `s`. A spiral read within `SPIRAL_SURE`
+/// of that may be a ring of petals drawn longer and shorter (a ring's petals each 10%
+/// longer or shorter at random, `examples/ring_ghosts` with `SIZE=0.1`, were read from
+/// three as spirals of 6-9% a step about the ring's centre, their second and third
+/// ghosts off the ring).
+const PERSON_SIZE: f64 = 0.05;
+const SPIRAL_SURE: f64 = 2.0;
 /// ...and no more than this much less likely than the free turn (minus log-likelihood):
 /// leaves of a ring of nine followed every other one turn 78 degrees a step, no whole
 /// fraction, and were snapped to a ring of five all the same, the best of four, five
@@ -173,8 +182,9 @@ pub(super) fn model(
     let turn_prior = TURN_ERROR.powi(2).max(prior / (0.5 * size).powi(2));
     let turning = turning(&relations, lead_in);
     let steps = relations.iter().map(|r| r.span).sum::<usize>() as f64;
-    let scale = (relations.iter().map(|r| r.scale.ln()).sum::<f64>() / steps).exp();
-    let scale_spread = relations.iter().map(|r| (r.scale.ln() - r.span as f64 * scale.ln()).powi(2)).sum::<f64>();
+    let read = relations.iter().map(|r| r.scale.ln()).sum::<f64>() / steps;
+    let scale = read.exp();
+    let scale_spread = relations.iter().map(|r| (r.scale.ln() - r.span as f64 * read).powi(2)).sum::<f64>();
     let var = (turning.spread + scale_spread + PRIOR_PAIRS * turn_prior) / (turning.dof + PRIOR_PAIRS);
     let shapes_at = |bend: f64| {
         let first = turning.first_given(bend);
@@ -217,6 +227,13 @@ pub(super) fn model(
     };
     let shapes = shapes_at(bend);
     let mut orbit = Orbit::fit(&copies, shapes, prior)?;
+    // A spiral read from the shapes' scale where a person's copies of varying size would
+    // read it as often (see `PERSON_SIZE`) may be a ring: its sites further on are as
+    // uncertain as the scale is off one.
+    let scale_error = std::f64::consts::SQRT_2 * PERSON_SIZE / steps;
+    if !upright && orbit.scales() && read.abs() < SPIRAL_SURE * scale_error {
+        orbit.var_scale = orbit.a.hypot().ln().powi(2);
+    }
     // A ring closes when its turn is about a whole fraction of a turn (see
     // `chain::ring_steps`): snapped to that whole number of copies or one either side,
     // whichever the copies' places and shapes bear out best (`orbit::cost`: the free
