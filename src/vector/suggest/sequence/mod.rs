@@ -215,6 +215,9 @@ impl Drawing<'_> {
 /// A proposed stroke is on a drawn one of its shape when its centre lies within this
 /// share of the step of it (the matching tolerance).
 const DRAWN: f64 = 0.3;
+/// Where a ring closes, a drawn stroke up to this many times larger or smaller than a
+/// ghost is the copy it would be proposed over.
+const RESIZED: f64 = 2.0;
 
 /// Proposals continuing the sequence that ends with the latest of `strokes` (none, with
 /// the reason, when it is complete or too uncertain to go on), or `None` when the
@@ -483,7 +486,10 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
         .collect();
     // (A copy's strokes may share a centre, a leaf's two halves and its midrib: a ghost
     // is on a drawn stroke that it carries onto about unturned, unscaled and unmoved.)
-    let drawn = |g: &Stroke, here: f64| {
+    // (`resized`: or drawn larger or smaller, up to `RESIZED` times, its centre off by
+    // what that moves it: where a ring closes, a petal a person drew a third longer than
+    // the rest is its first petal still, and a ghost was proposed over it.)
+    let drawn_as = |g: &Stroke, here: f64, resized: bool| {
         let p = g.reference_point();
         let mut near = strokes.iter().filter(|s| s.reference_point().distance(p) < 0.5 * here).peekable();
         near.peek().is_some() && {
@@ -499,12 +505,19 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
                 if dot || (circle && small(s)) {
                     return s.reference_point().distance(p) < DRAWN * here;
                 }
+                if resized {
+                    return similarity::relations(&mine, &samples(s), size, SHAPE, RESIZED).iter().any(|(t, _, _)| {
+                        let moved = (t.scale() - 1.0).abs() * 0.5 * size;
+                        t.turn().abs() < FOLLOW_TURN && t.apply(c).distance(c) < DRAWN * here + moved
+                    });
+                }
                 relations(&mine, &samples(s), size).iter().any(|(t, _)| {
                     (t.a - Vec2::new(1.0, 0.0)).hypot() < FOLLOW_TURN && t.apply(c).distance(c) < DRAWN * here
                 })
             })
         }
     };
+    let drawn = |g: &Stroke, here: f64| drawn_as(g, here, false);
     // The latest copy's other strokes carried to copy `t`, where none is drawn yet (the
     // copy that closes a ring may lack one).
     let ring_centre = orbit.centre();
@@ -607,7 +620,7 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
         if region.is_some_and(|r| !r.contains(c)) {
             break;
         }
-        if drawn(&ghost, here) {
+        if drawn(&ghost, here) || (closes.is_some() && drawn_as(&ghost, here, true)) {
             if closes.is_some() {
                 why = RING_COMPLETE;
                 for (g, c) in parts_at(t, here) {
