@@ -490,10 +490,11 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
     // what that moves it: where a ring closes, a petal a person drew a third longer than
     // the rest is its first petal still, and a ghost was proposed over it.)
     let drawn_as = |g: &Stroke, here: f64, resized: bool| {
-        let p = g.reference_point();
-        let mut near = strokes.iter().filter(|s| s.reference_point().distance(p) < 0.5 * here).peekable();
+        let (p, size) = (g.reference_point(), g.bounds().size().to_vec2().hypot());
+        let within = 0.5 * here + if resized { (RESIZED - 1.0) * 0.5 * size } else { 0.0 };
+        let mut near = strokes.iter().filter(|s| s.reference_point().distance(p) < within).peekable();
         near.peek().is_some() && {
-            let (mine, size) = (samples(g), g.bounds().size().to_vec2().hypot());
+            let mine = samples(g);
             let c = centroid(&mine);
             // (A dot turns as the pen went, and a circle a few pen widths across as the
             // hand's wobble does: its place alone says it is drawn, the circle's where
