@@ -1185,10 +1185,11 @@ fn a_ring_closes_onto_a_longer_first_petal() {
             .find(|q| q.name == name)
             .unwrap()
             .sized_about(centre, 0.1, 10);
-        let s = suggest_strokes(&q.strokes[..4], &SuggestOptions::default()).unwrap();
+        let n = 4 * q.parts;
+        let s = suggest_strokes(&q.strokes[..n], &SuggestOptions::default()).unwrap();
         assert!(!s.strokes.is_empty(), "{name}: no ghost ({:?})", s.reason);
         for g in &s.strokes {
-            let miss = q.strokes[4..]
+            let miss = q.strokes[n..]
                 .iter()
                 .map(|t| t.reference_point().distance(g.reference_point()))
                 .fold(f64::INFINITY, f64::min);
@@ -1201,7 +1202,9 @@ fn a_ring_closes_onto_a_longer_first_petal() {
 /// the centre) reads from three petals as a spiral about the ring's centre as often as a
 /// ring: its ghosts past the first are then held back, not carried on round the spiral
 /// (`PERSON_SIZE`). Six plain and six veined petals, seed 2, at 1%: ghosts off every
-/// petal still to draw by 0.36-0.45 of the step before.
+/// petal still to draw by 0.36-0.45 of the step before; now the plain ring keeps a ghost
+/// and every ghost shown is within 0.3 of the step of a petal to draw (the veined ring
+/// waits for a fourth).
 #[test]
 fn petals_of_varying_length_are_not_carried_round_a_spiral() {
     let centre = kurbo::Point::new(300.0, 300.0);
@@ -1214,6 +1217,11 @@ fn petals_of_varying_length_are_not_carried_round_a_spiral() {
             .sized_about(centre, 0.1, 2);
         let n = 3 * q.parts;
         let s = suggest_strokes(&q.strokes[..n], &SuggestOptions::default()).unwrap();
+        // (The plain petals keep the ghost both readings agree on; the veined ones, whose
+        // veins read the turn loosely, wait for a fourth petal.)
+        if name == "ring of 6" {
+            assert!(!s.strokes.is_empty(), "{name}: no ghost ({:?})", s.reason);
+        }
         for g in &s.strokes {
             let miss = q.strokes[n..]
                 .iter()

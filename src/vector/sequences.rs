@@ -46,11 +46,13 @@ impl Sequence {
     }
 
     /// The copies drawn larger and smaller out from `centre` (a ring's), each by a factor
-    /// `1 + spread N(0, 1)`, as a person's petals drawn from the centre vary in length.
+    /// `1 + spread N(0, 1)` (at least 0.1), as a person's petals drawn from the centre
+    /// vary in length; strokes before the first copy (`lead`) as they were. `step`,
+    /// `steps`, `beyond` and `canvas` stay the drawing's as it was meant.
     pub fn sized_about(mut self, centre: Point, spread: f64, seed: u64) -> Sequence {
         let mut rng = Rng::new(seed * 7 + 1);
-        for copy in self.strokes.chunks_mut(self.parts) {
-            let k = 1.0 + spread * rng.normal();
+        for copy in self.strokes[self.lead..].chunks_mut(self.parts) {
+            let k = (1.0 + spread * rng.normal()).max(0.1);
             for p in copy.iter_mut().flat_map(|s| s.points.iter_mut()) {
                 *p = [centre.x + (p[0] - centre.x) * k, centre.y + (p[1] - centre.y) * k];
             }

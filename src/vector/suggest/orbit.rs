@@ -371,8 +371,8 @@ impl Orbit {
             moved(mul(self.a, Vec2::new(0.0, 1.0))) * self.var_a
         } else {
             // (And out along `a` itself, its scale, by what `var_scale` adds.)
-            0.5 * (moved(Vec2::new(1.0, 0.0)) + moved(Vec2::new(0.0, 1.0))) * self.var_a
-                + moved(self.a / self.a.hypot()) * self.var_scale
+            let scale = if self.var_scale > 0.0 { moved(self.a / self.a.hypot()) * self.var_scale } else { 0.0 };
+            0.5 * (moved(Vec2::new(1.0, 0.0)) + moved(Vec2::new(0.0, 1.0))) * self.var_a + scale
         };
         (self.scatter * (1.0 + leverage) + from_a).sqrt()
     }

@@ -215,8 +215,8 @@ impl Drawing<'_> {
 /// A proposed stroke is on a drawn one of its shape when its centre lies within this
 /// share of the step of it (the matching tolerance).
 const DRAWN: f64 = 0.3;
-/// Where a ring closes, a drawn stroke up to this many times larger or smaller than a
-/// ghost is the copy it would be proposed over.
+/// In a ring snapped to its count, a drawn stroke up to this many times larger or smaller
+/// than a ghost is the copy it would be proposed over.
 const RESIZED: f64 = 2.0;
 
 /// Proposals continuing the sequence that ends with the latest of `strokes` (none, with
@@ -273,7 +273,8 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
 /// its own (not a dot, nor a straight line, which any two lines share), among the latest
 /// `MAX_STRIDE` hand-drawn ones (a petal's dot or vein may come after it), has at least
 /// `REPEATED` copies before it among the latest `LOOK_BACK_COPIES` strokes, one shape up
-/// to a similarity and drawn with the same pen. Where nothing is proposed, the page then says the copies do not yet
+/// to a similarity and drawn with the same pen (the same colours and widths within a
+/// quarter: fixed here, not the lattice's `width_tolerance` and `color_tolerance`). Where nothing is proposed, the page then says the copies do not yet
 /// show where the next goes, not that there is no repetition (three or four petals a
 /// person turned read "no repetition yet" at 59 of 180 calls of `examples/ring_ghosts`).
 pub(super) fn repeats(strokes: &[Stroke], accepted: &[bool]) -> bool {
@@ -487,8 +488,9 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
     // (A copy's strokes may share a centre, a leaf's two halves and its midrib: a ghost
     // is on a drawn stroke that it carries onto about unturned, unscaled and unmoved.)
     // (`resized`: or drawn larger or smaller, up to `RESIZED` times, its centre off by
-    // what that moves it: where a ring closes, a petal a person drew a third longer than
-    // the rest is its first petal still, and a ghost was proposed over it.)
+    // what that moves it; asked of a ring snapped to its count only, whose copies past
+    // the run may be drawn: a first petal a person drew a third longer than the rest is
+    // still the ring's, and a ghost was proposed over it.)
     let drawn_as = |g: &Stroke, here: f64, resized: bool| {
         let (p, size) = (g.reference_point(), g.bounds().size().to_vec2().hypot());
         let within = 0.5 * here + if resized { (RESIZED - 1.0) * 0.5 * size } else { 0.0 };
@@ -507,10 +509,14 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
                     return s.reference_point().distance(p) < DRAWN * here;
                 }
                 if resized {
-                    return similarity::relations(&mine, &samples(s), size, SHAPE, RESIZED).iter().any(|(t, _, _)| {
-                        let moved = (t.scale() - 1.0).abs() * 0.5 * size;
-                        t.turn().abs() < FOLLOW_TURN && t.apply(c).distance(c) < DRAWN * here + moved
-                    });
+                    // (The residual is in the drawn stroke's units: a share of its size.)
+                    let theirs = s.bounds().size().to_vec2().hypot();
+                    return similarity::relations(&mine, &samples(s), theirs, SHAPE, RESIZED).iter().any(
+                        |(t, _, _)| {
+                            let moved = (t.scale() - 1.0).abs() * 0.5 * size;
+                            t.turn().abs() < FOLLOW_TURN && t.apply(c).distance(c) < DRAWN * here + moved
+                        },
+                    );
                 }
                 relations(&mine, &samples(s), size).iter().any(|(t, _)| {
                     (t.a - Vec2::new(1.0, 0.0)).hypot() < FOLLOW_TURN && t.apply(c).distance(c) < DRAWN * here

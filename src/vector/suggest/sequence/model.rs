@@ -39,7 +39,9 @@ const PERSON_TURN: f64 = 0.0436;
 /// of that may be a ring of petals drawn longer and shorter (a ring's petals each 10%
 /// longer or shorter at random, `examples/ring_ghosts` with `SIZE=0.1`, were read from
 /// three as spirals of 6-9% a step about the ring's centre, their second and third
-/// ghosts off the ring).
+/// ghosts off the ring). Past three or four copies the bound falls below the 4% at which
+/// an orbit is held to a pure turn anyway, and a spiral read is taken as read. (The
+/// wider miss makes `backtest` more lenient with such a run too.)
 const PERSON_SIZE: f64 = 0.05;
 const SPIRAL_SURE: f64 = 2.0;
 /// ...and no more than this much less likely than the free turn (minus log-likelihood):
