@@ -53,15 +53,7 @@ fn main() {
                     if let Ok(path) = std::env::var("DUMP_JSON") {
                         std::fs::write(path, serde_json::to_string(&q.strokes[..n]).unwrap()).unwrap();
                     }
-                    let misses: Vec<f64> = s
-                        .strokes
-                        .iter()
-                        .map(|g| {
-                            let p = g.reference_point();
-                            q.strokes[n..].iter().map(|t| t.reference_point().distance(p)).fold(f64::INFINITY, f64::min)
-                                / q.step
-                        })
-                        .collect();
+                    let misses: Vec<f64> = s.strokes.iter().map(|g| q.miss(n, g.reference_point()) / q.step).collect();
                     let w = misses.iter().filter(|&&m| m > 0.3).count();
                     cases += 1;
                     shown += misses.len();
