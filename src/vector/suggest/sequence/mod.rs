@@ -138,7 +138,14 @@ struct Drawing<'a> {
     sampled: Vec<Option<Vec<Point>>>,
 }
 
-impl Drawing<'_> {
+impl<'a> Drawing<'a> {
+    /// The drawing with its latest `LOOK_BACK_COPIES + 1` strokes sampled.
+    fn new(strokes: &'a [Stroke], accepted: &'a [bool]) -> Self {
+        let lookback = strokes.len().saturating_sub(LOOK_BACK_COPIES + 1);
+        let sampled = (0..strokes.len()).map(|i| (i >= lookback).then(|| samples(&strokes[i]))).collect();
+        Drawing { strokes, accepted, sampled }
+    }
+
     fn hand(&self, i: usize) -> bool {
         !self.accepted.get(i).copied().unwrap_or(false)
     }
@@ -227,9 +234,7 @@ const RESIZED: f64 = 2.0;
 /// count as steps already taken.
 pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Option<Suggestions> {
     let n = strokes.len();
-    let lookback = n.saturating_sub(LOOK_BACK_COPIES + 1);
-    let d =
-        Drawing { strokes, accepted, sampled: (0..n).map(|i| (i >= lookback).then(|| samples(&strokes[i]))).collect() };
+    let d = Drawing::new(strokes, accepted);
     let last = (0..n).rev().find(|&i| d.hand(i))?;
     if n - 1 - last > LOOK_BACK {
         return None;
@@ -273,29 +278,25 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
 /// its own (not a dot, nor a straight line, which any two lines share), among the latest
 /// `MAX_STRIDE` hand-drawn ones (a petal's dot or vein may come after it), has at least
 /// `REPEATED` copies before it among the latest `LOOK_BACK_COPIES` strokes, one shape up
-/// to a similarity and drawn with the same pen (the same colours and widths within a
-/// quarter: fixed here, not the lattice's `width_tolerance` and `color_tolerance`). Where nothing is proposed, the page then says the copies do not yet
-/// show where the next goes, not that there is no repetition (three or four petals a
-/// person turned read "no repetition yet" at 59 of 180 calls of `examples/ring_ghosts`).
+/// to a similarity and drawn with the same pen (the same colours, widths within a
+/// quarter: fixed here, not the lattice's `width_tolerance` and `color_tolerance`).
+/// Where nothing is proposed, the page then says the copies do not yet show where the
+/// next goes, not that there is no repetition (three or four petals a person turned read
+/// "no repetition yet" at 59 of 180 calls of `examples/ring_ghosts`).
 pub(super) fn repeats(strokes: &[Stroke], accepted: &[bool]) -> bool {
-    let n = strokes.len();
-    let from = n.saturating_sub(LOOK_BACK_COPIES + 1);
-    let hand: Vec<usize> = (from..n).rev().filter(|&i| !accepted.get(i).copied().unwrap_or(false)).collect();
+    let d = Drawing::new(strokes, accepted);
+    let from = strokes.len().saturating_sub(LOOK_BACK_COPIES + 1);
     let shaped = |i: usize| !strokes[i].is_dot() && !super::hatching::straight(&strokes[i]);
-    let Some(&last) = hand.iter().take(MAX_STRIDE).find(|&&i| shaped(i)) else { return false };
-    let shape = samples(&strokes[last]);
-    let size = strokes[last].bounds().size().to_vec2().hypot();
+    let Some(last) = (from..strokes.len()).rev().filter(|&i| d.hand(i)).take(MAX_STRIDE).find(|&i| shaped(i)) else {
+        return false;
+    };
     // (Drawn with the same pen: a sketch's wandering curves of any colour and width
     // match one another's shapes now and then.)
     let pen = |i: usize| {
         let (s, t) = (&strokes[i], &strokes[last]);
         s.stroke == t.stroke && s.fill == t.fill && (s.width - t.width).abs() <= 0.25 * t.width
     };
-    (from..last)
-        .rev()
-        .filter(|&i| shaped(i) && pen(i) && !relations(&samples(&strokes[i]), &shape, size).is_empty())
-        .nth(REPEATED - 1)
-        .is_some()
+    (from..last).rev().filter(|&i| shaped(i) && pen(i) && d.same(i, last).is_some()).nth(REPEATED - 1).is_some()
 }
 
 /// Copies before the latest that make it a repetition for `repeats`.
