@@ -239,6 +239,24 @@ pub fn circle_grid(wobble: f64, seed: u64, anywhere: bool) -> (Vec<Stroke>, kurb
     (strokes, kurbo::Rect::new(10.0, 10.0, 40.0 + spacing * 5.5, 40.0 + spacing * 3.5))
 }
 
+/// A ring of `n` circles of radius `size` round (300, 300) at `radius`, drawn in order
+/// round it, each off its site by `wobble` of the step between neighbours (its points by
+/// a fifth of that), begun at a random point and drawn either way round; with the canvas.
+pub fn circle_ring(n: usize, radius: f64, size: f64, wobble: f64, seed: u64) -> (Vec<Stroke>, kurbo::Rect) {
+    let mut rng = Rng::new(seed);
+    let step = 2.0 * radius * (std::f64::consts::PI / n as f64).sin();
+    let strokes = (0..n)
+        .map(|k| {
+            let theta = k as f64 * TAU / n as f64;
+            let site = Point::new(300.0 + radius * theta.cos(), 300.0 + radius * theta.sin());
+            let jitter = Vec2::new(rng.normal(), rng.normal()) * (wobble * step);
+            let (start, dir) = (rng.below(360) as f64 / 360.0 * TAU, if rng.below(2) == 0 { 1.0 } else { -1.0 });
+            circle(site + jitter, size, start, dir, &mut rng, 0.2 * wobble * step)
+        })
+        .collect();
+    (strokes, kurbo::Rect::new(0.0, 0.0, 600.0, 600.0))
+}
+
 /// Leaves one every 40 along the sine `y = 300 + amplitude sin((x - 300) / scale)` from
 /// `x0`, each turned with it: `n` drawn and `BEYOND` more.
 fn stem(name: &str, amplitude: f64, scale: f64, x0: f64, n: usize, hand: (f64, HandTurn), seed: u64) -> Sequence {

@@ -87,11 +87,22 @@ pub(super) fn turn_between(from: &Stroke, to: &Stroke) -> Option<f64> {
 /// Whether a closed loop fits itself begun a quarter of the way round (a circle, a
 /// square): its copies' turn is then not in their shapes.
 fn looks_the_same_turned(p: &[Point], size: f64) -> bool {
+    fits_itself_begun(p, size, 4)
+}
+
+/// Whether a closed loop fits itself begun a quarter and an eighth of the way round: a
+/// circle, whose copies show no turn at all (a square's show it but for quarter turns).
+pub(super) fn looks_round(p: &[Point], size: f64) -> bool {
+    fits_itself_begun(p, size, 4) && fits_itself_begun(p, size, 8)
+}
+
+/// Whether a closed loop fits itself begun `1 / part` of the way round.
+fn fits_itself_begun(p: &[Point], size: f64, part: usize) -> bool {
     if !closed_loop(p) {
         return false;
     }
     let m = p.len() - 1;
-    let mut turned: Vec<Point> = (0..m).map(|i| p[(i + m / 4) % m]).collect();
+    let mut turned: Vec<Point> = (0..m).map(|i| p[(i + m / part) % m]).collect();
     turned.push(turned[0]);
     Similarity::fit(p, &turned).1 <= SHAPE * size
 }

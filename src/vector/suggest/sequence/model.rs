@@ -80,6 +80,9 @@ fn held(read: f64, error: f64, prior: f64) -> (f64, f64) {
         (0.0, read.abs() * shrink + (shrink * error * error).sqrt())
     }
 }
+/// The weight of the moves' turn, read from the places, against that of turns read
+/// from shapes, where the shapes show none (a circle).
+const UNSHOWN: f64 = 0.1;
 /// A run's own copies, predicted from those before them, may miss by up to this many
 /// expected misses before the model is taken to be off (a Rayleigh miss passes it
 /// 98% of the time).
@@ -102,13 +105,11 @@ pub(super) fn place_relations(d: &Drawing, run: &[usize]) -> Vec<Relation> {
         .filter_map(|t| {
             let (u, v) = (d.z(run[t]) - d.z(run[t - 1]), d.z(run[t + 1]) - d.z(run[t]));
             let r = Similarity::fit(&[u.to_point(), Point::ZERO], &[v.to_point(), Point::ZERO]).0;
-            (u.hypot() > 0.0).then(|| Relation {
-                from: t as i64 - 1,
-                span: 1,
-                turn: r.turn(),
-                scale: r.scale(),
-                residual: 0.0,
-            })
+            // (Round copies, circles, show their scale
+            // by their size, more surely than four places' scatter does: read from the
+            // moves, it made spirals of rings of circles.)
+            let scale = if d.round(run[t]) { d.size(run[t + 1]) / d.size(run[t]) } else { r.scale() };
+            (u.hypot() > 0.0).then(|| Relation { from: t as i64 - 1, span: 1, turn: r.turn(), scale, residual: 0.0 })
         })
         .collect()
 }
@@ -188,6 +189,10 @@ pub(super) fn model(
     let scale = read.exp();
     let scale_spread = relations.iter().map(|r| (r.scale.ln() - r.span as f64 * read).powi(2)).sum::<f64>();
     let var = (turning.spread + scale_spread + PRIOR_PAIRS * turn_prior) / (turning.dof + PRIOR_PAIRS);
+    // (Round copies, circles, show their step in their places
+    // alone, which the orbit fits already: what the moves say is counted as a weak
+    // prior only, not a second reading of the same places.)
+    let shown = !(upright && run.last().is_some_and(|&i| d.round(i)));
     let shapes_at = |bend: f64| {
         let first = turning.first_given(bend);
         Shapes {
@@ -197,7 +202,7 @@ pub(super) fn model(
             // one and takes from the next: their sum is the last copy's against the
             // first's, so the mean errs by one relation's error over the steps, not
             // their root; less well known where a bend is read too.)
-            pairs: steps * steps / if bend != 0.0 { 4.0 } else { 1.0 },
+            pairs: steps * steps / if bend != 0.0 { 4.0 } else { 1.0 } * if shown { 1.0 } else { UNSHOWN },
             bend,
         }
     };
@@ -205,6 +210,10 @@ pub(super) fn model(
     // taken where it is clear of its error (`BEND_SURE`), else none (see `held`).
     let (bend, bend_error) = match turning.slope {
         Some((slope, se)) => match bend_from_places(&copies, &shapes_at, prior, slope) {
+            // (Where the moves' turns are the places' own, they are not counted twice.)
+            Some((placed, information)) if !shown && information > 0.0 => {
+                held(placed, information.sqrt().recip(), BEND_PRIOR)
+            }
             Some((placed, information)) => {
                 let precision = 1.0 / (se * se).max(1e-12) + information;
                 let both = (slope / (se * se).max(1e-12) + placed * information) / precision;
