@@ -539,9 +539,11 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
     // (A copy's strokes may share a centre, a leaf's two halves and its midrib: a ghost
     // is on a drawn stroke that it carries onto about unturned, unscaled and unmoved.)
     // (`resized`: or drawn larger or smaller, up to `RESIZED` times, its centre off by
-    // what that moves it; asked of a ring snapped to its count only, whose copies past
-    // the run may be drawn: a first petal a person drew a third longer than the rest is
-    // still the ring's, and a ghost was proposed over it.)
+    // what that moves it; asked where a ring closes only (snapped to its count, or come
+    // round a whole turn), whose copies past the run may be drawn: a first petal a person
+    // drew a third longer than the rest is still the ring's, and a ghost was proposed
+    // over it, the ring's own or, where its petals were read in pairs, the part left of
+    // the copy that closes it: 11 of 45 complete rings of five to twelve, at 1-5%.)
     let drawn_as = |g: &Stroke, here: f64, resized: bool| {
         let (p, size) = (g.reference_point(), g.bounds().size().to_vec2().hypot());
         let within = 0.5 * here + if resized { (RESIZED - 1.0) * 0.5 * size } else { 0.0 };
@@ -579,7 +581,7 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
     // The latest copy's other strokes carried to copy `t`, where none is drawn yet (the
     // copy that closes a ring may lack one).
     let ring_centre = orbit.centre();
-    let parts_at = |t: i64, here: f64| -> Vec<(Stroke, usize)> {
+    let parts_at = |t: i64, here: f64, closing: bool| -> Vec<(Stroke, usize)> {
         let turn = turn_of(h as i64, t);
         let to = Similarity { a: turn, b: orbit.at(t).to_vec2() - mul(turn, d.z(last).to_vec2()) };
         // (A part that turns otherwise than the frame goes where the frame carries its
@@ -612,7 +614,7 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
                         1.0
                     }
                 });
-                region.is_none_or(|r| r.contains(p)) && !drawn(g, own * here)
+                region.is_none_or(|r| r.contains(p)) && !drawn_as(g, own * here, closing)
             })
             .collect()
     };
@@ -629,13 +631,18 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
         let t = end + k;
         let site = orbit.at(t);
         let here = site.distance(orbit.at(t - 1));
-        // Where a ring closes (at its count, or round onto the run's own first copies: a
-        // ring, whole, even where its count was never sure enough to snap, three petals
-        // of six, three accepted), what is left of the copy before its first.
+        // Where a ring closes (at its count, or round onto its own first copies: a ring,
+        // whole, even where its count was never sure enough to snap, three petals of
+        // six, three accepted), what is left of the copy before its first. (Its first
+        // copies, not the run's only: a run holds `MAX_RUN` hand-drawn copies, and
+        // twelve squares turned with their ring, its count unsnapped, got ghosts on the
+        // first three, turned a few degrees off them.)
+        let copy = |k: usize| k.abs_diff(latest) % stride == 0;
         if closes.is_some_and(|c| t >= c)
-            || (orbit.centre().is_some() && run.iter().any(|&i| d.z(i).distance(site) < 0.5 * here))
+            || (orbit.centre().is_some()
+                && chain.iter().enumerate().any(|(k, &i)| copy(k) && d.z(i).distance(site) < 0.5 * here))
         {
-            for (g, c) in parts_at(t, here) {
+            for (g, c) in parts_at(t, here, true) {
                 push(&mut out, g, c, k);
             }
             why = RING_COMPLETE;
@@ -678,16 +685,22 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
         if region.is_some_and(|r| !r.contains(c)) {
             break;
         }
-        if drawn(&ghost, here) || (closes.is_some() && drawn_as(&ghost, here, true)) {
-            if closes.is_some() {
+        // (An orbit round a centre that has come round a whole turn, but for a step and a
+        // half, since the run's first copy is closing as a ring does, though its count
+        // was never snapped: a first petal drawn a quarter longer than the rest is no
+        // copy of the run, which then closes onto it.)
+        let turn = orbit.a.atan2().abs();
+        let closing = closes.is_some() || (ring_centre.is_some() && t as f64 * turn >= TAU - 1.5 * turn);
+        if drawn(&ghost, here) || (closing && drawn_as(&ghost, here, true)) {
+            if closing {
                 why = RING_COMPLETE;
-                for (g, c) in parts_at(t, here) {
+                for (g, c) in parts_at(t, here, true) {
                     push(&mut out, g, c, k);
                 }
             }
             break;
         }
-        for (g, c) in parts_at(t, here) {
+        for (g, c) in parts_at(t, here, false) {
             push(&mut out, g, c, k);
         }
         push(&mut out, ghost, src, k);
@@ -704,7 +717,7 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
     let after = (last + 1..n).any(|i| d.hand(i) && parts.iter().any(|&c| d.alike(c, i)));
     let trails = || after || trailing(d, &run[..=h], &parts, &|t| turn_of(h as i64, t).atan2(), step);
     if let Some((t, k)) = proposed.filter(|_| why != RING_COMPLETE && trails()) {
-        for (g, c) in parts_at(t + 1, orbit.at(t + 1).distance(orbit.at(t))) {
+        for (g, c) in parts_at(t + 1, orbit.at(t + 1).distance(orbit.at(t)), false) {
             push(&mut out, g, c, k);
         }
     }
