@@ -191,6 +191,45 @@ pub(crate) fn jitter(points: &[[f64; 2]]) -> f64 {
     median(&mut d2) / (12.0 * std::f64::consts::LN_2)
 }
 
+/// Whether a closed loop (sampled) fits itself begun a quarter of the way round, within
+/// `shape` of `size` (rms): a circle or a square, whose copies' turn its shape shows
+/// only up to quarter turns.
+pub fn looks_the_same_turned(p: &[Point], size: f64, shape: f64) -> bool {
+    self_residual(p, 4).is_some_and(|r| r <= shape * size)
+}
+
+/// Whether a closed loop (sampled) is round, a circle, whose copies show no turn at all:
+/// it fits itself begun a quarter of the way round and an eighth, and the eighth no
+/// worse than the quarter (a square begun an eighth round pairs its corners with its
+/// sides' middles: 0.088 of its size off, against 0.043 a quarter round, sampled as
+/// here; circles of radius 7 to 30 drawn with a 2% wobble and 0.7 px of jitter fit an
+/// eighth round within 0.066, and no worse than a quarter round by much).
+pub fn looks_round(p: &[Point], size: f64, shape: f64) -> bool {
+    match (self_residual(p, 4), self_residual(p, 8)) {
+        (Some(quarter), Some(eighth)) => {
+            quarter.max(eighth) <= shape * size && eighth <= (ROUND_EIGHTH * quarter).max(ROUND_FLOOR * size)
+        }
+        _ => false,
+    }
+}
+
+/// A round loop's fit begun an eighth round is at most this many times its fit begun a
+/// quarter round, or this share of its size.
+const ROUND_EIGHTH: f64 = 1.5;
+const ROUND_FLOOR: f64 = 0.03;
+
+/// The rms residual of a closed loop fitted to itself begun `1 / part` of the way round
+/// (`None` for an open stroke).
+fn self_residual(p: &[Point], part: usize) -> Option<f64> {
+    if !closed_loop(p) {
+        return None;
+    }
+    let m = p.len() - 1;
+    let mut turned: Vec<Point> = (0..m).map(|i| p[(i + m / part) % m]).collect();
+    turned.push(turned[0]);
+    Some(Similarity::fit(p, &turned).1)
+}
+
 /// The mean of sampled points (a copy's centre for similarity steps).
 pub fn centroid(s: &[Point]) -> Point {
     (s.iter().fold(Vec2::ZERO, |m, p| m + p.to_vec2()) / s.len().max(1) as f64).to_point()

@@ -16,8 +16,7 @@
 //! shapes' own scatter shows it).
 
 use super::sequence::{relations, SHAPE};
-use crate::vector::frechet::closed_loop;
-use crate::vector::similarity::{samples, Similarity};
+use crate::vector::similarity::samples;
 use crate::vector::stroke::{Stroke, DOT};
 use kurbo::Point;
 
@@ -87,22 +86,10 @@ pub(super) fn turn_between(from: &Stroke, to: &Stroke) -> Option<f64> {
 /// Whether a closed loop fits itself begun a quarter of the way round (a circle, a
 /// square): its copies' turn is then not in their shapes.
 fn looks_the_same_turned(p: &[Point], size: f64) -> bool {
-    fits_itself_begun(p, size, 4)
+    crate::vector::similarity::looks_the_same_turned(p, size, SHAPE)
 }
 
-/// Whether a closed loop fits itself begun a quarter and an eighth of the way round: a
-/// circle, whose copies show no turn at all (a square's show it but for quarter turns).
+/// Whether a closed loop is round, a circle (`similarity::looks_round`).
 pub(super) fn looks_round(p: &[Point], size: f64) -> bool {
-    fits_itself_begun(p, size, 4) && fits_itself_begun(p, size, 8)
-}
-
-/// Whether a closed loop fits itself begun `1 / part` of the way round.
-fn fits_itself_begun(p: &[Point], size: f64, part: usize) -> bool {
-    if !closed_loop(p) {
-        return false;
-    }
-    let m = p.len() - 1;
-    let mut turned: Vec<Point> = (0..m).map(|i| p[(i + m / part) % m]).collect();
-    turned.push(turned[0]);
-    Similarity::fit(p, &turned).1 <= SHAPE * size
+    crate::vector::similarity::looks_round(p, size, SHAPE)
 }

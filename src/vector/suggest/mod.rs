@@ -281,7 +281,7 @@ fn suggest_found(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Suggestion
     // on by turns, whatever lattice their places also fit (six petals round a drawn
     // disc lie on a triangular lattice with it, and a new user's complete rings of six
     // got lattice ghosts outside them in 15 of 25).
-    if ring_holds_latest(strokes) || sequence::round_ring(strokes, &accepted, &ask(true)) {
+    if ring_holds_latest(strokes) || sequence::snapped_ring(strokes, &accepted, &ask(true)) {
         return Ok(sequence::propose(strokes, &accepted, &ask(true)).unwrap_or_else(|| nothing(sequence::UNFOLLOWED)));
     }
     let prior = (HAND_TO_PLACEMENT * hand_scatter(strokes, &classification.classes, &accepted))
