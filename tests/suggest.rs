@@ -1302,6 +1302,30 @@ fn a_ring_drawn_whole_gets_no_ghost_on_its_copies() {
     }
 }
 
+/// Flowers of petals alone drawn side by side, the second drawn whole: the lattice of
+/// flowers goes on, not the second ring alone, which is complete (helper-56's review:
+/// a ring snapped by the sequence was carried on before the lattice, and two flowers
+/// of six petals read "The ring is complete" with no ghost of the third).
+#[test]
+fn flowers_of_petals_on_a_row_go_on_as_a_row() {
+    let q = drawn_by(0.01, HandTurn::STEADY, 1).into_iter().find(|q| q.name == "ring of 6").unwrap();
+    let moved = |dx: f64| {
+        q.strokes.iter().map(move |s| {
+            let mut s = s.clone();
+            s.points.iter_mut().for_each(|p| p[0] += dx);
+            s
+        })
+    };
+    let strokes: Vec<Stroke> = moved(-150.0).chain(moved(100.0)).collect();
+    let opts = SuggestOptions { region: Some([0.0, 0.0, 1000.0, 600.0]), ..Default::default() };
+    let s = suggest_strokes(&strokes, &opts).unwrap();
+    assert!(!s.strokes.is_empty(), "no ghost: {:?}", s.reason);
+    for g in &s.strokes {
+        let c = g.reference_point();
+        assert!((c.x - 650.0).abs() < 90.0 && (c.y - 300.0).abs() < 90.0, "a ghost at {c:?}, off the third flower");
+    }
+}
+
 /// A ring whose petals a person drew longer and shorter (each 10% at random, out from
 /// the centre) reads from three petals as a spiral about the ring's centre as often as a
 /// ring: its ghosts past the first are then held back, not carried on round the spiral

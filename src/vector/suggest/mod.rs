@@ -281,8 +281,16 @@ fn suggest_found(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Suggestion
     // on by turns, whatever lattice their places also fit (six petals round a drawn
     // disc lie on a triangular lattice with it, and a new user's complete rings of six
     // got lattice ghosts outside them in 15 of 25).
-    if ring_holds_latest(strokes) || sequence::snapped_ring(strokes, &accepted, &ask(true)) {
+    if ring_holds_latest(strokes) {
         return Ok(sequence::propose(strokes, &accepted, &ask(true)).unwrap_or_else(|| nothing(sequence::UNFOLLOWED)));
+    }
+    // (So too a ring the sequence snaps to its count and that holds every copy of its
+    // shape, where `chain::find` reads none: where the sequence then proposes nothing
+    // itself, the lattice goes on.)
+    if sequence::snapped_ring(strokes, &accepted, &ask(true)) {
+        if let Some(s) = sequence::propose(strokes, &accepted, &ask(true)) {
+            return Ok(s);
+        }
     }
     let prior = (HAND_TO_PLACEMENT * hand_scatter(strokes, &classification.classes, &accepted))
         .clamp((MIN_SCATTER * spread.spacing).powi(2), (MAX_SCATTER * spread.spacing).powi(2));

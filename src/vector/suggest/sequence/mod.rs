@@ -228,8 +228,9 @@ impl<'a> Drawing<'a> {
 /// A proposed stroke is on a drawn one of its shape when its centre lies within this
 /// share of the step of it (the matching tolerance).
 const DRAWN: f64 = 0.3;
-/// In a ring snapped to its count, a drawn stroke up to this many times larger or smaller
-/// than a ghost is the copy it would be proposed over.
+/// Where a ring closes (snapped to its count, or come round a whole turn), a drawn stroke
+/// up to this many times larger or smaller than a ghost is the copy it would be proposed
+/// over.
 const RESIZED: f64 = 2.0;
 
 /// Proposals continuing the sequence that ends with the latest of `strokes` (none, with
@@ -280,11 +281,13 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
     }
 }
 
-/// Whether the latest hand-drawn stroke's copies make a ring snapped to its count: the
-/// lattice their places may also fit (a ring of six lies on a triangular one) does not
-/// carry it on. (`chain::find` reads such rings too, but not of circles, whose shapes
-/// show no turn, nor always of squares, which show it up to quarter turns: five circles
-/// or squares of a ring of six got ghosts of that lattice, 1.6-1.8 steps off.)
+/// Whether the latest hand-drawn stroke's copies make a ring snapped to its count, of
+/// one stroke, that holds every copy of its shape among the latest strokes (not one of
+/// several flowers on a lattice, which the lattice places): the lattice the ring's
+/// places may also fit (a ring of six lies on a triangular one) does not carry it on.
+/// (`chain::find`, which `ring_holds_latest` asks, does not always read such a ring of
+/// squares, whose shapes show their turn only up to quarter turns: five of a ring of
+/// six got ghosts of that lattice, 1.6-1.8 steps off.)
 pub(super) fn snapped_ring(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> bool {
     let d = Drawing::new(strokes, accepted);
     let Some(last) = (0..strokes.len()).rev().find(|&i| d.hand(i)) else { return false };
@@ -629,6 +632,9 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
     let mut proposed = None;
     let mut rng = seed.map(Rng::new);
     let mut why = "The sequence is complete here: its next copy would fall on a drawn one or off the canvas.";
+    // (The copies of `chain` that are the followed stroke's: every `stride`-th.)
+    let of_run = |x: usize| x.abs_diff(latest) % stride == 0;
+    let step_angle = orbit.a.atan2().abs();
     for k in 1..=count as i64 {
         let t = end + k;
         let site = orbit.at(t);
@@ -639,10 +645,9 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
         // copies, not the run's only: a run holds `MAX_RUN` hand-drawn copies, and
         // twelve squares turned with their ring, its count unsnapped, got ghosts on the
         // first three, turned a few degrees off them.)
-        let copy = |k: usize| k.abs_diff(latest) % stride == 0;
         if closes.is_some_and(|c| t >= c)
             || (orbit.centre().is_some()
-                && chain.iter().enumerate().any(|(k, &i)| copy(k) && d.z(i).distance(site) < 0.5 * here))
+                && chain.iter().enumerate().any(|(x, &i)| of_run(x) && d.z(i).distance(site) < 0.5 * here))
         {
             for (g, c) in parts_at(t, here, true) {
                 push(&mut out, g, c, k);
@@ -691,8 +696,7 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
         // half, since the run's first copy is closing as a ring does, though its count
         // was never snapped: a first petal drawn a quarter longer than the rest is no
         // copy of the run, which then closes onto it.)
-        let turn = orbit.a.atan2().abs();
-        let closing = closes.is_some() || (ring_centre.is_some() && t as f64 * turn >= TAU - 1.5 * turn);
+        let closing = closes.is_some() || (ring_centre.is_some() && t as f64 * step_angle >= TAU - 1.5 * step_angle);
         if drawn(&ghost, here) || (closing && drawn_as(&ghost, here, true)) {
             if closing {
                 why = RING_COMPLETE;
@@ -727,7 +731,13 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
     if out.strokes.is_empty() {
         out.reason = Some(why.into());
     }
-    Some((out, parts, closes.is_some()))
+    // (A ring snapped to its count that holds every copy of its shape drawn lately, of
+    // one stroke and with no lead-in: what `snapped_ring` asks.)
+    let whole = closes.is_some()
+        && lead.is_none()
+        && stride == 1
+        && chain.iter().enumerate().all(|(x, i)| !of_run(x) || run.contains(i));
+    Some((out, parts, whole))
 }
 
 /// The step of the run's places where they bend steadily (`chain::bend::steady_bend`, each
