@@ -45,6 +45,13 @@ pub fn turn_about(c: Point, places: &[Point]) -> f64 {
     sum / (places.len().max(2) - 1) as f64
 }
 
+/// The mean turn a step about the circle through `places` (`circle_through`, then
+/// `turn_about`), or none where they lie on a line: copies whose shapes show no turn of
+/// their own (circles) or keep their pose (fence posts) turn so.
+pub fn turn_through(places: &[Point]) -> f64 {
+    circle_through(places).map_or(0.0, |c| turn_about(c, places))
+}
+
 /// The mean of `places` and the unit direction they spread along most (the principal
 /// axis: half the angle of the covariance's `(2 sxy, sxx - syy)`).
 pub fn principal_axis(places: &[Point]) -> (Vec2, Vec2) {

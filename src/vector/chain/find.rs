@@ -3,7 +3,7 @@
 //! closes; and the drawing's other rings.
 
 use super::{Chain, MAX_STROKES};
-use crate::vector::similarity::{centroid, looks_round, mul, relations, samples, Similarity};
+use crate::vector::similarity::{centroid, mul, relations, samples, Similarity};
 use crate::vector::stroke::Stroke;
 use kurbo::{Point, Vec2};
 use std::f64::consts::TAU;
@@ -185,19 +185,6 @@ fn search(strokes: &[Stroke], max_turn: f64) -> Option<Found> {
         }
     }
     let groups: Vec<usize> = (0..n).map(|i| root(&mut group, i)).collect();
-    // (Nor has a circle a turn to relate: where every stroke of a shape group is round,
-    // its strokes relate to one another by place alone, as dots do, and their step is
-    // read from their places. Rings of five to twelve beads synthesized as lattices,
-    // scatters or rings by chance, whichever start of each circle fitted best. Asked of
-    // the whole group: a square a hand shook may pass for round, its fellows not.)
-    let looks: Vec<bool> = (0..n).map(|k| !dot(k) && looks_round(&sampled[k], size[k], SHAPE)).collect();
-    let round: Vec<bool> = (0..n).map(|k| (0..n).all(|m| groups[m] != groups[k] || looks[m])).collect();
-    let placed = |k: usize| dot(k) || round[k];
-    for i in (0..n).filter(|&i| round[i]) {
-        for j in (0..n).filter(|&j| j != i && groups[j] == groups[i]) {
-            fits[i * n + j] = vec![Similarity { a: Vec2::new(1.0, 0.0), b: centre[j] - centre[i] }];
-        }
-    }
     // Where `t` carries copy `k`: the copy of its shape it lands on, related to it by
     // about the same step.
     // (A dot turns as the pen went: its copies are carried by place alone. A petal's dot
@@ -208,7 +195,7 @@ fn search(strokes: &[Stroke], max_turn: f64) -> Option<Found> {
         (0..n)
             .map(|m| (m, centre[m].distance(p)))
             .filter(|&(m, d)| d <= reach && m != k && groups[m] == groups[k])
-            .filter(|&(m, _)| fits[k * n + m].iter().any(|r| placed(k) || (r.a - t.a).hypot() <= TURN * t.a.hypot()))
+            .filter(|&(m, _)| fits[k * n + m].iter().any(|r| dot(k) || (r.a - t.a).hypot() <= TURN * t.a.hypot()))
             .min_by(|x, y| x.1.total_cmp(&y.1))
             .map(|(m, _)| m)
     };
@@ -220,35 +207,10 @@ fn search(strokes: &[Stroke], max_turn: f64) -> Option<Found> {
     // single step does not. Nine ellipses, each related either way round, were read as
     // a step of two petals, 80 degrees, that closes no ring.)
     let mut candidates: Vec<(usize, f64, Similarity)> = Vec::new();
-    let nearest = |i: usize| {
+    for i in 0..n {
         let mut near: Vec<usize> = (0..n).filter(|&j| !fits[i * n + j].is_empty()).collect();
         near.sort_by(|&x, &y| centre[i].distance(centre[x]).total_cmp(&centre[i].distance(centre[y])));
-        near.truncate(NEAREST);
-        near
-    };
-    // (A circle's steps are read from three of them: the similarity carrying the first
-    // onto a near one and that onto one near it.)
-    let through = |i: usize| -> Vec<(usize, Similarity)> {
-        if !round[i] {
-            return Vec::new();
-        }
-        nearest(i)
-            .into_iter()
-            .flat_map(|j| nearest(j).into_iter().filter(move |&k| k != i).map(move |k| (j, k)))
-            .filter_map(|(j, k)| {
-                let (u, v) = (centre[j] - centre[i], centre[k] - centre[j]);
-                (u.hypot() > 0.0).then(|| {
-                    let a = mul(v, Vec2::new(u.x, -u.y)) / u.hypot2();
-                    (j, Similarity { a, b: centre[j].to_vec2() - mul(a, centre[i].to_vec2()) })
-                })
-            })
-            .filter(|(_, t)| (1.0 / MAX_SCALE..=MAX_SCALE).contains(&t.scale()))
-            .collect()
-    };
-    for i in 0..n {
-        let shaped: Vec<(usize, Similarity)> =
-            nearest(i).into_iter().flat_map(|j| fits[i * n + j].iter().map(move |&t| (j, t))).collect();
-        for (j, t) in shaped.into_iter().chain(through(i)) {
+        for (j, &t) in near.iter().take(NEAREST).flat_map(|&j| fits[i * n + j].iter().map(move |t| (j, t))) {
             let d = centre[i].distance(centre[j]);
             if (t.a - Vec2::new(1.0, 0.0)).hypot() < MIN_TURN || t.turn().abs() > max_turn {
                 continue;
@@ -334,20 +296,12 @@ fn search(strokes: &[Stroke], max_turn: f64) -> Option<Found> {
         Similarity { a, b: b / pairs.len() as f64 }
     };
     let mut step = shift_for(pairs.iter().fold(Vec2::ZERO, |s, t| s + t.a) / pairs.len() as f64);
-    // (Circles: the turn about the circle through their places, and no scale.)
-    let places: Vec<Point> = chain.iter().map(|&k| centre[k]).collect();
-    let circles = chain.iter().all(|&k| round[k]);
-    if circles {
-        let turn = super::bend::circle_through(&places).map_or(0.0, |c| super::bend::turn_about(c, &places));
-        step = shift_for(Vec2::new(turn.cos(), turn.sin()));
-    }
     // A turn without scale is read from where the copies are as well: the mean angle
     // each pair of copies makes at the centre, averaged with the shapes' turn (each
     // alone errs about as much: a petal's angle as its place round the centre).
     let off = |c: Point| chain.iter().all(|&k| centre[k].distance(c) > 0.25 * size[k]);
-    if let (false, true, Some(c)) = (circles, (step.scale() - 1.0).abs() < 0.04, step.fixed_point().filter(|&c| off(c)))
-    {
-        let placed = super::bend::turn_about(c, &places);
+    if let (true, Some(c)) = ((step.scale() - 1.0).abs() < 0.04, step.fixed_point().filter(|&c| off(c))) {
+        let placed = super::bend::turn_about(c, &chain.iter().map(|&k| centre[k]).collect::<Vec<_>>());
         let turn = 0.5 * (step.turn() + placed);
 
         // (Within 4%, a scale is the hand's: a curve's copies stay its size.)

@@ -285,9 +285,9 @@ pub(super) fn propose(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> Optio
 /// one stroke, that holds every copy of its shape among the latest strokes (not one of
 /// several flowers on a lattice, which the lattice places): the lattice the ring's
 /// places may also fit (a ring of six lies on a triangular one) does not carry it on.
-/// (`chain::find`, which `ring_holds_latest` asks, does not always read such a ring of
-/// squares, whose shapes show their turn only up to quarter turns: five of a ring of
-/// six got ghosts of that lattice, 1.6-1.8 steps off.)
+/// (`chain::find`, which `ring_holds_latest` asks, reads no ring of circles, whose
+/// shapes show no turn, and not always one of squares, which show it up to quarter
+/// turns: five of a ring of six got ghosts of that lattice, 1.6-1.8 steps off.)
 pub(super) fn snapped_ring(strokes: &[Stroke], accepted: &[bool], ask: &Ask) -> bool {
     let d = Drawing::new(strokes, accepted);
     let Some(last) = (0..strokes.len()).rev().find(|&i| d.hand(i)) else { return false };
@@ -455,8 +455,7 @@ fn follow(d: &Drawing, ask: &Ask, last: usize) -> Option<(Suggestions, Vec<usize
             return unfollowed().map(|s| (s, Vec::new(), false));
         }
         let places: Vec<Point> = run.iter().map(|&i| d.z(i)).collect();
-        let turn = crate::vector::chain::bend::circle_through(&places)
-            .map_or(0.0, |c| crate::vector::chain::bend::turn_about(c, &places));
+        let turn = crate::vector::chain::bend::turn_through(&places);
         if !rows && turn.abs() < MIN_TURN {
             return None;
         }
