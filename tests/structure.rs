@@ -1164,3 +1164,55 @@ fn a_drawing_too_few_to_grow_from_is_repeated_whole() {
         }
     }
 }
+
+/// Circles and pen-tapped dots round a centre (helper-55's trial: rings of five to twelve
+/// beads synthesized as lattices, scatters or rings, 15 of 36 rings; of dots, none of
+/// 36): neither shows a turn, and the ring is read from the places (`chain::by_place`).
+/// Rings of 5, 6, 8 and 12 circles, and of pen taps at the circles' centres, at 1% and 3%
+/// of the step, seeds 1-3, are rings, no two copies of the output within half a step;
+/// and the rosettes of five and eight are whole: every copy two ring radii from the
+/// output's edges has two others about a step away (its neighbours round its ring,
+/// within 0.3 of the step). (Rosettes of six and twelve pack so closely that a copy of
+/// one ring is left out where it would fall on another's.)
+#[test]
+fn rings_of_circles_and_dots_become_rosettes() {
+    use patternsynth::vector::sequences::circle_ring;
+    for wobble in [0.01, 0.03] {
+        for n in [5usize, 6, 8, 12] {
+            for seed in 1..=3 {
+                let (radius, size) = (90.0, 12.0);
+                let step = 2.0 * radius * (std::f64::consts::PI / n as f64).sin();
+                let (circles, _) = circle_ring(n, radius, size, wobble, seed);
+                let dots: Vec<Stroke> = circles
+                    .iter()
+                    .map(|c| {
+                        let p = centroid(c);
+                        Stroke::new(vec![[p.x, p.y], [p.x + 1.0, p.y]], 4.0, None)
+                    })
+                    .collect();
+                let dots = patternsynth::vector::sequences::pen_taps(&dots, seed);
+                for (what, strokes) in [("circles", circles), ("dots", dots)] {
+                    let r = synth(&strokes);
+                    let what = format!("{n} {what} at {wobble}, seed {seed}");
+                    assert_eq!(r.structure, Structure::Ring, "{what}");
+                    let centres: Vec<Point> = r.strokes.iter().map(centroid).collect();
+                    // (A rosette cut by the output's edge keeps only the copies inside it.)
+                    let inner = Rect::new(2.0 * radius, 2.0 * radius, W - 2.0 * radius, H - 2.0 * radius);
+                    let (mut checked, mut ringed) = (0, 0);
+                    for (i, c) in centres.iter().enumerate().filter(|(_, c)| inner.contains(**c)) {
+                        let apart: Vec<f64> =
+                            centres.iter().enumerate().filter(|&(j, _)| j != i).map(|(_, d)| c.distance(*d)).collect();
+                        let near = apart.iter().filter(|&&d| (d - step).abs() <= 0.3 * step).count();
+                        assert!(apart.iter().all(|&d| d >= 0.5 * step), "{what}: two copies on one another at {c:?}");
+                        checked += 1;
+                        ringed += usize::from(near >= 2);
+                    }
+                    assert!(checked >= n, "{what}: {checked} copies inside");
+                    if n == 5 || n == 8 {
+                        assert_eq!(ringed, checked, "{what}: copies not between two neighbours");
+                    }
+                }
+            }
+        }
+    }
+}

@@ -1356,3 +1356,33 @@ fn petals_of_varying_length_are_not_carried_round_a_spiral() {
         }
     }
 }
+
+/// A ring's count is read from its copies' mean turn: a person's petals whose turns
+/// happen to drift one way read as a bend, and each count was judged against the first
+/// step's turn. Helper-57's trial (tests/fixtures/rings/petals8_person.json: eight
+/// elliptic petals from one centre, each turned -2.9, 3.7, 5.4, 2.9, 0.1 and 2.4 degrees
+/// off at random, pair turns read 52.4, 46.6, 43.1 and 41.6): four drawn read as a ring
+/// of seven (the first step's 51.1 degrees), its ghosts up to half the step off, and
+/// five drawn "too uncertain". Every ghost from four to seven drawn lies on the ring of eight, and
+/// each of those calls shows one.
+#[test]
+fn a_ring_s_count_is_read_from_its_mean_turn() {
+    let path = format!("{}/tests/fixtures/rings/petals8_person.json", env!("CARGO_MANIFEST_DIR"));
+    let all: Vec<Stroke> = serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
+    let centre = kurbo::Point::new(300.0, 300.0);
+    // (Each petal's centre, 40 out along its own turn of 45 degrees a petal.)
+    let site = |k: usize| {
+        let t = (45.0 * k as f64).to_radians();
+        centre + kurbo::Vec2::new(t.cos(), t.sin()) * 40.0
+    };
+    let step = site(0).distance(site(1));
+    for drawn in 4..all.len() {
+        let s = suggest_strokes(&all[..drawn], &SuggestOptions::default()).unwrap();
+        assert!(!s.strokes.is_empty(), "{drawn} drawn: no ghost ({:?})", s.reason);
+        for g in &s.strokes {
+            let p = g.reference_point();
+            let miss = (drawn..all.len()).map(|k| site(k).distance(p)).fold(f64::INFINITY, f64::min);
+            assert!(miss <= 0.3 * step, "{drawn} drawn: a ghost {:.2} of the step off", miss / step);
+        }
+    }
+}

@@ -48,7 +48,10 @@ pub fn lattice(
     let largest = radii.iter().copied().fold(0.0, f64::max);
     let concentric = rings.iter().all(|r| r.centre().is_some_and(|c| c.distance(centre) <= 0.25 * radii[0]));
     if concentric && radius <= 1.5 * largest && 4.0 * radius <= short {
-        let s = 2.2 * radius;
+        // (Rosettes a tenth of their diameter apart, and no closer than copies round
+        // the outermost ring lie to one another: beads round a ring, a step apart,
+        // read as one pattern with the next rosette's a tenth apart.)
+        let s = (2.2 * radius).max(outer_spacing(out, ring_of, rings));
         return Some([[s, 0.0], [0.5 * s, 0.5 * 3f64.sqrt() * s]]);
     }
     let bounds = pack::inked_bounds(out)?;
@@ -79,6 +82,26 @@ pub fn lattice(
     // rosette does. Taken as the output's side, it was laid once.)
     let gap = if drawn_gap.is_finite() { (0.2 * largest).max(drawn_gap.min(short)) } else { 0.2 * largest };
     Some(pack::brick(bounds.width() + gap, bounds.height() + gap))
+}
+
+/// Twice the outermost ring's radius (its copies' centres round its centre) and its step
+/// (the distance between neighbouring copies' centres).
+fn outer_spacing(out: &[Stroke], ring_of: &[Option<usize>], rings: &[Chain]) -> f64 {
+    rings
+        .iter()
+        .enumerate()
+        .filter_map(|(i, ring)| {
+            let (c, k) = (ring.centre()?, ring.closes?);
+            let placed: Vec<f64> = out
+                .iter()
+                .zip(ring_of)
+                .filter(|(_, r)| **r == Some(i))
+                .map(|(s, _)| s.reference_point().distance(c))
+                .collect();
+            let r = placed.iter().sum::<f64>() / placed.len().max(1) as f64;
+            Some(2.0 * r + 2.0 * r * (std::f64::consts::PI / k as f64).sin())
+        })
+        .fold(0.0, f64::max)
 }
 
 /// The distance between two boxes (0 where they meet).

@@ -60,9 +60,14 @@ pub fn find_ring(strokes: &[Stroke]) -> Option<Chain> {
     search(strokes, MAX_TURN).filter(|f| f.ring).map(|f| f.chain)
 }
 
-/// `find`'s chain, or else `find_ring`'s, or else `find_upright`'s: with whether it is
-/// `find`'s (or, upright, holds the drawing whole).
+/// A ring of round copies read by place (`by_place::ring`: circles or dots, whose
+/// shapes show no turn), or else `find`'s chain, or else `find_ring`'s, or else
+/// `find_upright`'s: with whether it is the drawing's whole repetition (`find`'s, or
+/// upright or by place, holding the drawing).
 pub fn find_or_ring(strokes: &[Stroke]) -> Option<(Chain, bool)> {
+    if let Some(ring) = super::by_place::ring(strokes) {
+        return Some((ring, true));
+    }
     match search(strokes, HALF_TURN) {
         Some(f) if f.whole => Some((f.chain, true)),
         Some(f) if f.ring => Some((f.chain, false)),

@@ -29,6 +29,7 @@
 
 pub mod bend;
 mod bending;
+mod by_place;
 mod carry;
 mod find;
 

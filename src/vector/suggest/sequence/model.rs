@@ -257,7 +257,10 @@ pub(super) fn model(
         if let Some(k) = ring_steps(&turned, radius, size, run.len()) {
             let sign = turned.turn().signum();
             // (Judged as a person's hand may have drawn them: see `PERSON_TURN`.)
-            let judged = Shapes { var: shapes.var.max(2.0 * PERSON_TURN * PERSON_TURN), ..shapes };
+            let var = shapes.var.max(2.0 * PERSON_TURN * PERSON_TURN);
+            // (A ring turns alike at every step: each count is judged against the run's
+            // mean turn, not the first step's of a bend read from a person's few copies.)
+            let judged = Shapes { var, ..shapes_at(0.0) };
             let scatter = orbit.scatter + (0.5 * size * PERSON_TURN).powi(2);
             let mut fits: Vec<(usize, Orbit, f64)> = (k.saturating_sub(1).max(3)..=k + 1)
                 .filter_map(|k| {
@@ -272,7 +275,7 @@ pub(super) fn model(
             // with its error.)
             let sure = fits.get(1).is_none_or(|second| second.2 - fits[0].2 >= SNAP_SURE.ln());
             if let Some((k, snapped, _)) = fits.into_iter().next().filter(|b| {
-                let free = cost(&copies, &judged, orbit.a, scatter);
+                let free = cost(&copies, &Shapes { var, ..shapes }, orbit.a, scatter);
                 sure && b.1.scatter <= SNAP_WORSE * orbit.scatter && b.2 - free <= SNAP_FREE
             }) {
                 orbit = snapped;
