@@ -51,7 +51,7 @@ pub fn lattice(
         // (Rosettes a tenth of their diameter apart, and no closer than copies round
         // the outermost ring lie to one another: beads round a ring, a step apart,
         // read as one pattern with the next rosette's a tenth apart.)
-        let s = (2.2 * radius).max(outer_spacing(out, ring_of, rings));
+        let s = (2.2 * radius).max(2.0 * radius + outer_gap(out, ring_of, rings));
         return Some([[s, 0.0], [0.5 * s, 0.5 * 3f64.sqrt() * s]]);
     }
     let bounds = pack::inked_bounds(out)?;
@@ -84,24 +84,23 @@ pub fn lattice(
     Some(pack::brick(bounds.width() + gap, bounds.height() + gap))
 }
 
-/// Twice the outermost ring's radius (its copies' centres round its centre) and its step
-/// (the distance between neighbouring copies' centres).
-fn outer_spacing(out: &[Stroke], ring_of: &[Option<usize>], rings: &[Chain]) -> f64 {
-    rings
+/// The gap between neighbouring copies round the outermost ring: their centres' step
+/// less a copy's extent (none or less where they touch, as petals do).
+fn outer_gap(out: &[Stroke], ring_of: &[Option<usize>], rings: &[Chain]) -> f64 {
+    let outermost = rings
         .iter()
         .enumerate()
         .filter_map(|(i, ring)| {
             let (c, k) = (ring.centre()?, ring.closes?);
-            let placed: Vec<f64> = out
-                .iter()
-                .zip(ring_of)
-                .filter(|(_, r)| **r == Some(i))
-                .map(|(s, _)| s.reference_point().distance(c))
-                .collect();
-            let r = placed.iter().sum::<f64>() / placed.len().max(1) as f64;
-            Some(2.0 * r + 2.0 * r * (std::f64::consts::PI / k as f64).sin())
+            let copies: Vec<&Stroke> =
+                out.iter().zip(ring_of).filter(|(_, r)| **r == Some(i)).map(|(s, _)| s).collect();
+            let n = copies.len().max(1) as f64;
+            let r = copies.iter().map(|s| s.reference_point().distance(c)).sum::<f64>() / n;
+            let extent = copies.iter().map(|s| s.bounds().width().max(s.bounds().height())).sum::<f64>() / n;
+            Some((r, 2.0 * r * (std::f64::consts::PI / k as f64).sin() - extent))
         })
-        .fold(0.0, f64::max)
+        .max_by(|x, y| x.0.total_cmp(&y.0));
+    outermost.map_or(0.0, |(_, gap)| gap)
 }
 
 /// The distance between two boxes (0 where they meet).

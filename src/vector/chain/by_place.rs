@@ -9,8 +9,11 @@
 //! `bend::circle_through`), their angles about it a whole fraction of a turn apart
 //! (the median gap gives the count, `k`), each within `PLACE` of a step of its site and
 //! no two on one site, the sites drawn one run (a ring drawn part way round is
-//! completed from its ends), at least half round. The step is the turn of a `k`-th
-//! about the centre, the way the hand went; the copies are carried unturned.
+//! completed from its ends), at least half round, their fitted turn a site within
+//! `CLOSE` of a `k`-th. The step is the turn of a `k`-th about the centre, the way the
+//! hand went; the copies are carried unturned. One ring is read so, of one kind (dots
+//! or circles, not both), with a centre of its own size allowed; two rings of circles
+//! side by side are left to `search`.
 
 use super::bend::circle_through;
 use super::{Chain, MAX_STROKES};
@@ -32,11 +35,16 @@ const MAX_SCALE: f64 = 1.3;
 /// them within `ACROSS` of it across (rms: a scatter of circles fits some circle, loosely).
 const PLACE: f64 = 0.3;
 const ACROSS: f64 = 0.15;
-/// The turns round the whole ring are within this of a whole number (or a tenth of it).
-const CLOSE: f64 = 0.3;
+/// The copies' turn a site, fitted to them all, is within this share of a `k`-th of a
+/// turn (the median gap gives `k`, each copy's site is within `PLACE` of a step, and a
+/// ring of six drawn 2π/6.5 apart passes both, its last gap 1.4 steps).
+const CLOSE: f64 = 0.05;
+/// A copy nearer the ring's centre than this share of its mean radius is drawn at the
+/// centre, not round it.
+const CENTRE: f64 = 0.5;
 
 /// The ring of round copies (circles, or dots) among `strokes`, where they hold two
-/// thirds of the drawing (the rest, a centre drawn in it, goes with each ring).
+/// thirds of the drawing, a stroke at the centre aside (the rest goes with each ring).
 pub fn ring(strokes: &[Stroke]) -> Option<Chain> {
     let n = strokes.len();
     if !(MIN_COPIES..=MAX_STROKES).contains(&n) {
@@ -58,6 +66,16 @@ pub fn ring(strokes: &[Stroke]) -> Option<Chain> {
     if m < MIN_COPIES || 3 * m < 2 * n {
         return None;
     }
+    // (A bead drawn at the centre, of the ring's size, is no copy round it: the rest goes
+    // with each ring.)
+    let c = circle_through(&group.iter().map(|&k| centroid(&sampled[k])).collect::<Vec<_>>())?;
+    let mean = group.iter().map(|&k| centroid(&sampled[k]).distance(c)).sum::<f64>() / m as f64;
+    let group: Vec<usize> = group.into_iter().filter(|&k| centroid(&sampled[k]).distance(c) >= CENTRE * mean).collect();
+    let centred = m - group.len();
+    let m = group.len();
+    if m < MIN_COPIES || centred > 1 || 3 * m < 2 * (n - centred) {
+        return None;
+    }
     let places: Vec<Point> = group.iter().map(|&k| centroid(&sampled[k])).collect();
     let c = circle_through(&places)?;
     let radius = places.iter().map(|p| p.distance(c)).sum::<f64>() / m as f64;
@@ -70,9 +88,8 @@ pub fn ring(strokes: &[Stroke]) -> Option<Chain> {
     if gap <= 0.0 {
         return None;
     }
-    let turns = TAU / gap;
-    let k = turns.round();
-    if (turns - k).abs() > CLOSE.max(0.1 * k) || !(MIN_COPIES as f64..=MAX_RING as f64).contains(&k) {
+    let k = (TAU / gap).round();
+    if !(MIN_COPIES as f64..=MAX_RING as f64).contains(&k) {
         return None;
     }
     let k = k as usize;
@@ -104,12 +121,9 @@ pub fn ring(strokes: &[Stroke]) -> Option<Chain> {
         taken[s] = Some(i);
         site[i] = s;
     }
-    // The sites drawn make one run round the ring, at least half round; it begins after
-    // the sites left empty (a whole ring: at its first-drawn copy).
+    // The sites drawn make one run round the ring; it begins after the sites left empty
+    // (a whole ring: at its first-drawn copy).
     let empty: Vec<usize> = (0..k).filter(|&s| taken[s].is_none()).collect();
-    if ((m - 1) as f64 * alpha) < PI - 1e-9 {
-        return None;
-    }
     let start = if empty.is_empty() {
         site[0]
     } else {
@@ -119,6 +133,25 @@ pub fn ring(strokes: &[Stroke]) -> Option<Chain> {
         }
         after[0]
     };
+    // The copies a `k`-th of a turn apart (`CLOSE`), on sites at least half round: the
+    // turn a site, fitted to their angles unwrapped from the run's start (each past
+    // the last by the sites between: six circles 2π/6.5 apart were a ring of six with a
+    // gap of 1.4 steps, five 2π/8.5 apart, 169 degrees round, half a ring of eight).
+    let unwrapped: Vec<(f64, f64)> = (0..m)
+        .map(|i| {
+            let t = ((site[i] + k - start) % k) as f64;
+            let a = angle(places[i]) - angle(places[taken[start].expect("a drawn site")]);
+            (t, a - TAU * ((a - t * alpha) / TAU).round())
+        })
+        .collect();
+    let (st, sa) = unwrapped.iter().fold((0.0, 0.0), |s, u| (s.0 + u.0, s.1 + u.1));
+    let (mt, ma) = (st / m as f64, sa / m as f64);
+    let (num, den) =
+        unwrapped.iter().fold((0.0, 0.0), |s, u| (s.0 + (u.0 - mt) * (u.1 - ma), s.1 + (u.0 - mt).powi(2)));
+    let turn = if den > 0.0 { num / den } else { 0.0 };
+    if (turn / alpha - 1.0).abs() > CLOSE || ((m - 1) as f64 * alpha) < PI - 1e-9 {
+        return None;
+    }
     // The way the hand went: consecutive copies in the drawing's order mostly one site on
     // or one back (a whole ring either way; else forward).
     let on = |i: usize, j: usize, d: usize| (site[i] + d) % k == site[j];
@@ -145,13 +178,18 @@ mod tests {
     use crate::vector::sequences::{circle, circle_ring};
 
     /// Rings of five to twelve circles, whole, each 3% of the step off: read whole, their
-    /// count the drawn one, their step carrying each copy onto the next.
+    /// count the drawn one, their step carrying each copy onto the next; so too with a
+    /// bead drawn at their centre.
     #[test]
     fn whole_rings_of_circles_are_read_by_place() {
         for n in [5, 6, 8, 12] {
             for seed in 1..=3 {
                 let (strokes, _) = circle_ring(n, 90.0, 10.0, 0.03, seed);
                 let chain = ring(&strokes).unwrap_or_else(|| panic!("{n} circles, seed {seed}: no ring"));
+                // (With a bead at the centre too, the same ring.)
+                let mut centred = strokes.clone();
+                centred.push(circle(Point::new(300.0, 300.0), 10.0, 0.0, 1.0, &mut Rng::new(seed), 0.3));
+                assert_eq!(ring(&centred).map(|c| c.members), Some(chain.members.clone()), "{n}, centred");
                 assert_eq!(chain.closes, Some(n));
                 assert_eq!(chain.members.len(), n);
                 let step = 2.0 * 90.0 * (PI / n as f64).sin();
@@ -187,6 +225,18 @@ mod tests {
             })
             .collect();
         assert!(ring(&spiral).is_none());
+        // (Unevenly: six 2π/6.5 apart, five 2π/8.5 apart, 169 degrees round.)
+        let spaced = |n: usize, per: f64, rng: &mut Rng| -> Vec<Stroke> {
+            (0..n)
+                .map(|i| {
+                    let t = TAU / per * i as f64;
+                    circle(Point::new(300.0 + 90.0 * t.cos(), 300.0 + 90.0 * t.sin()), 10.0, 0.0, 1.0, rng, 0.3)
+                })
+                .collect()
+        };
+        assert!(ring(&spaced(6, 6.5, &mut rng)).is_none());
+        assert!(ring(&spaced(5, 8.5, &mut rng)).is_none());
+        assert!(ring(&spaced(6, 6.0, &mut rng)).is_some());
         let (whole, _) = circle_ring(12, 90.0, 10.0, 0.01, 4);
         assert!(ring(&whole[..5]).is_none());
         // (Seven of twelve, over half round: completed from its ends.)

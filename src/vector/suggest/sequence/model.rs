@@ -262,7 +262,10 @@ pub(super) fn model(
             // mean turn, not the first step's of a bend read from a person's few copies.)
             let judged = Shapes { var, ..shapes_at(0.0) };
             let scatter = orbit.scatter + (0.5 * size * PERSON_TURN).powi(2);
-            let mut fits: Vec<(usize, Orbit, f64)> = (k.saturating_sub(1).max(3)..=k + 1)
+            // (The counts either side of the mean turn's too, where that is another.)
+            let mean = judged.mean.y.atan2(judged.mean.x).abs();
+            let k_mean = if mean > 0.0 { (TAU / mean).round().min(2.0 * k as f64) as usize } else { k };
+            let mut fits: Vec<(usize, Orbit, f64)> = (k.min(k_mean).saturating_sub(1).max(3)..=k.max(k_mean) + 1)
                 .filter_map(|k| {
                     let th = TAU / k as f64 * sign;
                     let a = Vec2::new(th.cos(), th.sin());
