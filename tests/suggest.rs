@@ -1386,3 +1386,50 @@ fn a_ring_s_count_is_read_from_its_mean_turn() {
         }
     }
 }
+
+/// Pen taps round a centre complete their ring once drawn half round (helper-55's trial:
+/// a dot has no shape to follow; five taps of a ring of six got ten lattice ghosts, all
+/// wrong, and rings of five to twelve taps "no repetition yet" throughout). Rings of 6, 8
+/// and 12 taps at radius 90, 3% of the step off, seeds 1-3, drawn tap by tap: no ghost
+/// wrong (each within 0.3 of the step of a site still to draw) at any prefix, and from
+/// five taps half round on every site left is proposed; the whole ring is complete.
+#[test]
+fn pen_taps_round_a_centre_complete_their_ring() {
+    use patternsynth::vector::sequences::{circle_ring, pen_taps};
+    for n in [6usize, 8, 12] {
+        for seed in 1..=3 {
+            let (circles, _) = circle_ring(n, 90.0, 12.0, 0.03, seed);
+            let sites: Vec<kurbo::Point> = (0..n)
+                .map(|k| {
+                    let t = k as f64 * std::f64::consts::TAU / n as f64;
+                    kurbo::Point::new(300.0 + 90.0 * t.cos(), 300.0 + 90.0 * t.sin())
+                })
+                .collect();
+            let dots: Vec<Stroke> = circles
+                .iter()
+                .map(|c| {
+                    let p = c.reference_point();
+                    Stroke::new(vec![[p.x, p.y], [p.x + 1.0, p.y]], 4.0, None)
+                })
+                .collect();
+            let taps = pen_taps(&dots, seed);
+            let step = 2.0 * 90.0 * (std::f64::consts::PI / n as f64).sin();
+            for drawn in 3..=n {
+                let s = suggest_strokes(&taps[..drawn], &SuggestOptions { count: 64, ..SuggestOptions::default() })
+                    .unwrap();
+                let what = format!("{n} taps, seed {seed}, {drawn} drawn");
+                for g in &s.strokes {
+                    let p = g.reference_point();
+                    let miss = sites[drawn..].iter().map(|q| q.distance(p)).fold(f64::INFINITY, f64::min);
+                    assert!(miss <= 0.3 * step, "{what}: a ghost {:.2} of the step off", miss / step);
+                }
+                if drawn >= 5 && 2 * (drawn - 1) >= n {
+                    assert_eq!(s.strokes.len(), n - drawn, "{what}: {:?}", s.reason);
+                }
+                if drawn == n {
+                    assert_eq!(s.reason.as_deref(), Some("The ring is complete: draw the next one."), "{what}");
+                }
+            }
+        }
+    }
+}

@@ -2,9 +2,11 @@
 // the ring at the same turn; Tab accepts them; undo takes them back; synthesized, three
 // petals become rosettes of eight; petals drawn as two arcs each are completed whole.
 // Two flowers side by side, one whole and one begun, synthesize into both flowers
-// whole, repeated together.
+// whole, repeated together. Pen taps round a centre, five of eight, get the other three,
+// and synthesize into rosettes.
 // Screenshots: out/ring-ghosts.png, out/ring-accepted.png, out/ring-synthesized.png,
-// out/ring-two-arcs.png, out/ring-two-arcs-accepted.png, out/ring-two-flowers.png.
+// out/ring-two-arcs.png, out/ring-two-arcs-accepted.png, out/ring-two-flowers.png,
+// out/ring-taps.png, out/ring-taps-synthesized.png.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync } from 'node:fs';
@@ -197,6 +199,52 @@ test('two flowers drawn side by side, one of them begun, synthesize into both fl
     const strokes = Number(info.split(' ')[0]);
     assert.ok(strokes >= 3 * (6 + 8), info);
     assert.equal(await strokeCount(page), 9, 'the drawing is kept as drawn');
+  } finally {
+    await close();
+  }
+});
+
+test('pen taps round a centre: five taps half round get the rest of the ring, and synthesize into rosettes', async () => {
+  mkdirSync('out', { recursive: true });
+  const { page, close } = await openEmptyCanvas({ height: 1000 });
+  try {
+    const box = await page.locator('#draw').boundingBox();
+    const at = (x, y) => [box.x + (x * box.width) / 800, box.y + (y * box.height) / 500];
+    // Five taps of a ring of eight, 90 round (400, 250), each a pixel or so off.
+    for (let k = 0; k < 5; k++) {
+      const t = (k * 2 * Math.PI) / 8;
+      const [x, y] = [400 + 90 * Math.cos(t) + (k % 2), 250 + 90 * Math.sin(t) - (k % 3) * 0.5];
+      await page.mouse.move(...at(x, y));
+      await page.mouse.down();
+      await page.mouse.move(...at(x + 1, y + 0.5));
+      await page.mouse.up();
+    }
+    await settled(page);
+    const status = await page.textContent('#suggest-status');
+    assert.match(status, /^[1-3] suggested stroke/, status);
+    await page.screenshot({ path: 'out/ring-taps.png' });
+    // Tab, then Enter on the canvas, till the ring is whole.
+    for (const key of ['Tab', 'Enter', 'Enter']) {
+      const before = await strokeCount(page);
+      await page.keyboard.press(key);
+      await page.waitForFunction((n) => Number(document.querySelector('#stroke-count').textContent.split(' ')[0]) > n, before);
+      await settled(page);
+      if (!/suggested stroke/.test(await page.textContent('#suggest-status'))) break;
+    }
+    assert.equal(await strokeCount(page), 8, 'the ring of eight taps is whole');
+    assert.match(await page.textContent('#suggest-status'), /ring is complete/);
+    const centres = await page.evaluate(() => window.playground.drawing().strokes.map((s) => {
+      const xs = s.points.map((p) => p[0]), ys = s.points.map((p) => p[1]);
+      return [(Math.min(...xs) + Math.max(...xs)) / 2, (Math.min(...ys) + Math.max(...ys)) / 2];
+    }));
+    for (const [x, y] of centres) assert.ok(Math.abs(Math.hypot(x - 400, y - 250) - 90) < 8, `${x}, ${y}`);
+    await page.click('#synthesize');
+    await page.waitForFunction(() => /^(Done\.|.*error.*)$/i.test(document.querySelector('#messages').textContent) || document.querySelector('#messages .error'), null, { timeout: 120000 });
+    assert.equal(await page.textContent('#messages'), 'Done.');
+    await page.waitForFunction(() => document.querySelector('#preview canvas, #preview img'));
+    await page.screenshot({ path: 'out/ring-taps-synthesized.png' });
+    const info = await page.textContent('#result-info');
+    assert.match(info, /completed as a ring/, info);
   } finally {
     await close();
   }

@@ -34,6 +34,7 @@ mod carry;
 mod find;
 
 pub use bending::{find_bending, Bending};
+pub use by_place::ring as find_by_place;
 pub use find::{find, find_or_ring, find_ring, find_upright, ring_steps, rings_beside};
 
 use super::similarity::{mul, Similarity};

@@ -44,6 +44,7 @@ mod hatching;
 mod lattice;
 mod orbit;
 mod sequence;
+mod taps;
 mod turning;
 
 use self::certainty::hand_scatter;
@@ -235,6 +236,10 @@ fn suggest_found(strokes: &[Stroke], opts: &SuggestOptions) -> Result<Suggestion
         classify_drawing(strokes, opts.path_tolerance, opts.width_tolerance, opts.color_tolerance, &accepted)?;
     // Copies along a drawn path that curves go where the path takes them (`along`).
     if let Some(s) = along::propose(strokes, &accepted, &ask(true), !opts.fill) {
+        return Ok(s);
+    }
+    // Pen taps round a centre, half round or more, complete their ring (`taps`).
+    if let Some(s) = taps::propose(strokes, &ask(true)) {
         return Ok(s);
     }
     // The repetition is one of motifs: a copy of a motif of several strokes is one

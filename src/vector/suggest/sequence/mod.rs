@@ -82,7 +82,7 @@ const UPRIGHT_TURN: f64 = 0.2;
 pub(super) const UPRIGHT: f64 = 0.4;
 /// Why nothing (more) is proposed while the sequence goes on.
 use super::UNCERTAIN;
-const RING_COMPLETE: &str = "The ring is complete: draw the next one.";
+pub(super) const RING_COMPLETE: &str = "The ring is complete: draw the next one.";
 /// Why nothing is proposed where copies repeat but do not yet show the next step.
 pub(super) const UNFOLLOWED: &str = "The copies drawn so far do not yet show where the next one goes: draw one more.";
 /// ...the latest four each a step apart within this factor either way (a leaf's
