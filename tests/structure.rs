@@ -1168,7 +1168,8 @@ fn a_drawing_too_few_to_grow_from_is_repeated_whole() {
 /// Circles and pen-tapped dots round a centre (helper-55's trial: rings of five to twelve
 /// beads synthesized as lattices, scatters or rings, 15 of 36 rings; of dots, none of
 /// 36): neither shows a turn, and the ring is read from the places (`chain::by_place`).
-/// Rings of 5, 6, 8 and 12 circles, and of pen taps at the circles' centres, at 1% and 3%
+/// Rings of 5, 6, 8 and 12 circles, and of pen taps at the circles' centres (each its
+/// own, or all alike), at 1% and 3%
 /// of the step, seeds 1-3, are rings, no two copies of the output within half a step;
 /// and the rosettes of five and eight are whole: every copy two ring radii from the
 /// output's edges has two others about a step away (its neighbours round its ring,
@@ -1190,8 +1191,17 @@ fn rings_of_circles_and_dots_become_rosettes() {
                         Stroke::new(vec![[p.x, p.y], [p.x + 1.0, p.y]], 4.0, None)
                     })
                     .collect();
-                let dots = patternsynth::vector::sequences::pen_taps(&dots, seed);
-                for (what, strokes) in [("circles", circles), ("dots", dots)] {
+                let taps = patternsynth::vector::sequences::pen_taps(&dots, seed);
+                // (And taps all alike: a ring completed by accepting ghosts holds exact
+                // copies of its drawn taps.)
+                let exact: Vec<Stroke> = dots
+                    .iter()
+                    .map(|d| {
+                        let [x, y] = d.points[0];
+                        Stroke::new(vec![[x, y], [x + 1.0, y + 0.5], [x + 0.5, y + 1.2]], 4.0, None)
+                    })
+                    .collect();
+                for (what, strokes) in [("circles", circles), ("taps", taps), ("exact taps", exact)] {
                     let r = synth(&strokes);
                     let what = format!("{n} {what} at {wobble}, seed {seed}");
                     assert_eq!(r.structure, Structure::Ring, "{what}");

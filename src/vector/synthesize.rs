@@ -273,7 +273,11 @@ pub fn synthesize_strokes(
     // (Whether the elements translate is asked once, and only where it decides.)
     let translated = std::cell::OnceCell::new();
     let lattice = || *translated.get_or_init(|| translates(&elements));
-    let along = (joined.is_none() && periods.is_none() && motifs.copies.is_none())
+    // (A ring read by place holds though its copies are exact ones: ghosts accepted round
+    // a ring of pen taps are the drawn taps' exact translates, and it was read as an
+    // exact tile on a lattice.)
+    let exact_ring = || motifs.copies.is_some() && chain::find_by_place(strokes).is_some();
+    let along = (joined.is_none() && periods.is_none() && (motifs.copies.is_none() || exact_ring()))
         .then(|| chain::find_or_ring(strokes))
         .flatten()
         .filter(|(_, whole)| *whole || !lattice())
