@@ -41,6 +41,9 @@ export function renderStrokes(strokes, sceneWidth, sceneHeight, { width, height,
         if (i === start) path.moveTo(x, y);
         else path.lineTo(x, y);
       }
+      // (A subpath of one point, a pen tap, is a dot: a lone moveTo strokes nothing, so a
+      // segment a hair long takes the round caps, as the SVG's `l0 0` does.)
+      if (end - start === 1) path.lineTo(s.points[start][0] + 1e-3, s.points[start][1]);
       if (s.closed) path.closePath();
       start = end;
     }

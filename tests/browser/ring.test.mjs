@@ -245,6 +245,21 @@ test('pen taps round a centre: five taps half round get the rest of the ring, an
     await page.screenshot({ path: 'out/ring-taps-synthesized.png' });
     const info = await page.textContent('#result-info');
     assert.match(info, /completed as a ring/, info);
+    // The preview shows the taps (a lone point strokes nothing on a canvas): inked
+    // pixels, about a tap's few for each of the result's strokes.
+    const inked = await page.evaluate(() => {
+      // (The preview holds a bitmap from the worker: read through a 2D copy.)
+      const c = document.querySelector('#preview canvas');
+      const copy = document.createElement('canvas');
+      [copy.width, copy.height] = [c.width, c.height];
+      const ctx = copy.getContext('2d');
+      ctx.drawImage(c, 0, 0);
+      const px = ctx.getImageData(0, 0, c.width, c.height).data;
+      let n = 0;
+      for (let i = 0; i < px.length; i += 4) if (px[i + 3] > 0 && px[i] + px[i + 1] + px[i + 2] < 600) n++;
+      return n;
+    });
+    assert.ok(inked >= Number(info.split(' ')[0]), `${inked} inked pixels`);
   } finally {
     await close();
   }
