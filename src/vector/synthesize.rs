@@ -273,13 +273,14 @@ pub fn synthesize_strokes(
     // (Whether the elements translate is asked once, and only where it decides.)
     let translated = std::cell::OnceCell::new();
     let lattice = || *translated.get_or_init(|| translates(&elements));
-    // (A ring read by place holds though its copies are exact ones: ghosts accepted round
-    // a ring of pen taps are the drawn taps' exact translates, and it was read as an
-    // exact tile on a lattice.)
-    let exact_ring = || motifs.copies.is_some() && chain::find_by_place(strokes).is_some();
-    let along = (joined.is_none() && periods.is_none() && (motifs.copies.is_none() || exact_ring()))
-        .then(|| chain::find_or_ring(strokes))
-        .flatten()
+    // A ring of circles or taps is read by place first (`chain::find_by_place`): their
+    // shapes show no turn for the search to read. (It holds though its copies are exact
+    // ones: ghosts accepted round a ring of pen taps are the drawn taps' exact
+    // translates, and it was read as an exact tile on a lattice.)
+    let free = joined.is_none() && periods.is_none();
+    let placed = free.then(|| chain::find_by_place(strokes)).flatten().map(|ring| (ring, true));
+    let along = placed
+        .or_else(|| (free && motifs.copies.is_none()).then(|| chain::find_or_ring(strokes)).flatten())
         .filter(|(_, whole)| *whole || !lattice())
         .map(|(c, whole)| {
             let beside = if c.closes.is_some() { chain::rings_beside(strokes, &c) } else { Vec::new() };

@@ -16,21 +16,18 @@
 //! side by side are left to `search`.
 
 use super::bend::circle_through;
+// (`find`'s bounds: a round copy's shape fits itself turned within `SHAPE` of its size,
+// copies of one ring are within `MAX_SCALE` of their median size, at most `MAX_RING`.)
+use super::find::{MAX_RING, MAX_SCALE, SHAPE};
 use super::{Chain, MAX_STROKES};
-use crate::vector::similarity::{centroid, looks_round, samples, Similarity};
+use crate::vector::classify::median;
+use crate::vector::similarity::{centroid, looks_round, mul, samples, Similarity};
 use crate::vector::stroke::Stroke;
 use kurbo::{Point, Vec2};
 use std::f64::consts::{PI, TAU};
 
 /// Fewer copies round a centre are as much a lattice's (four circles are a square).
 const MIN_COPIES: usize = 5;
-/// The most copies round a ring (as `find`'s).
-const MAX_RING: usize = 72;
-/// A round copy's shape fits itself turned within this share of its size (as `find`'s
-/// `SHAPE`).
-const SHAPE: f64 = 0.15;
-/// Copies of one ring are within this factor of their median size either way.
-const MAX_SCALE: f64 = 1.3;
 /// Each copy lies within this share of the step of its site along the ring, and all of
 /// them within `ACROSS` of it across (rms: a scatter of circles fits some circle, loosely).
 const PLACE: f64 = 0.3;
@@ -58,7 +55,7 @@ pub fn ring(strokes: &[Stroke]) -> Option<Chain> {
         (0..n).filter(|&k| !strokes[k].is_dot() && looks_round(&sampled[k], size[k], SHAPE)).collect();
     let round: Vec<usize> = {
         let mut sizes: Vec<f64> = round.iter().map(|&k| size[k]).collect();
-        let median = crate::vector::classify::median(&mut sizes);
+        let median = median(&mut sizes);
         round.into_iter().filter(|&k| (median / MAX_SCALE..=median * MAX_SCALE).contains(&size[k])).collect()
     };
     let group = if dots.len() > round.len() { dots } else { round };
@@ -68,15 +65,16 @@ pub fn ring(strokes: &[Stroke]) -> Option<Chain> {
     }
     // (A bead drawn at the centre, of the ring's size, is no copy round it: the rest goes
     // with each ring.)
-    let c = circle_through(&group.iter().map(|&k| centroid(&sampled[k])).collect::<Vec<_>>())?;
-    let mean = group.iter().map(|&k| centroid(&sampled[k]).distance(c)).sum::<f64>() / m as f64;
-    let group: Vec<usize> = group.into_iter().filter(|&k| centroid(&sampled[k]).distance(c) >= CENTRE * mean).collect();
+    let centre: Vec<Point> = sampled.iter().map(|s| centroid(s)).collect();
+    let c = circle_through(&group.iter().map(|&k| centre[k]).collect::<Vec<_>>())?;
+    let mean = group.iter().map(|&k| centre[k].distance(c)).sum::<f64>() / m as f64;
+    let group: Vec<usize> = group.into_iter().filter(|&k| centre[k].distance(c) >= CENTRE * mean).collect();
     let centred = m - group.len();
     let m = group.len();
     if m < MIN_COPIES || centred > 1 || 3 * m < 2 * (n - centred) {
         return None;
     }
-    let places: Vec<Point> = group.iter().map(|&k| centroid(&sampled[k])).collect();
+    let places: Vec<Point> = group.iter().map(|&k| centre[k]).collect();
     let c = circle_through(&places)?;
     let radius = places.iter().map(|p| p.distance(c)).sum::<f64>() / m as f64;
     let angle = |p: Point| (p.y - c.y).atan2(p.x - c.x);
@@ -84,7 +82,7 @@ pub fn ring(strokes: &[Stroke]) -> Option<Chain> {
     sorted.sort_by(f64::total_cmp);
     let mut gaps: Vec<f64> = sorted.windows(2).map(|w| w[1] - w[0]).collect();
     gaps.push(sorted[0] + TAU - sorted[m - 1]);
-    let gap = crate::vector::classify::median(&mut gaps);
+    let gap = median(&mut gaps);
     if gap <= 0.0 {
         return None;
     }
@@ -167,7 +165,7 @@ pub fn ring(strokes: &[Stroke]) -> Option<Chain> {
         })
         .collect::<Option<Vec<usize>>>()?;
     let a = Vec2::new((sense * alpha).cos(), (sense * alpha).sin());
-    let step = Similarity { a, b: c.to_vec2() - crate::vector::similarity::mul(a, c.to_vec2()) };
+    let step = Similarity { a, b: c.to_vec2() - mul(a, c.to_vec2()) };
     Some(Chain { members, companions: vec![Vec::new(); m], step, upright: true, closes: Some(k) })
 }
 

@@ -10,8 +10,8 @@ use std::f64::consts::TAU;
 
 /// Same shape: the best similarity leaves an rms residual of at most this share of
 /// the stroke's size, and scales by at most `MAX_SCALE` either way.
-const SHAPE: f64 = 0.15;
-const MAX_SCALE: f64 = 1.3;
+pub(super) const SHAPE: f64 = 0.15;
+pub(super) const MAX_SCALE: f64 = 1.3;
 /// Two relations are the same step when their `a` differ by at most this share of `|a|`
 /// (about 17 degrees: a person's hand turns each copy by about 2.5 degrees at random,
 /// and three petals of five read pair turns of 65.2 and 77.7 degrees; at 11 degrees, 6
@@ -46,7 +46,7 @@ const CLOSE: f64 = 0.3;
 /// Copies whose centre of turn is within this many of their sizes are a rosette.
 const ROSETTE: f64 = 1.5;
 /// The most copies round a ring.
-const MAX_RING: usize = 72;
+pub(super) const MAX_RING: usize = 72;
 
 /// The chain of `strokes`, if they repeat along a similarity step.
 pub fn find(strokes: &[Stroke]) -> Option<Chain> {
@@ -60,14 +60,9 @@ pub fn find_ring(strokes: &[Stroke]) -> Option<Chain> {
     search(strokes, MAX_TURN).filter(|f| f.ring).map(|f| f.chain)
 }
 
-/// A ring of round copies read by place (`by_place::ring`: circles or dots, whose
-/// shapes show no turn), or else `find`'s chain, or else `find_ring`'s, or else
-/// `find_upright`'s: with whether it is the drawing's whole repetition (`find`'s, or
-/// upright or by place, holding the drawing).
+/// `find`'s chain, or else `find_ring`'s, or else `find_upright`'s: with whether it is
+/// `find`'s (or, upright, holds the drawing whole).
 pub fn find_or_ring(strokes: &[Stroke]) -> Option<(Chain, bool)> {
-    if let Some(ring) = super::by_place::ring(strokes) {
-        return Some((ring, true));
-    }
     match search(strokes, HALF_TURN) {
         Some(f) if f.whole => Some((f.chain, true)),
         Some(f) if f.ring => Some((f.chain, false)),
