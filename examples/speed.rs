@@ -1,7 +1,8 @@
 //! Native side of the speed benchmark (`bench/speed.mjs`): median milliseconds of
 //! `synthesize_texture` from a 128 x 128 crop of a fixture photograph to SIDE x SIDE,
 //! one thread, as one JSON line per size. `cargo run --release --example speed -- 256 1024`
-//! (`RUNS=n` runs per size, 5 by default; `FIXTURE=name`, gravel by default).
+//! (`RUNS=n` runs per size, 5 by default; `FIXTURE=name`, gravel by default; `TILEABLE=1`
+//! for tiles).
 use patternsynth::raster::codec::decode_image;
 use patternsynth::raster::{synthesize_texture, Image, TextureOptions};
 use patternsynth::Silent;
@@ -21,7 +22,8 @@ fn main() {
     }
     for arg in std::env::args().skip(1) {
         let out: usize = arg.parse().expect("sizes in pixels");
-        let opts = TextureOptions { width: out, height: out, seed: 1, ..Default::default() };
+        let tileable = std::env::var("TILEABLE").is_ok_and(|v| v == "1");
+        let opts = TextureOptions { width: out, height: out, seed: 1, tileable, ..Default::default() };
         let mut ms: Vec<f64> = (0..runs)
             .map(|_| {
                 let t = Instant::now();
@@ -30,6 +32,9 @@ fn main() {
             })
             .collect();
         ms.sort_by(f64::total_cmp);
-        println!("{{\"fixture\":\"{fixture}\",\"side\":{out},\"runs\":{runs},\"ms\":{:.1}}}", ms[runs / 2]);
+        println!(
+            "{{\"fixture\":\"{fixture}\",\"tileable\":{tileable},\"side\":{out},\"runs\":{runs},\"ms\":{:.1}}}",
+            ms[runs / 2]
+        );
     }
 }

@@ -1,5 +1,5 @@
 //! Tile quality by method (issue 25): for each fixture photograph (or PNG given) and
-//! seeds 1-3 (`SEEDS`), the seamless tile of E-TFMCM as the paper makes it, E-TFMCM
+//! seeds 1-3 (`SEEDS`; from `FIRST`), the seamless tile of E-TFMCM as the paper makes it, E-TFMCM
 //! refined by toroidal synthesis, and toroidal synthesis alone (the default): patch
 //! energy against the photograph, colour distance, repetition in windows of the
 //! exemplar's size (`energy::repetition_fair`) beside the exemplar's own, and seam
@@ -31,6 +31,8 @@ fn main() {
     std::fs::create_dir_all("out/tiles").unwrap();
     // (SEEDS=n for seeds 1-n, default 3; METHOD=synthesis and the like for one method.)
     let seeds: u64 = std::env::var("SEEDS").ok().and_then(|s| s.parse().ok()).unwrap_or(3);
+    // (FIRST=k starts the seeds at k, whose tiles are the ones saved.)
+    let first: u64 = std::env::var("FIRST").ok().and_then(|s| s.parse().ok()).unwrap_or(1);
     let only = std::env::var("METHOD").ok();
     let methods: [(&str, Method, bool); 3] = [
         ("etfmcm (paper)", Method::Etfmcm, false),
@@ -62,7 +64,7 @@ fn main() {
                 continue;
             }
             let mut sum = [0.0; 5];
-            for seed in 1..=seeds {
+            for seed in first..first + seeds {
                 let (tile, seam) = match methods.get(k) {
                     Some(&(_, method, refine)) => {
                         let opts = SeamlessOptions { method, size, seed, refine, ..Default::default() };
@@ -77,7 +79,7 @@ fn main() {
                 sum[2] += repetition_fair(&out, (ex.width, ex.height), 24.min(ex.width / 4), 8, 1);
                 sum[3] += repetition(&ex, 24.min(ex.width / 4), 1);
                 sum[4] += seam;
-                if seed == 1 {
+                if seed == first {
                     textures::save_repeated(
                         &tile,
                         &format!("out/tiles/{stem}-{}.png", label.replace([' ', '(', ')', '-'], "")),

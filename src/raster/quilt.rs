@@ -37,6 +37,14 @@ pub struct Quilt {
     pub side: usize,
     /// Random origins tried per window.
     pub candidates: usize,
+    /// Weight of the coverage term (0: none). A window's cost is then its overlap's
+    /// mean squared difference over the exemplar's (the mean squared difference of two
+    /// of its pixels drawn at random), plus `spread` times how many times over the
+    /// exemplar pixels under it are copied already, per the share each would copy if
+    /// the output used every pixel equally. Without it, a tile about the exemplar's size
+    /// copies some regions two or three times and others never: the tile repeats and its
+    /// colours drift from the exemplar's.
+    pub spread: f32,
 }
 
 /// A guide for the quilt: the exemplar's guide at each of its positions, and the
@@ -59,7 +67,7 @@ const GUIDED_BUDGET: usize = 50_000_000;
 
 impl Default for Quilt {
     fn default() -> Self {
-        Quilt { side: 16, candidates: 4 }
+        Quilt { side: 16, candidates: 4, spread: 0.0 }
     }
 }
 
@@ -105,6 +113,11 @@ impl Quilt {
         let mut err = vec![0f32; b * b];
         let mut cells: Vec<(u32, u32, u32)> = Vec::with_capacity(b * b);
         let (mut row_e, mut row_g) = (vec![0f32; ew], vec![0f32; ew]);
+        // Coverage: output pixels copying each exemplar pixel, and the scales of the
+        // two terms (see `spread`).
+        let mut uses = vec![0u32; if self.spread > 0.0 { ew * eh } else { 0 }];
+        let share = (lw * lh) as f32 / (ew * eh) as f32;
+        let contrast = if self.spread > 0.0 { 2.0 * variance(ex) } else { 1.0 };
         // (The exemplar's channels apart, for a guided quilt's rows of origins.)
         let channels: [Vec<f32>; 3] = match guide {
             Some(_) => [0, 1, 2].map(|k| ex.data.iter().map(|p| p[k]).collect()),
@@ -194,7 +207,14 @@ impl Quilt {
                         let mut best = (f32::INFINITY, (0, 0));
                         for _ in 0..self.candidates.max(1) {
                             let origin = random(rng);
-                            let e = cost(origin);
+                            let mut e = cost(origin);
+                            if self.spread > 0.0 {
+                                let base = pos(origin, 0, 0);
+                                let cells = (0..b).flat_map(|dy| (0..b).map(move |dx| dy * ew + dx));
+                                let used: u32 = cells.map(|d| uses[base as usize + d]).sum();
+                                let over = used as f32 / (b * b) as f32 / share.max(1e-6);
+                                e = e / overlap.max(1.0) / contrast.max(1e-6) + self.spread * over;
+                            }
                             if e < best.0 {
                                 best = (e, origin);
                             }
@@ -274,7 +294,16 @@ impl Quilt {
                         let new =
                             dx >= left[dy] && dy >= top[dx] && b - 1 - dx >= right[dy] && b - 1 - dy >= bottom[dx];
                         match at(dx, dy) {
-                            Some(i) if out[i] == FREE || new => out[i] = pos(origin, dx, dy),
+                            Some(i) if out[i] == FREE || new => {
+                                let p = pos(origin, dx, dy);
+                                if !uses.is_empty() {
+                                    if out[i] != FREE {
+                                        uses[out[i] as usize] -= 1;
+                                    }
+                                    uses[p as usize] += 1;
+                                }
+                                out[i] = p;
+                            }
                             _ => {}
                         }
                     }
@@ -284,6 +313,18 @@ impl Quilt {
         debug_assert!(out.iter().all(|&p| p != FREE));
         Some(out)
     }
+}
+
+/// The mean over the colour channels' variances, summed: half the mean squared
+/// difference between two pixels of `ex` drawn at random.
+fn variance(ex: &Image) -> f32 {
+    let n = ex.data.len().max(1) as f64;
+    (0..3)
+        .map(|k| {
+            let mean = ex.data.iter().map(|p| p[k] as f64).sum::<f64>() / n;
+            ex.data.iter().map(|p| (p[k] as f64 - mean).powi(2)).sum::<f64>() / n
+        })
+        .sum::<f64>() as f32
 }
 
 /// Where the windows of side `b` start along a side of length `len`: `step` apart from
@@ -432,7 +473,7 @@ mod tests {
         for (side, b) in [(32, 4), (64, 8)] {
             let (ex, lane, target) = swapped(side, 128);
             let guide = QuiltGuide { exemplar: &lane, target: &target, weight: 4.0 };
-            let quilt = Quilt { side: b, candidates: 1024 };
+            let quilt = Quilt { side: b, candidates: 1024, spread: 0.0 };
             let follows = |q: &[u32]| {
                 (0..128 * 128).filter(|&i| (q[i] as usize % side >= side / 2) == (i % 128 < 64)).count() as f64
                     / (128.0 * 128.0)
@@ -443,15 +484,23 @@ mod tests {
             let other = quilt.lay(&ex, None, Some(guide), (128, 128), false, &mut Rng::new(2)).unwrap();
             let same = q.iter().zip(&other).filter(|(a, b)| a == b).count();
             assert!(same * 4 < q.len(), "{same} of {} pixels alike across seeds", q.len());
-            let q = Quilt { side: b, candidates: 4 }.lay(&ex, None, None, (128, 128), false, &mut Rng::new(1)).unwrap();
+            let q = Quilt { side: b, candidates: 4, spread: 0.0 }
+                .lay(&ex, None, None, (128, 128), false, &mut Rng::new(1))
+                .unwrap();
             assert!(follows(&q) < 0.7, "{} without the guide", follows(&q));
         }
         // A sample mask that leaves no window clear: still a whole quilt.
         let (ex, lane, target) = swapped(32, 64);
         let allowed: Vec<bool> = (0..32 * 32).map(|i| i % 3 == 0).collect();
         let guide = QuiltGuide { exemplar: &lane, target: &target, weight: 4.0 };
-        let q =
-            Quilt { side: 4, candidates: 1024 }.lay(&ex, Some(&allowed), Some(guide), (64, 64), true, &mut Rng::new(1));
+        let q = Quilt { side: 4, candidates: 1024, spread: 0.0 }.lay(
+            &ex,
+            Some(&allowed),
+            Some(guide),
+            (64, 64),
+            true,
+            &mut Rng::new(1),
+        );
         assert!(q.is_some_and(|q| q.len() == 64 * 64 && q.iter().all(|&p| p < 32 * 32)));
     }
 
@@ -469,5 +518,33 @@ mod tests {
         let q = Quilt::default().lay(&ex, None, None, (128, 128), false, &mut Rng::new(1)).unwrap();
         let left = q.iter().filter(|&&p| (p % 64) < 32).count() as f64 / q.len() as f64;
         assert!((0.3..0.7).contains(&left), "left share {left}");
+    }
+
+    #[test]
+    fn the_coverage_term_copies_the_exemplar_evenly() {
+        // A tile the exemplar's size from 8-pixel windows of a 16-pixel exemplar of noise
+        // (no origin's overlap matches better than another's): in quarters of the
+        // exemplar side, how often each of its sixteen squares is copied against its own
+        // share, over 32 seeds. Random origins favour the middle, which more windows
+        // cover; the term evens that out, though windows half the exemplar's side
+        // still cover its middle more (there are two ways into it for one into a corner).
+        let mut ex = Image::new(16, 16);
+        let mut rng = Rng::new(5);
+        ex.data.iter_mut().for_each(|p| *p = [rng.below(256) as f32; 3]);
+        let shares = |quilt: Quilt| {
+            let mut share = [0.0f64; 16];
+            for seed in 1..=32 {
+                for p in quilt.lay(&ex, None, None, (16, 16), true, &mut Rng::new(seed)).unwrap() {
+                    let (x, y) = (p as usize % 16, p as usize / 16);
+                    share[x / 4 + 4 * (y / 4)] += 1.0 / (32.0 * 16.0);
+                }
+            }
+            let least = share.iter().copied().fold(f64::INFINITY, f64::min);
+            (least, share.iter().copied().fold(0.0, f64::max))
+        };
+        let (least, most) = shares(Quilt { side: 16, candidates: 4, spread: 0.0 });
+        assert!(least < 0.3 && most > 2.4, "without: {least:.2}-{most:.2}");
+        let (least, most) = shares(Quilt { side: 16, candidates: 8, spread: 3.0 });
+        assert!(least > 0.3 && most < 2.0, "with: {least:.2}-{most:.2}");
     }
 }

@@ -32,12 +32,14 @@ pub enum Method {
     Tfmcm,
     /// Toroidal neighbourhood synthesis (ours), the default: it takes any width and
     /// height, and keeps structure (bricks) that E-TFMCM's layout breaks on small crops.
-    /// On twelve held-out photographs (`bench/heldout-data.sh`, 128, seeds 1-8,
+    /// Its coarsest level starts from a quilt of the photograph's windows laid round the
+    /// torus, chosen to cover the photograph evenly (`synthesis::job::TILE_QUILT`). On
+    /// twelve held-out photographs (`bench/heldout-data.sh`, 128, seeds 1-8,
     /// `examples/tile_quality` with texture-synthesis 0.8.3 `--tiling` beside it) its
-    /// tiles' patch energy is a median 0.97 of the peer's (refined E-TFMCM 0.92), at or
-    /// below it on 7 (8), the rest within 1.06 (sand); colours nearer the photograph on
-    /// 10 (8). More correction passes would bring every photograph under the peer at 1.6
-    /// times the time (not taken: see `synthesis::Params::corrections`).
+    /// tiles' patch energy is a median 0.83 of the peer's (refined E-TFMCM 0.92), at or
+    /// below it on 12 (8); colours at most the peer's distance on 10 (8); repetition
+    /// within 0.05 of the photograph's own on 10; seams within 0.8-1.2 on 12. Grown from
+    /// noise, as before the quilt: 0.99, 7, 10, 11 and 11.
     Synthesis,
     /// The image kept, a band around its wrap re-made (`mend`).
     Mend,

@@ -35,7 +35,7 @@ const COARSE_EXHAUSTIVE_BUDGET: usize = 25 << 21;
 /// 0.85 at 4 (0.86 with the guide at 16); searching the coarsest level exhaustively
 /// instead (as before the quilt knew the guide) gave 0.85 at about twice the time.
 /// Every origin is tried up to 1,024 (a 28-pixel coarsest level has 625).
-const GUIDED_QUILT: Quilt = Quilt { side: 4, candidates: 1024 };
+const GUIDED_QUILT: Quilt = Quilt { side: 4, candidates: 1024, spread: 0.0 };
 const GUIDED_QUILT_WEIGHT: f32 = 4.0;
 /// Output pixels x exemplar positions (in 5 x 5 neighbourhoods) the exhaustive
 /// reference mode may compare.
@@ -197,7 +197,7 @@ impl Job {
                 .map(|l| l.data.iter().map(|p| scale * p[0]).collect())
                 .collect()
         });
-        let quilt = quilt_params();
+        let quilt = quilt_params(params.tileable);
         let quiltable = exs.iter().all(|ex| {
             let coarsest = &ex.levels[levels - 1];
             quilt.window_for((coarsest.width, coarsest.height), sizes[levels - 1], params.tileable).is_some()
@@ -244,8 +244,7 @@ impl Job {
 
     /// Whether `level` starts from a map made whole (`starts`) and so needs no causal
     /// pass: the coarsest level, when it starts from a picture's layout, or when its
-    /// exemplars are large enough to quilt and the output is not a tile. A tile's
-    /// coarsest level is otherwise grown causally (`tile_quilt` says why).
+    /// exemplars are large enough to quilt (a tile's round the torus, `TILE_QUILT`).
     pub(crate) fn started(&self, level: usize) -> bool {
         level + 1 == self.levels && self.start.is_some()
     }
@@ -486,47 +485,53 @@ impl Job {
     }
 }
 
-/// Whether tiles quilt too (a probe's setting, `PATTERNSYNTH_TILE_QUILT=1`), round the
-/// torus. Clipped at the edges, the quilt put a cut on the wrap, and laid round the
-/// torus with rows from 0 it still did (print's wrap 1.53 at 128, seeds 1-3); with rows
-/// shifted at random, the ten photographs at 128 (examples/tile_quality, seeds 1-3)
-/// keep colours closer (mean distance 0.160 -> 0.137; tissue 0.68 -> 0.31) at about the
-/// same patch energy (6.11 -> 6.22), but over seeds 1-8 (examples/seam_lines) print's
-/// wrap stays a seam (1.07 from noise, 1.46 quilted, 1.37 without the wrap's extra
-/// pass, 1.34 with a causal first pass over the quilt; its inner lines 0.88-1.18) while
-/// the other nine stay within 0.81-1.09. Measured again later (seeds 1-3 at 128):
-/// quilted, print's patch energy went 7.35 -> 9.41 and coins' seam 0.98 -> 0.74, and
-/// neither more window candidates (16, 64), nor two or six more passes over the
-/// coarsest level, nor a coarsest level of 32 mended print. Measured again with the
-/// quilted coarsest level searched coherently (twelve held-out photographs at 128,
-/// seeds 1-6, against texture-synthesis 0.8.3's `--tiling`), with a colour balance in
-/// the quilt's choice of windows too (weight 3; not kept): the median energy ratio to
-/// the peer's fell from 0.97 to 0.86 (smoke 2.18 -> 1.68, clouds 5.25 -> 3.48), but
-/// colour distance at most the peer's went from 11 of 12 to 9 (clouds 0.063 -> 0.160)
-/// and repetition within 0.05 of the exemplar's own from 11 to 10; without the quilt's
-/// balance (seeds 1-3), print's wrap was 1.31 and coins' 1.22. Measured again at
-/// 772de4b (the ten photographs at 128, seeds 1-3, examples/tile_quality; seeds 1-8 for
-/// the wrap, examples/seam_lines): print's wrap is no longer the quilt's (1.21 from
-/// noise, 1.21 quilted), and quilted tiles are lower in patch energy on 8 of 10 (wood
-/// 7.04 -> 6.14, tissue 8.52 -> 7.04, gravel 9.99 -> 8.92; brick 3.73 -> 4.20 and coins
-/// 6.49 -> 6.99 higher), but repeat more than their exemplar + 0.05 on 5 of 10 against 2
-/// (tissue 0.58 -> 0.85 against its own 0.65, print 0.67 -> 0.79, coins, brick, moon)
-/// and stray further in colour on 4 (coins 0.127 -> 0.214, fur 0.079 -> 0.118). A tile
-/// repeated 2 x 2 shows a repeated window at once. So tiles still grow from noise, and
-/// keep the exemplar's colours by the colour balance (`reuse::Balance`).
+/// How a tile's quilt is laid: round the torus, with the coverage term (`Quilt::spread`)
+/// and more origins to choose from, since the term now keeps the proportions that few
+/// origins kept before.
+///
+/// Tiles grew from noise until the coverage term. Quilted without it (four origins a
+/// window), tiles were lower in patch energy (the twelve held-out photographs at 128
+/// against texture-synthesis 0.8.3's `--tiling`, seeds 1-3: median 0.84 of the peer's,
+/// from noise 1.00) but a tile about the exemplar's size copied some of its regions two
+/// or three times and others never: colour further from the photograph's than the
+/// peer's on 4 of 12 (marble 0.207 against 0.089), repetition past the fixtures' own on
+/// 5 of 10 (tissue 0.58 -> 0.85 against its own 0.65). Earlier findings are in git
+/// (print's wrap, mended at 772de4b). With the term, over seeds 1-8 (examples/
+/// tile_quality, the twelve; weights 2 / 3 / 4 at 8 origins): energy at or below the
+/// peer's on 11 / 12 / 11 (median 0.82 / 0.83 / 0.86; from noise 7, 0.99), colour at
+/// most the peer's on 11 / 10 / 12 (from noise 10), repetition within 0.05 of the
+/// photograph's own on 11 / 10 / 11 (from noise 11), every seam in 0.8-1.2 (from noise
+/// 11). At 16 origins, 3 seeds: no better. The ten fixtures (seeds 1-8): energy lower on
+/// 8 (tissue 8.48 -> 6.97, fur 6.01 -> 5.07; brick 3.63 -> 3.81, print 8.97 -> 9.81),
+/// colour nearer on 6 (print 0.210 -> 0.268 further). The wrap scores 0.08-0.10 higher
+/// than from noise over seeds 1-32 (examples/seam_lines: brick 0.95 -> 1.03, coins 1.06 ->
+/// 1.14, print 1.12 -> 1.22), not from where the quilt's windows meet (rolled at random
+/// before the passes, the same) nor mended by a wider band matched again along the wrap,
+/// an exhaustive search over the quilt (brick 1.01, but print 1.29 and coins 1.25 over 8
+/// seeds, and the energy gain gone: median 0.93), or finer levels started from their
+/// parent rather than noise.
+const TILE_QUILT: Quilt = Quilt { side: 16, candidates: 8, spread: 3.0 };
+
+/// Whether tiles quilt (always, but for a probe's `PATTERNSYNTH_TILE_QUILT=0`, which
+/// grows them from noise as before `TILE_QUILT`).
 fn tile_quilt() -> bool {
-    cfg!(feature = "test-support") && std::env::var("PATTERNSYNTH_TILE_QUILT").is_ok_and(|v| v == "1")
+    !(cfg!(feature = "test-support") && std::env::var("PATTERNSYNTH_TILE_QUILT").is_ok_and(|v| v == "0"))
 }
 
-/// The quilt's window side and candidates; probes may set them through
-/// `PATTERNSYNTH_QUILT=side,candidates`.
-fn quilt_params() -> Quilt {
+/// The quilt's window side, candidates and coverage weight (`TILE_QUILT` for a tile);
+/// probes may set them through `PATTERNSYNTH_QUILT=side,candidates[,spread]`.
+fn quilt_params(tileable: bool) -> Quilt {
     #[cfg(feature = "test-support")]
     if let Ok(v) = std::env::var("PATTERNSYNTH_QUILT") {
         let n: Vec<usize> = v.split(',').filter_map(|s| s.parse().ok()).collect();
-        if n.len() == 2 {
-            return Quilt { side: n[0], candidates: n[1] };
+        let spread = v.split(',').nth(2).and_then(|s| s.parse().ok()).unwrap_or(0.0);
+        if n.len() >= 2 {
+            return Quilt { side: n[0], candidates: n[1], spread };
         }
     }
-    Quilt::default()
+    if tileable {
+        TILE_QUILT
+    } else {
+        Quilt::default()
+    }
 }

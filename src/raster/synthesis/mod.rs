@@ -2,13 +2,13 @@
 //! each output pixel mixes by weights mu and 1 - mu (the paper's blending).
 //!
 //! Coarse to fine; at each level the output is filled in scanline order on a torus,
-//! from noise drawn from the exemplar (the paper's start). The coarsest level of an
-//! output that is not a tile starts instead from a quilt of exemplar windows (`quilt`),
-//! which its passes then join with full neighbourhoods: grown causally from noise, it
-//! drifted towards the exemplar's smoothest region. A tile's coarsest level still grows
-//! from noise (a quilt's cuts stood out at the wrap of a page of print), and keeps to
-//! the exemplar's colours by a penalty on colours copied more than their share
-//! (`reuse::Balance`). A pixel's feature is its causal
+//! from noise drawn from the exemplar (the paper's start). The coarsest level
+//! starts instead from a quilt of exemplar windows (`quilt`), laid round the torus for
+//! a tile, which its passes then join with full neighbourhoods: grown causally from
+//! noise, it drifted towards the exemplar's smoothest region. A tile's quilt covers the
+//! exemplar evenly (`quilt::Quilt::spread`); a tile from an exemplar too small to quilt
+//! grows from noise and keeps to the exemplar's colours by a penalty on colours copied
+//! more than their share (`reuse::Balance`). A pixel's feature is its causal
 //! neighbourhood at this level and a 3x3 block of the (finished) parent level, read
 //! where the pixel lies on it (`Pass::parent_feature`).
 //! For each exemplar with weight > 0 the best-matching exemplar position is found and
@@ -20,7 +20,7 @@
 //! patches of the exemplar continue; plus the parent's position scaled up and a few
 //! random positions; a candidate that many neighbours propose is preferred. The
 //! coarsest level starts from a quilt of exemplar windows where they fit, which lays the
-//! large-scale structure; grown from noise (tiles, small exemplars) it is searched
+//! large-scale structure; grown from noise (small exemplars) it is searched
 //! exhaustively where that is cheap (`job`'s `COARSE_EXHAUSTIVE_BUDGET`). Finer levels
 //! refine it coherently. Exemplar neighbourhoods are
 //! read on the fly (no feature tables) and the output is kept only as source positions,

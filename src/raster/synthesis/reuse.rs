@@ -92,8 +92,9 @@ const BALANCE_BINS: usize = 4;
 /// region, whose neighbourhoods match everything well (tissue's tiles almost all the
 /// pale stroma, colour distance 0.68; a clouds tile mostly sky), and a penalty per
 /// position does not see it, the drift spreading over the region's many positions.
-/// Plain outputs start from a quilt instead (`quilt`), which a tile's wrap did not
-/// keep seamless on a photograph of print. A guide asks for other shares than the
+/// Outputs whose exemplar is large enough start from a quilt instead (`quilt`; tiles
+/// since its coverage term, `job::TILE_QUILT`), so this is for tiles from small
+/// exemplars and for probes that grow tiles from noise. A guide asks for other shares than the
 /// exemplar's, and a blend's exemplar is seen only where its weight is, so neither is
 /// balanced.
 #[derive(Clone)]
