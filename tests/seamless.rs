@@ -47,10 +47,12 @@ fn seam_of(img: &Rgba) -> f64 {
 fn the_wrap_of_a_synthesized_tile_is_no_seam_on_structured_photographs() {
     // Mean over seeds: a single tile's score depends on whether a structure (a mortar
     // line, a coin's rim) happens to run along the wrap; a seam is there for every seed.
+    // One seed's score varies by about 0.4, so the mean of 16 is known to about 0.1
+    // (brick's quilted tiles: 1.38 over seeds 1-4, 1.09 over 1-32).
     for name in ["brick", "coins", "print"] {
         let img = fixture(name);
         let naive = seam_of(&img);
-        let over_seeds = |score: &dyn Fn(u64) -> f64| (1..=4).map(score).sum::<f64>() / 4.0;
+        let over_seeds = |score: &dyn Fn(u64) -> f64| (1..=16).map(score).sum::<f64>() / 16.0;
         let tiles = over_seeds(&|seed| {
             let o = SeamlessOptions { method: Method::Synthesis, seed, ..Default::default() };
             seamless_tile(&img, &o, &mut Silent).unwrap().seam_score
@@ -73,10 +75,10 @@ fn the_wrap_of_a_synthesized_tile_is_no_seam_on_structured_photographs() {
         assert!(naive > 2.0, "{name}: naive {naive}");
         // ...and none in ours.
         assert!((0.8..1.25).contains(&tiles), "{name}: seam {tiles}");
-        // Print's banded tiles vary too much from seed to seed for 4 to tell (1.16 here;
+        // Print's banded tiles vary too much from seed to seed to tell (1.16 over 4;
         // other lines of the same tiles reach 2): its figure is in the benchmark. Below
         // 1 the wrap is smoother than the lines inside: brick's banded wraps often run
-        // along a course of bricks rather than across mortar (0.71 over these 4 seeds), which
+        // along a course of bricks rather than across mortar (0.71 over 4 seeds), which
         // is no seam; a blurred or flat wrap would score far lower.
         if name != "print" {
             assert!((0.6..1.25).contains(&banded), "{name}: banded seam {banded}");
@@ -373,12 +375,12 @@ fn a_mended_band_lays_no_joint_straight_down_the_tile() {
 /// torus, which covers the photograph evenly (`quilt::Quilt::spread`), rather than from
 /// noise: it keeps the photograph's make-up. Means over seeds 1-3 at 128; grown from
 /// noise, tissue's tiles scored a patch energy of 8.52 and repeated 0.064 more than the
-/// photograph (0.581 against its own 0.645), fur's 6.23 and 0.061; quilted 7.39 / 0.792
-/// and 5.08 / 0.833.
+/// photograph (0.581 against its own 0.645), fur's 6.23 and 0.061; quilted 7.14 / 0.818
+/// and 5.56 / 0.812.
 #[test]
 fn a_tile_keeps_the_photograph_s_make_up() {
     use patternsynth::raster::energy::{patch_energy, repetition, repetition_fair};
-    for (name, bound) in [("tissue", 8.0), ("fur", 5.6)] {
+    for (name, bound) in [("tissue", 8.0), ("fur", 5.9)] {
         let img = fixture(name);
         let ex = Image::from_rgba8(img.width, img.height, &img.data).unwrap();
         let (mut energy, mut repeats) = (0.0, 0.0);

@@ -36,10 +36,11 @@ pub enum Method {
     /// torus, chosen to cover the photograph evenly (`synthesis::job::TILE_QUILT`). On
     /// twelve held-out photographs (`bench/heldout-data.sh`, 128, seeds 1-8,
     /// `examples/tile_quality` with texture-synthesis 0.8.3 `--tiling` beside it) its
-    /// tiles' patch energy is a median 0.83 of the peer's (refined E-TFMCM 0.92), at or
-    /// below it on 12 (8); colours at most the peer's distance on 10 (8); repetition
-    /// within 0.05 of the photograph's own on 10; seams within 0.8-1.2 on 12. Grown from
-    /// noise, as before the quilt: 0.99, 7, 10, 11 and 11.
+    /// tiles' patch energy is a median 0.89 of the peer's (refined E-TFMCM 0.94), at or
+    /// below it on 11 (8), sand 1.05; colours at most the peer's distance on 11 (8);
+    /// repetition within 0.05 of the photograph's own on 12 (12); seams within 0.8-1.2
+    /// on 11 (12), brick's wrap 0.79 smoother than its lines. Grown from noise, as before
+    /// the quilt: 0.99, 7, 10, 11 and 11.
     Synthesis,
     /// The image kept, a band around its wrap re-made (`mend`).
     Mend,

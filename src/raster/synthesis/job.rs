@@ -487,30 +487,45 @@ impl Job {
 
 /// How a tile's quilt is laid: round the torus, with the coverage term (`Quilt::spread`)
 /// and more origins to choose from, since the term now keeps the proportions that few
-/// origins kept before.
+/// origins kept before, in windows of 6 pixels (at a 16-pixel coarsest level, where 16
+/// would be cut to half the exemplar).
 ///
 /// Tiles grew from noise until the coverage term. Quilted without it (four origins a
-/// window), tiles were lower in patch energy (the twelve held-out photographs at 128
-/// against texture-synthesis 0.8.3's `--tiling`, seeds 1-3: median 0.84 of the peer's,
-/// from noise 1.00) but a tile about the exemplar's size copied some of its regions two
-/// or three times and others never: colour further from the photograph's than the
-/// peer's on 4 of 12 (marble 0.207 against 0.089), repetition past the fixtures' own on
-/// 5 of 10 (tissue 0.58 -> 0.85 against its own 0.65). Earlier findings are in git
-/// (print's wrap, mended at 772de4b). With the term, over seeds 1-8 (examples/
-/// tile_quality, the twelve; weights 2 / 3 / 4 at 8 origins): energy at or below the
-/// peer's on 11 / 12 / 11 (median 0.82 / 0.83 / 0.86; from noise 7, 0.99), colour at
-/// most the peer's on 11 / 10 / 12 (from noise 10), repetition within 0.05 of the
-/// photograph's own on 11 / 10 / 11 (from noise 11), every seam in 0.8-1.2 (from noise
-/// 11). At 16 origins, 3 seeds: no better. The ten fixtures (seeds 1-8): energy lower on
-/// 8 (tissue 8.48 -> 6.97, fur 6.01 -> 5.07; brick 3.63 -> 3.81, print 8.97 -> 9.81),
-/// colour nearer on 6 (print 0.210 -> 0.268 further). The wrap scores 0.08-0.10 higher
-/// than from noise over seeds 1-32 (examples/seam_lines: brick 0.95 -> 1.03, coins 1.06 ->
-/// 1.14, print 1.12 -> 1.22), not from where the quilt's windows meet (rolled at random
-/// before the passes, the same) nor mended by a wider band matched again along the wrap,
-/// an exhaustive search over the quilt (brick 1.01, but print 1.29 and coins 1.25 over 8
-/// seeds, and the energy gain gone: median 0.93), or finer levels started from their
-/// parent rather than noise.
-const TILE_QUILT: Quilt = Quilt { side: 16, candidates: 8, spread: 3.0 };
+/// window, windows half the exemplar), tiles were lower in patch energy (the twelve
+/// held-out photographs at 128 against texture-synthesis 0.8.3's `--tiling`, seeds 1-3:
+/// median 0.84 of the peer's, from noise 1.00) but a tile about the exemplar's size
+/// copied some of its regions two or three times and others never: colour further from
+/// the photograph's than the peer's on 4 of 12 (marble 0.207 against 0.089), repetition
+/// past the fixtures' own on 5 of 10 (tissue 0.58 -> 0.85 against its own 0.65).
+/// Measured with the term over seeds 1-8 (examples/tile_quality, the twelve; from noise:
+/// energy at or below the peer's on 7, median 0.99; colour at most the peer's on 10;
+/// repetition within 0.05 of the photograph's own on 11; seams in 0.8-1.2 on 11):
+///
+/// | window, origins, weight | energy | median | colour | repetition | seams |
+/// |---|---|---|---|---|---|
+/// | 8, 8, 2 | 11 | 0.82 | 11 | 11 | 12 |
+/// | 8, 8, 3 | 12 | 0.83 | 10 | 10 | 12 |
+/// | 8, 8, 4 | 11 | 0.86 | 12 | 11 | 12 |
+/// | 8, 16, 3 | 12 | 0.85 | 11 | 12 | 11 |
+/// | 8, 32, 6 | 11 | 0.86 | 11 | 10 | 11 |
+/// | **6, 8, 3** | 11 | 0.89 | 11 | 12 | 11 |
+/// | 6, 16, 3 | 11 | 0.86 | 11 | 12 | 11 |
+/// | 4, 8, 3 | 11 | 0.88 | 10 | 12 | 12 |
+///
+/// Windows half the exemplar's side cover its middle twice as often as its edges,
+/// however they are chosen (two ways into the middle for one into a corner): gravel's
+/// 8-pixel tiles repeat their few dark pebbles (0.070 below the photograph's own), which
+/// a 2 x 2 repeat shows at once. Sand, whose energy is the one above the peer's at 6
+/// pixels (1.05), is there in every row (0.98-1.05; from noise 1.06). On the ten fixtures
+/// (seeds 1-8, against noise) 6-pixel windows lower the energy on 8 (tissue 8.48 ->
+/// 7.54, print 8.97 -> 8.87; coins 6.73 -> 7.10 and gravel's repetition 0.048 below its
+/// own), and the wrap over seeds 1-32 (examples/seam_lines) reads print 1.18 (from noise
+/// 1.12; 8-pixel windows 1.22, with 16 origins 1.25 and coins 1.17), brick 1.09, coins
+/// 1.05. (Where the 8-pixel windows' wrap rose, it was not where the windows meet:
+/// rolled at random before the passes, the same; nor mended by a wider band matched
+/// again along the wrap, by finer levels started from their parent rather than noise,
+/// or by an exhaustive search over the quilt, which lost the energy gained: median 0.93.)
+const TILE_QUILT: Quilt = Quilt { side: 6, candidates: 8, spread: 3.0 };
 
 /// Whether tiles quilt (always, but for a probe's `PATTERNSYNTH_TILE_QUILT=0`, which
 /// grows them from noise as before `TILE_QUILT`).
