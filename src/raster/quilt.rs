@@ -22,6 +22,10 @@
 //! origins could not. Its windows are small (4 pixels), so their overlap is one pixel
 //! and the cut is a straight line; the passes over the level join them.
 //!
+//! With `spread` (tiles), a window's cost also counts how much of the exemplar under it
+//! is copied already, so that the quilt covers the exemplar about evenly rather than
+//! copying some regions several times and others never.
+//!
 //! Windows are clipped at the output's edges, or, for a tile, laid round the torus:
 //! spread evenly so that every gap is at most a step, each row's last window cut against
 //! its first as well as its left neighbour, and the last row against the first as well
@@ -43,7 +47,7 @@ pub struct Quilt {
     /// exemplar pixels under it are copied already, per the share each would copy if
     /// the output used every pixel equally. Without it, a tile about the exemplar's size
     /// copies some regions two or three times and others never: the tile repeats and its
-    /// colours drift from the exemplar's.
+    /// colours drift from the exemplar's. (A guided quilt follows its guide instead.)
     pub spread: f32,
 }
 
@@ -210,8 +214,8 @@ impl Quilt {
                             let mut e = cost(origin);
                             if self.spread > 0.0 {
                                 let base = pos(origin, 0, 0);
-                                let cells = (0..b).flat_map(|dy| (0..b).map(move |dx| dy * ew + dx));
-                                let used: u32 = cells.map(|d| uses[base as usize + d]).sum();
+                                let under = (0..b).flat_map(|dy| (0..b).map(move |dx| dy * ew + dx));
+                                let used: u32 = under.map(|d| uses[base as usize + d]).sum();
                                 let over = used as f32 / (b * b) as f32 / share.max(1e-6);
                                 e = e / overlap.max(1.0) / contrast.max(1e-6) + self.spread * over;
                             }
@@ -315,8 +319,8 @@ impl Quilt {
     }
 }
 
-/// The mean over the colour channels' variances, summed: half the mean squared
-/// difference between two pixels of `ex` drawn at random.
+/// The colour channels' variances, summed: half the mean squared difference between
+/// two pixels of `ex` drawn at random.
 fn variance(ex: &Image) -> f32 {
     let n = ex.data.len().max(1) as f64;
     (0..3)

@@ -8,7 +8,7 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync } from 'node:fs';
-import { openPlayground } from './harness.mjs';
+import { openPlayground, synthesizeDrawing } from './harness.mjs';
 import { parseSvg } from '../../pkg/node/index.js';
 
 const SPACING = 70; // canvas units between drawn crosses
@@ -204,12 +204,9 @@ test('a hand-drawn 3x3 grid of crosses synthesizes into a clean lattice of cross
 
   // Synthesize with the vector engine at the default output size.
   const [W, H] = [Number(await page.inputValue('#out-width')), Number(await page.inputValue('#out-height'))];
-  await page.click('#synthesize');
-  await page.waitForFunction(() => /^(Done\.|.*error.*)$/i.test(document.querySelector('#messages').textContent) || document.querySelector('#messages .error'), null, { timeout: 120000 });
-  assert.equal(await page.textContent('#messages'), 'Done.');
-  await page.waitForFunction(() => document.querySelector('#preview canvas, #preview img'));
+  const { messages, info } = await synthesizeDrawing(page);
+  assert.equal(messages, 'Done.');
   await page.screenshot({ path: 'out/handdrawn-crosses.png', fullPage: true });
-  const info = await page.textContent('#result-info');
   t.diagnostic(`result: ${info}`);
   assert.equal(await count(), DRAWN, 'synthesis did not change the drawing');
 

@@ -46,6 +46,22 @@ export async function acceptWithTab(page) {
   await strokesPast(page, before);
 }
 
+/** Presses Synthesize and waits for its answer (and, when done, for the preview): the
+ *  messages line, and the result's summary (`#result-info`). */
+export async function synthesizeDrawing(page) {
+  await page.click('#synthesize');
+  await page.waitForFunction(() => /^(Done\.|.*error.*)$/i.test(document.querySelector('#messages').textContent) || document.querySelector('#messages .error'), null, { timeout: 120000 });
+  const messages = await page.textContent('#messages');
+  if (messages === 'Done.') await page.waitForFunction(() => document.querySelector('#preview canvas, #preview img'));
+  return { messages, info: await page.textContent('#result-info') };
+}
+
+/** The centre of a stroke's bounding box (strokes as the package's JSON: `points`). */
+export const strokeCentre = (s) => {
+  const xs = s.points.map((p) => p[0]), ys = s.points.map((p) => p[1]);
+  return [(Math.min(...xs) + Math.max(...xs)) / 2, (Math.min(...ys) + Math.max(...ys)) / 2];
+};
+
 /** Draws the polyline `pts` (in the canvas's 800 x 500 units) with the mouse, `steps`
  *  pointer moves between points. */
 export async function drawPolyline(page, pts, steps = 3) {

@@ -6,13 +6,9 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync } from 'node:fs';
-import { openEmptyCanvas } from './harness.mjs';
+import { openEmptyCanvas, strokeCentre } from './harness.mjs';
 import { parseSvg } from '../../pkg/node/index.js';
 
-const centre = (s) => {
-  const xs = s.points.map((p) => p[0]), ys = s.points.map((p) => p[1]);
-  return [(Math.min(...xs) + Math.max(...xs)) / 2, (Math.min(...ys) + Math.max(...ys)) / 2];
-};
 
 test('a hexagonal layout set and dragged by hand repeats one drawn motif on it', async () => {
   mkdirSync('out', { recursive: true });
@@ -50,7 +46,7 @@ test('a hexagonal layout set and dragged by hand repeats one drawn motif on it',
     await page.click('#synthesize');
     await page.waitForFunction(() => document.querySelector('#messages').textContent === 'Done.', null, { timeout: 60000 });
     const svg = await page.evaluate(async () => (await fetch(document.querySelector('#download').href)).text());
-    const bars = parseSvg(svg).map(centre);
+    const bars = parseSvg(svg).map(strokeCentre);
     // 600 x 400 over cells of 80 x 69.3: about 43 crosses, two bars each (edges cut some).
     assert.ok(bars.length >= 70, `${bars.length} bars`);
     const offLattice = (bars, a, b) => {
@@ -75,7 +71,7 @@ test('a hexagonal layout set and dragged by hand repeats one drawn motif on it',
     await page.click('#synthesize');
     await page.waitForFunction(() => document.querySelector('#messages').textContent === 'Done.' && !document.querySelector('#synthesize').disabled, null, { timeout: 60000 });
     const turnedSvg = await page.evaluate(async () => (await fetch(document.querySelector('#download').href)).text());
-    const turned = parseSvg(turnedSvg).map(centre);
+    const turned = parseSvg(turnedSvg).map(strokeCentre);
     // Four times as many copies: about 170 crosses.
     assert.ok(turned.length >= 4 * 70, `${turned.length} bars`);
     const turn = ([x, y]) => [0.5 * (x * Math.cos(Math.PI / 6) - y * Math.sin(Math.PI / 6)), 0.5 * (x * Math.sin(Math.PI / 6) + y * Math.cos(Math.PI / 6))];

@@ -10,7 +10,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync } from 'node:fs';
-import { openEmptyCanvas, settled, strokeCount } from './harness.mjs';
+import { drawPolyline, openEmptyCanvas, settled, strokeCentre, strokeCount, synthesizeDrawing } from './harness.mjs';
 
 /** Draws a petal with the mouse: a loop `len` long from `centre` (the middle of the
  *  800 x 500 canvas) along `theta`, its points wobbling by `wobble` across; begun `begin`
@@ -120,12 +120,9 @@ test('three petals drawn around a centre synthesize into rosettes of eight', asy
   try {
     // Three petals of eight, by hand (a little wobble in each).
     for (let k = 0; k < 3; k++) await drawPetal(page, (k * 2 * Math.PI) / 8, 0.6, k);
-    await page.click('#synthesize');
-    await page.waitForFunction(() => /^(Done\.|.*error.*)$/i.test(document.querySelector('#messages').textContent) || document.querySelector('#messages .error'), null, { timeout: 120000 });
-    assert.equal(await page.textContent('#messages'), 'Done.');
-    await page.waitForFunction(() => document.querySelector('#preview canvas, #preview img'));
+    const { messages, info } = await synthesizeDrawing(page);
+    assert.equal(messages, 'Done.');
     await page.screenshot({ path: 'out/ring-synthesized.png' });
-    const info = await page.textContent('#result-info');
     assert.match(info, /completed as a ring/, info);
     // Several rosettes of eight (those at the edges cut).
     const strokes = Number(info.split(' ')[0]);
@@ -187,12 +184,9 @@ test('two flowers drawn side by side, one of them begun, synthesize into both fl
     for (let k = 0; k < 6; k++) await drawPetal(page, (k * 2 * Math.PI) / 6 + 0.3, 0.6, k, 0, false, [200, 250], 90);
     for (let k = 0; k < 3; k++) await drawPetal(page, (k * 2 * Math.PI) / 8, 0.6, k, 0, false, [600, 250], 90);
     assert.equal(await strokeCount(page), 9);
-    await page.click('#synthesize');
-    await page.waitForFunction(() => /^(Done\.|.*error.*)$/i.test(document.querySelector('#messages').textContent) || document.querySelector('#messages .error'), null, { timeout: 120000 });
-    assert.equal(await page.textContent('#messages'), 'Done.');
-    await page.waitForFunction(() => document.querySelector('#preview canvas, #preview img'));
+    const { messages, info } = await synthesizeDrawing(page);
+    assert.equal(messages, 'Done.');
     await page.screenshot({ path: 'out/ring-two-flowers.png' });
-    const info = await page.textContent('#result-info');
     assert.match(info, /completed as a ring/, info);
     // Each flower at least three times over the 1200 x 800 output, the second with its
     // eight petals: (6 + 8) x 3 strokes at the least (it was the drawing as it was: 9).
@@ -208,16 +202,11 @@ test('pen taps round a centre: five taps half round get the rest of the ring, an
   mkdirSync('out', { recursive: true });
   const { page, close } = await openEmptyCanvas({ height: 1000 });
   try {
-    const box = await page.locator('#draw').boundingBox();
-    const at = (x, y) => [box.x + (x * box.width) / 800, box.y + (y * box.height) / 500];
     // Five taps of a ring of eight, 90 round (400, 250), each a pixel or so off.
     for (let k = 0; k < 5; k++) {
       const t = (k * 2 * Math.PI) / 8;
       const [x, y] = [400 + 90 * Math.cos(t) + (k % 2), 250 + 90 * Math.sin(t) - (k % 3) * 0.5];
-      await page.mouse.move(...at(x, y));
-      await page.mouse.down();
-      await page.mouse.move(...at(x + 1, y + 0.5));
-      await page.mouse.up();
+      await drawPolyline(page, [[x, y], [x + 1, y + 0.5]], 1);
     }
     await settled(page);
     const status = await page.textContent('#suggest-status');
@@ -233,17 +222,11 @@ test('pen taps round a centre: five taps half round get the rest of the ring, an
     }
     assert.equal(await strokeCount(page), 8, 'the ring of eight taps is whole');
     assert.match(await page.textContent('#suggest-status'), /ring is complete/);
-    const centres = await page.evaluate(() => window.playground.drawing().strokes.map((s) => {
-      const xs = s.points.map((p) => p[0]), ys = s.points.map((p) => p[1]);
-      return [(Math.min(...xs) + Math.max(...xs)) / 2, (Math.min(...ys) + Math.max(...ys)) / 2];
-    }));
+    const centres = (await page.evaluate(() => window.playground.drawing().strokes)).map(strokeCentre);
     for (const [x, y] of centres) assert.ok(Math.abs(Math.hypot(x - 400, y - 250) - 90) < 8, `${x}, ${y}`);
-    await page.click('#synthesize');
-    await page.waitForFunction(() => /^(Done\.|.*error.*)$/i.test(document.querySelector('#messages').textContent) || document.querySelector('#messages .error'), null, { timeout: 120000 });
-    assert.equal(await page.textContent('#messages'), 'Done.');
-    await page.waitForFunction(() => document.querySelector('#preview canvas, #preview img'));
+    const { messages, info } = await synthesizeDrawing(page);
+    assert.equal(messages, 'Done.');
     await page.screenshot({ path: 'out/ring-taps-synthesized.png' });
-    const info = await page.textContent('#result-info');
     assert.match(info, /completed as a ring/, info);
     // The preview shows the taps (a lone point strokes nothing on a canvas): inked
     // pixels, about a tap's few for each of the result's strokes.

@@ -6,7 +6,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdirSync } from 'node:fs';
-import { acceptWithTab, drawPolyline, openEmptyCanvas, settled, strokeCount, strokesPast } from './harness.mjs';
+import { acceptWithTab, drawPolyline, openEmptyCanvas, settled, strokeCount, strokesPast, synthesizeDrawing } from './harness.mjs';
 
 /** The stem: a sine across the 800 x 500 canvas, from x = 60 to 740. */
 const stem = (x) => [x, 250 + 60 * Math.sin((x - 400) / 70)];
@@ -158,11 +158,9 @@ function waveSites(from, gap, count) {
 test('leaves drawn along a wave with no stem, and a stem with three leaves on alternate sides, synthesize along their curves', async () => {
   mkdirSync('out', { recursive: true });
   const synthesize = async (page) => {
-    await page.click('#synthesize');
-    await page.waitForFunction(() => /^(Done\.|.*error.*)$/i.test(document.querySelector('#messages').textContent) || document.querySelector('#messages .error'), null, { timeout: 120000 });
-    assert.equal(await page.textContent('#messages'), 'Done.');
-    await page.waitForFunction(() => document.querySelector('#preview canvas, #preview img'));
-    return page.textContent('#result-info');
+    const { messages, info } = await synthesizeDrawing(page);
+    assert.equal(messages, 'Done.');
+    return info;
   };
   {
     // Six leaves up a wave and over its crest, by hand (each with its own wobble).
