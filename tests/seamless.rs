@@ -396,3 +396,106 @@ fn a_tile_keeps_the_photograph_s_make_up() {
         assert!(repeats >= own - 0.05, "{name}: repetition {repeats:.3} against its own {own:.3}");
     }
 }
+
+/// Line art on a clear ground, as a person exports it: `rings` wobbly rings of dark ink,
+/// 2 pixels wide and antialiased, on a transparent white ground, `side` on a side.
+fn line_art(side: usize, rings: usize, seed: u64) -> Rgba {
+    let mut rng = patternsynth::rng::Rng::new(seed);
+    let mut alpha = vec![0f64; side * side];
+    for _ in 0..rings {
+        let (cx, cy) = (rng.next_f64() * side as f64, rng.next_f64() * side as f64);
+        let r = 5.0 + 5.0 * rng.next_f64();
+        let (wobble, phase) = (0.8 + 0.8 * rng.next_f64(), rng.next_f64() * 6.3);
+        for y in 0..side {
+            for x in 0..side {
+                let (dx, dy) = (x as f64 + 0.5 - cx, y as f64 + 0.5 - cy);
+                let radius = r + wobble * (3.0 * dy.atan2(dx) + phase).sin();
+                let ink = (1.5 - ((dx * dx + dy * dy).sqrt() - radius).abs()).clamp(0.0, 1.0);
+                alpha[y * side + x] = alpha[y * side + x].max(ink);
+            }
+        }
+    }
+    let data = alpha
+        .iter()
+        .flat_map(|&a| if a > 0.0 { [20, 30, 90, (a * 255.0).round() as u8] } else { [255, 255, 255, 0] })
+        .collect();
+    Rgba { width: side, height: side, data }
+}
+
+/// Each pixel premultiplied by its alpha (what it shows over any ground), with the alpha.
+fn shown(img: &Rgba) -> Vec<[u8; 4]> {
+    img.data
+        .chunks_exact(4)
+        .map(|p| {
+            let a = p[3] as u32;
+            [0, 1, 2].map(|c| ((p[c] as u32 * a + 127) / 255) as u8).into_iter().chain([p[3]]).collect::<Vec<_>>()
+        })
+        .map(|v| [v[0], v[1], v[2], v[3]])
+        .collect()
+}
+
+/// Helper-59's finding: line art on a transparent ground came back opaque black. A
+/// tile (and a texture) now keeps the alpha of each pixel it copies, and compares it.
+#[test]
+fn line_art_on_a_clear_ground_stays_on_a_clear_ground() {
+    use std::collections::HashSet;
+    let share = |img: &Rgba, f: &dyn Fn(u8) -> bool| {
+        img.data.chunks_exact(4).filter(|p| f(p[3])).count() as f64 / (img.width * img.height) as f64
+    };
+    let (mut ink, mut ranks) = ([0.0; 2], 0.0);
+    for seed in 1..=3 {
+        let art = line_art(128, 14, seed);
+        let palette: HashSet<[u8; 4]> = shown(&art).into_iter().collect();
+        let (clear, inked) = (share(&art, &|a| a == 0), share(&art, &|a| a >= 128));
+        let tile = seamless_tile(&art, &SeamlessOptions { seed, ..Default::default() }, &mut Silent).unwrap();
+        let texture = {
+            let ex = Image::from_rgba8(128, 128, &art.data).unwrap();
+            let o = TextureOptions {
+                width: 192,
+                height: 160,
+                seed,
+                alphas: vec![Some(art.data.chunks_exact(4).map(|p| p[3]).collect())],
+                ..Default::default()
+            };
+            synthesize_texture(&ex, &o, &mut Silent).unwrap()
+        };
+        assert!(tile.warnings.is_empty(), "{:?}", tile.warnings);
+        for (k, (what, out)) in [("tile", &tile.image), ("texture", &texture)].into_iter().enumerate() {
+            let (c, i) = (share(out, &|a| a == 0), share(out, &|a| a >= 128));
+            println!("seed {seed} {what}: clear {c:.3} (art {clear:.3}), inked {i:.3} (art {inked:.3})");
+            assert!((c - clear).abs() < 0.08, "seed {seed} {what}: clear {c:.3} against {clear:.3}");
+            // One seed may draw its rings sparser or denser (a tile of 128 holds a dozen);
+            // none is empty, and over seeds the ink is the drawing's.
+            assert!(i > 0.4 * inked, "seed {seed} {what}: inked {i:.3} against {inked:.3}");
+            ink[k] += i / inked / 3.0;
+            // Every pixel is one of the drawing's, as it shows: no ink made up, no ground
+            // turned opaque.
+            let strange = shown(out).iter().filter(|p| !palette.contains(*p)).count();
+            assert_eq!(strange, 0, "seed {seed} {what}: {strange} pixels the drawing does not have");
+        }
+        // The wrap of the opacity is no seam either. On sparse line art one ring along a
+        // line moves its score from 0 (no ink there) to 2, so the wrap is ranked among
+        // every boundary of the torus (the tile rolled to put each at the wrap): a cut
+        // ranks at the top in every seed.
+        let t = &tile.image;
+        let roll = |k: usize| {
+            let a: Vec<[u8; 3]> = (0..128 * 128)
+                .map(|i| [t.data[(((i / 128 + k) % 128) * 128 + (i % 128 + k) % 128) * 4 + 3]; 3])
+                .collect();
+            seam_score(&a, 128, 128)
+        };
+        let wrap = roll(0);
+        let rank = (1..128).filter(|&k| roll(k) < wrap).count() as f64 / 127.0;
+        println!("seed {seed}: alpha's wrap {wrap:.2}, ranked {rank:.2} among the boundaries");
+        ranks += rank / 3.0;
+    }
+    assert!(ranks < 0.9, "the alpha's wrap ranks {ranks:.2} among the tiles' boundaries over seeds 1-3");
+    for (what, ratio) in ["tile", "texture"].into_iter().zip(ink) {
+        assert!((0.7..1.4).contains(&ratio), "{what}: ink {ratio:.2} of the drawing's over seeds 1-3");
+    }
+    // E-TFMCM reads colours only, and says so.
+    let art = line_art(64, 5, 1);
+    let o = SeamlessOptions { method: Method::Etfmcm, ..Default::default() };
+    let paper = seamless_tile(&art, &o, &mut Silent).unwrap();
+    assert!(paper.warnings.iter().any(|w| w.contains("transparency")), "{:?}", paper.warnings);
+}

@@ -1,6 +1,7 @@
 //! The raster type the texture engines work on: RGB in `f32` (0-255 scale), row major.
-//! RGBA bytes convert at the edges; alpha is not synthesized (output alpha is opaque),
-//! but a fill matches, copies and heals it (`inpaint`).
+//! RGBA bytes convert at the edges; alpha travels beside the colours: a synthesis copies
+//! it with each pixel (`TextureOptions::alphas`), a fill matches, copies and heals it
+//! (`inpaint`).
 
 use crate::error::{invalid, Error, Result};
 
@@ -27,10 +28,32 @@ impl Rgba {
         self.data.chunks_exact(4).map(|p| [p[0], p[1], p[2]]).collect()
     }
 
+    /// The colours as they show over white (the measures' reading of an image with
+    /// transparency: a clear ground reads as paper, not as the black it may hold).
+    pub fn rgb_over_white(&self) -> Vec<[u8; 3]> {
+        self.data.chunks_exact(4).map(|p| over_white([p[0], p[1], p[2]], p[3])).collect()
+    }
+
+    /// Each pixel's alpha.
+    pub fn alpha(&self) -> Vec<u8> {
+        self.data.chunks_exact(4).map(|p| p[3]).collect()
+    }
+
+    /// Whether every pixel is opaque.
+    pub fn opaque(&self) -> bool {
+        self.data.chunks_exact(4).all(|p| p[3] == 255)
+    }
+
     /// Whether not every pixel has the same alpha (a fill then matches and heals it).
     pub fn alpha_varies(&self) -> bool {
         self.data.chunks_exact(4).any(|p| p[3] != self.data[3])
     }
+}
+
+/// Colour `c` of alpha `a` composited over white.
+pub fn over_white(c: [u8; 3], a: u8) -> [u8; 3] {
+    let a = a as u32;
+    c.map(|v| ((v as u32 * a + 255 * (255 - a) + 127) / 255) as u8)
 }
 
 /// Largest side of an image the engines accept (memory stays bounded: see `MAX_PIXELS`).

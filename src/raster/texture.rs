@@ -36,6 +36,12 @@ pub struct TextureOptions {
     pub guides: Option<Guides>,
     /// Return the layout too (`Synthesis::layout`).
     pub keep_layout: bool,
+    /// Per exemplar, its alpha (one value per pixel) where any exemplar is not opaque
+    /// everywhere (read by the wasm layer from RGBA): the output keeps the alpha of the
+    /// pixels it copies, and where alpha varies candidates are compared by it too
+    /// (`synthesis::opacity`). Empty: opaque. Not for blends.
+    #[serde(skip)]
+    pub alphas: Vec<Option<Vec<u8>>>,
 }
 
 /// Guide images: grey values (luminance) of each exemplar's and of the output's size,
@@ -69,6 +75,7 @@ impl Default for TextureOptions {
             sample_masks: Vec::new(),
             guides: None,
             keep_layout: false,
+            alphas: Vec::new(),
         }
     }
 }
@@ -164,6 +171,7 @@ pub fn pool_job(exemplars: &[Image], opts: &TextureOptions) -> Result<(Job, Pool
     let gutter = pool::gutter(params.levels.unwrap_or(1), opts.neighbourhood);
     let pool = pool::pool(exemplars, &opts.sample_masks, gutter)?;
     params.constraints.allowed = vec![pool.allowed.clone()];
+    params.constraints.alpha = pooled_alpha(exemplars, &opts.alphas, gutter)?;
     if let Some(g) = &opts.guides {
         if g.exemplars.len() != exemplars.len() {
             return invalid(format!(
@@ -192,6 +200,28 @@ pub fn pool_job(exemplars: &[Image], opts: &TextureOptions) -> Result<(Job, Pool
     }
     let job = Job::new(Sources::One(&pool.image), &params)?;
     Ok((job, pool))
+}
+
+/// The exemplars' alphas (`TextureOptions::alphas`; a missing one opaque) laid out as
+/// the pool lays their colours, or `None` when every exemplar is opaque.
+fn pooled_alpha(exemplars: &[Image], alphas: &[Option<Vec<u8>>], gutter: usize) -> Result<Option<Vec<u8>>> {
+    if alphas.iter().flatten().all(|a| a.iter().all(|&v| v == 255)) {
+        return Ok(None);
+    }
+    if alphas.len() > exemplars.len() {
+        return invalid(format!("{} alpha planes for {} exemplars.", alphas.len(), exemplars.len()));
+    }
+    let mut greys = Vec::with_capacity(exemplars.len());
+    for (i, e) in exemplars.iter().enumerate() {
+        let a = alphas.get(i).and_then(|a| a.as_deref());
+        if a.is_some_and(|a| a.len() != e.width * e.height) {
+            return invalid(format!("Alpha plane {} does not match its exemplar ({}x{}).", i + 1, e.width, e.height));
+        }
+        let opaque = vec![255; e.width * e.height];
+        greys.push(super::synthesis::opacity::grey(a.unwrap_or(&opaque), e.width, e.height));
+    }
+    let image = pool::pool(&greys, &[], gutter)?.image;
+    Ok(Some(image.data.iter().map(|p| p[0].round().clamp(0.0, 255.0) as u8).collect()))
 }
 
 /// Runs a job in the schedule its parameters ask for.

@@ -20,6 +20,7 @@ use super::etfmcm::{generate, Decisions, Rule};
 use super::measure::{restoration_rgb, seam_score};
 use crate::error::{invalid, Result};
 use crate::progress::{Progress, Throttle};
+use crate::raster::image::over_white;
 use crate::raster::{synthesize_texture, Image, Rgba, TextureOptions};
 use serde::{Deserialize, Serialize};
 
@@ -130,7 +131,15 @@ pub fn seamless_tile(input: &Rgba, opts: &SeamlessOptions, progress: &mut dyn Pr
     // tile is its exemplar's size, so the image is scaled to it.
     let synthesis = opts.method == Method::Synthesis;
     let (width, height) = tile_size(opts, input)?;
-    let (ex_side, side, rgb) = prepare(input, width.max(height), !synthesis, &mut warnings)?;
+    let Prepared { ex_side, side, rgb, alpha } = prepare(input, width.max(height), !synthesis, &mut warnings)?;
+    let opaque = alpha.iter().all(|&a| a == 255);
+    if !(synthesis || opaque) {
+        warnings.push(
+            "The image has transparency, which E-TFMCM does not read (its statistics are of colours): the tile is \
+             opaque. Method 'synthesis' keeps it."
+                .to_string(),
+        );
+    }
     if !(opts.max_count_difference.is_finite() && opts.max_count_difference >= 0.0) {
         return invalid("maxCountDifference must be a number of at least 0.");
     }
@@ -150,14 +159,24 @@ pub fn seamless_tile(input: &Rgba, opts: &SeamlessOptions, progress: &mut dyn Pr
                     }
                     let out: Vec<u8> = m.iter().flat_map(|&a| if a { [0, 0, 0, 255] } else { [255; 4] }).collect();
                     let out = Rgba { width: input.width, height: input.height, data: out };
-                    let (_, _, scaled) = prepare(&out, width.max(height), false, &mut Vec::new())?;
-                    vec![Some(scaled.iter().map(|p| p[0] == 0).collect())]
+                    let scaled = prepare(&out, width.max(height), false, &mut Vec::new())?;
+                    vec![Some(scaled.rgb.iter().map(|p| p[0] == 0).collect())]
                 }
             };
-            let o =
-                TextureOptions { width, height, seed: opts.seed, tileable: true, sample_masks, ..Default::default() };
+            // Transparency travels with the pixels copied (line art on a clear ground
+            // stays on a clear ground).
+            let alphas = if opaque { Vec::new() } else { vec![Some(alpha.clone())] };
+            let o = TextureOptions {
+                width,
+                height,
+                seed: opts.seed,
+                tileable: true,
+                sample_masks,
+                alphas,
+                ..Default::default()
+            };
             let out = synthesize_texture(&img, &o, &mut |f| progress.tick(f).is_ok())?;
-            (out.rgb(), None, None, None)
+            (out, None, None, None)
         }
         Method::Mend => unreachable!("made by `mended`"),
         Method::Etfmcm | Method::Tfmcm => {
@@ -182,24 +201,22 @@ pub fn seamless_tile(input: &Rgba, opts: &SeamlessOptions, progress: &mut dyn Pr
                 let mut progress = Throttle::with_range(progress, 0.3, 1.0);
                 out = refine(&out, &rgb, side, opts.seed, &mut progress)?;
             }
+            let data = out.iter().flat_map(|p| [p[0], p[1], p[2], 255]).collect();
+            let out = Rgba { width: side, height: side, data };
             (out, Some(['r', 'g', 'b'][c]), Some((conv.before, conv.after)), Some(decisions))
         }
     };
     let mut progress = Throttle::new(progress);
     progress.tick(1.0)?;
-    let restoration_rate = restoration_rgb(&rgb, &out);
-    let (width, height) = if synthesis { (width, height) } else { (side, side) };
-    let seam_score = seam_score(&out, width, height);
-    let data = out.iter().flat_map(|p| [p[0], p[1], p[2], 255]).collect();
-    Ok(SeamlessResult {
-        image: Rgba { width, height, data },
-        restoration_rate,
-        seam_score,
-        warnings,
-        channel,
-        count_difference,
-        decisions,
-    })
+    // With transparency, measured as the pixels show over white.
+    let (colours, rgb) = if opaque {
+        (out.rgb(), rgb)
+    } else {
+        (out.rgb_over_white(), rgb.iter().zip(&alpha).map(|(&c, &a)| over_white(c, a)).collect())
+    };
+    let restoration_rate = restoration_rgb(&rgb, &colours);
+    let seam_score = seam_score(&colours, out.width, out.height);
+    Ok(SeamlessResult { image: out, restoration_rate, seam_score, warnings, channel, count_difference, decisions })
 }
 
 /// Method 'mend': the image itself, any size, a band around its wrap re-made.
@@ -220,9 +237,11 @@ fn mended(input: &Rgba, opts: &SeamlessOptions, progress: &mut dyn Progress) -> 
         return invalid("The sample mask is not of the image's size.");
     }
     let image = super::mend::mend(input, band, opts.sample_mask.clone(), opts.seed, progress)?;
-    let rgb = image.rgb();
+    // With transparency, measured as the pixels show over white.
+    let shown = |i: &Rgba| if input.opaque() { i.rgb() } else { i.rgb_over_white() };
+    let rgb = shown(&image);
     Ok(SeamlessResult {
-        restoration_rate: restoration_rgb(&input.rgb(), &rgb),
+        restoration_rate: restoration_rgb(&shown(input), &rgb),
         seam_score: seam_score(&rgb, w, h),
         image,
         warnings: Vec::new(),
@@ -287,16 +306,21 @@ fn tile_size(opts: &SeamlessOptions, input: &Rgba) -> Result<(usize, usize)> {
     }
 }
 
+/// The exemplar as `prepare` makes it.
+struct Prepared {
+    /// The exemplar's side and the tile's.
+    ex_side: usize,
+    side: usize,
+    /// Its colours, averaged over each pixel's footprint by their alpha (a clear
+    /// ground's colour does not darken the edges of what is drawn on it), and its alpha.
+    rgb: Vec<[u8; 3]>,
+    alpha: Vec<u8>,
+}
+
 /// Crops `input` to a centred square and scales it to the tile's side `side` (its longer
 /// one), saying so; without `enlarge`, a tile larger than the image keeps the image at
-/// its own size, and the exemplar is at most `MAX_TILE` on a side. Returns the
-/// exemplar's side, the tile's side and the exemplar.
-fn prepare(
-    input: &Rgba,
-    side: usize,
-    enlarge: bool,
-    warnings: &mut Vec<String>,
-) -> Result<(usize, usize, Vec<[u8; 3]>)> {
+/// its own size, and the exemplar is at most `MAX_TILE` on a side.
+fn prepare(input: &Rgba, side: usize, enlarge: bool, warnings: &mut Vec<String>) -> Result<Prepared> {
     let (w, h) = (input.width, input.height);
     crate::raster::image::check_size(w, h, "image")?;
     if input.data.len() != w * h * 4 {
@@ -330,24 +354,33 @@ fn prepare(
     // Box filter over each output pixel's footprint (bilinear-like when enlarging).
     let scale = short as f64 / ex_side as f64;
     let mut rgb = Vec::with_capacity(ex_side * ex_side);
+    let mut alpha = Vec::with_capacity(ex_side * ex_side);
     for y in 0..ex_side {
         for x in 0..ex_side {
             let (fx0, fy0) = (x as f64 * scale, y as f64 * scale);
             let (sx0, sy0) = (fx0.floor() as usize, fy0.floor() as usize);
             let sx1 = ((fx0 + scale).ceil() as usize).clamp(sx0 + 1, short);
             let sy1 = ((fy0 + scale).ceil() as usize).clamp(sy0 + 1, short);
-            let mut acc = [0u32; 3];
+            let (mut acc, mut weighted, mut coverage) = ([0u32; 3], [0u64; 3], 0u64);
             for sy in sy0..sy1 {
                 for sx in sx0..sx1 {
                     let i = ((y0 + sy) * w + x0 + sx) * 4;
-                    for (a, &v) in acc.iter_mut().zip(&input.data[i..i + 3]) {
-                        *a += v as u32;
+                    let a = input.data[i + 3] as u64;
+                    for c in 0..3 {
+                        acc[c] += input.data[i + c] as u32;
+                        weighted[c] += input.data[i + c] as u64 * a;
                     }
+                    coverage += a;
                 }
             }
             let n = ((sx1 - sx0) * (sy1 - sy0)) as u32;
-            rgb.push(acc.map(|v| ((v + n / 2) / n) as u8));
+            rgb.push(if coverage == 0 || coverage == 255 * n as u64 {
+                acc.map(|v| ((v + n / 2) / n) as u8)
+            } else {
+                weighted.map(|v| ((v + coverage / 2) / coverage) as u8)
+            });
+            alpha.push(((coverage + n as u64 / 2) / n as u64) as u8);
         }
     }
-    Ok((ex_side, side, rgb))
+    Ok(Prepared { ex_side, side, rgb, alpha })
 }

@@ -21,9 +21,13 @@ pub fn rgba(v: &JsValue, what: &str) -> Result<Rgba, JsValue> {
     Ok(Rgba { width, height, data })
 }
 
-/// One image, or an array of them (`what` names them; items are numbered from 1).
-pub fn images(v: &JsValue, what: &str) -> Result<Vec<Image>, JsValue> {
-    if is_array(v, what)? {
+/// Each image's alpha, or none when all are opaque (`TextureOptions::alphas`).
+type Alphas = Vec<Option<Vec<u8>>>;
+
+/// One image, or an array of them (`what` names them; items are numbered from 1), as
+/// colours and, where any of them is not opaque everywhere, each one's alpha.
+pub fn images(v: &JsValue, what: &str) -> Result<(Vec<Image>, Alphas), JsValue> {
+    let rgba = if is_array(v, what)? {
         let a: &js_sys::Array = v.unchecked_ref();
         if a.length() == 0 {
             return Err(error(&format!("The {what} array is empty: pass at least one image.")));
@@ -31,10 +35,18 @@ pub fn images(v: &JsValue, what: &str) -> Result<Vec<Image>, JsValue> {
         if a.length() > 255 {
             return Err(error(&format!("The {what} array holds {} images; at most 255 are taken.", a.length())));
         }
-        (0..a.length()).map(|i| image(&a.get(i), &format!("{what} {}", i + 1))).collect()
+        (0..a.length()).map(|i| rgba(&a.get(i), &format!("{what} {}", i + 1))).collect::<Result<Vec<_>, _>>()?
     } else {
-        Ok(vec![image(v, what)?])
-    }
+        vec![rgba(v, what)?]
+    };
+    let images = rgba
+        .iter()
+        .map(|r| Image::from_rgba8(r.width, r.height, &r.data))
+        .collect::<Result<_, _>>()
+        .map_err(js_error)?;
+    let alphas =
+        if rgba.iter().all(|r| r.opaque()) { Vec::new() } else { rgba.iter().map(|r| Some(r.alpha())).collect() };
+    Ok((images, alphas))
 }
 
 /// A mask image of `size`: `true` where masked (opaque white).
@@ -97,7 +109,7 @@ pub fn guides(v: &JsValue, exemplars: usize, output: (usize, usize)) -> Result<O
         return Err(error(&format!("guides must be an object {{ exemplar, target, weight }}, got {}.", type_name(v))));
     }
     let get = |k: &str| read::get(v, k, "guides");
-    let ex = images(&get("exemplar")?, "exemplar guide")?;
+    let (ex, _) = images(&get("exemplar")?, "exemplar guide")?;
     if ex.len() != exemplars {
         return Err(error(&format!("guides.exemplar holds {} images for {exemplars} exemplars.", ex.len())));
     }

@@ -36,8 +36,9 @@ pub fn synthesize_texture(image: JsValue, opts: JsValue, on_progress: JsValue) -
 
 /// `synthesizeTexture`'s arguments read.
 pub(super) fn texture_args(image: JsValue, opts: JsValue) -> Result<(Vec<Image>, raster::TextureOptions), JsValue> {
-    let exemplars = masks::images(&image, "image")?;
+    let (exemplars, alphas) = masks::images(&image, "image")?;
     let mut o: raster::TextureOptions = options(&opts, "texture options", &TEXTURE_KEYS, &SIZE)?;
+    o.alphas = alphas;
     if !(opts.is_undefined() || opts.is_null()) {
         let sizes: Vec<(usize, usize)> = exemplars.iter().map(|e| (e.width, e.height)).collect();
         o.sample_masks = masks::sample_masks(&read::get(&opts, "sampleMask", "texture options")?, &sizes)?;

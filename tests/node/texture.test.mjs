@@ -98,3 +98,38 @@ test('seamlessTile: E-TFMCM and synthesis tiles with their figures, clear errors
   assert.throws(() => ps.seamlessTile(img, { maxCount: 3 }), /unknown option `maxCount`/);
   assert.throws(() => ps.seamlessTile({ width: 4, height: 4, data: new Uint8Array(64) }, {}), /at least 8/);
 });
+
+// Line art on a clear ground, as a person exports it from a drawing program: rings of
+// ink 2 px wide, antialiased, on transparent white. A PNG round trip, then the defaults.
+test('a picture on a transparent ground keeps its transparency in tiles and textures', () => {
+  const side = 96;
+  const data = new Uint8Array(side * side * 4);
+  let s = 7;
+  const rand = () => ((s = (s * 1103515245 + 12345) % 2147483648) / 2147483648);
+  const rings = Array.from({ length: 10 }, () => [rand() * side, rand() * side, 5 + 5 * rand()]);
+  for (let i = 0; i < side * side; i++) {
+    const [x, y] = [(i % side) + 0.5, Math.floor(i / side) + 0.5];
+    const ink = Math.max(0, ...rings.map(([cx, cy, r]) => Math.min(1, 1.5 - Math.abs(Math.hypot(x - cx, y - cy) - r))));
+    data.set(ink > 0 ? [20, 30, 90, Math.round(ink * 255)] : [255, 255, 255, 0], i * 4);
+  }
+  const art = ps.decodeImage(ps.encodePng({ width: side, height: side, data }));
+  const clear = (img) => {
+    let n = 0;
+    for (let i = 3; i < img.data.length; i += 4) n += img.data[i] === 0;
+    return n / (img.data.length / 4);
+  };
+  const ground = clear(art);
+  assert.ok(ground > 0.8, `${ground}`);
+  const tile = ps.seamlessTile(art, { width: 128, height: 128 });
+  const texture = ps.synthesizeTexture(art, { width: 160, height: 128 });
+  for (const [what, out] of [['tile', tile.image], ['texture', texture]]) {
+    // Before, every pixel came back opaque (the clear ground black).
+    assert.ok(Math.abs(clear(out) - ground) < 0.08, `${what}: ${clear(out)} clear against ${ground}`);
+    for (let i = 0; i < out.data.length; i += 4) {
+      if (out.data[i + 3] === 255) assert.deepEqual([...out.data.subarray(i, i + 3)], [20, 30, 90], `${what} at ${i / 4}`);
+    }
+  }
+  assert.ok(!tile.warnings.join(' ').includes('transparency'), tile.warnings.join(' '));
+  // E-TFMCM reads colours only, and says so.
+  assert.match(ps.seamlessTile(art, { method: 'etfmcm' }).warnings.join(' '), /transparency/);
+});

@@ -63,6 +63,9 @@ pub struct Job {
     pub(crate) target: Option<Vec<Vec<f32>>>,
     /// How the exemplar's pixels carry its opacity (`Constraints::alpha`).
     pub(crate) opacity: Opacity,
+    /// Exemplar 0's alpha when it is not opaque everywhere: each output pixel takes the
+    /// alpha of the pixel it copies (`colour_rows`).
+    shown_alpha: Option<Vec<u8>>,
 }
 
 /// How the coarsest level starts when it is not grown from noise.
@@ -178,6 +181,7 @@ impl Job {
             }
         }
         let alpha = c.alpha.as_deref().filter(|a| a.iter().any(|&v| v != a[0]));
+        let shown_alpha = c.alpha.clone().filter(|a| a.iter().any(|&v| v != 255));
         let opacity = Opacity::of(alpha.is_some(), guide.is_some());
         let exs: Vec<Exemplar> = exemplars
             .iter()
@@ -229,6 +233,7 @@ impl Job {
             known,
             target,
             opacity,
+            shown_alpha,
         })
     }
 
@@ -476,9 +481,12 @@ impl Job {
         for r in 0..rows {
             let y = (first + r) % height;
             for x in 0..width {
-                let c = self.mix.colour(0, src, r * width + x, x, y);
-                data.extend(c[..3].iter().map(|&v| v.round().clamp(0.0, 255.0) as u8));
-                data.push(255);
+                let i = r * width + x;
+                let c = self.mix.colour(0, src, i, x, y);
+                let a = self.shown_alpha.as_ref().map_or(255, |a| a[src[0][i] as usize]);
+                let c = self.opacity.shown([c[0], c[1], c[2]], a as f32);
+                data.extend(c.iter().map(|&v| v.round().clamp(0.0, 255.0) as u8));
+                data.push(a);
             }
         }
         data

@@ -32,7 +32,7 @@ mod job;
 mod lanes;
 mod mask;
 mod mixer;
-mod opacity;
+pub(crate) mod opacity;
 mod pass;
 mod pinned;
 mod reuse;
@@ -102,7 +102,9 @@ pub struct Constraints {
     /// tile's band mended); see `synthesize`.
     pub known: Option<Vec<bool>>,
     pub guide: Option<Guide>,
-    /// Exemplar 0's alpha, one value per pixel (a fill of an RGBA image). Where it
+    /// Exemplar 0's alpha, one value per pixel (a fill of an RGBA image, a synthesis
+    /// from exemplars with transparency). The output takes the alpha of the pixel each
+    /// of its pixels copies (`Job::colour_rows`). Where it
     /// varies, candidates are compared by it too (`opacity`): in the fourth lane, a
     /// fully transparent pixel's colour counting as black; or, when a guide holds that
     /// lane (it says where the output should be what, and is kept whole), by colours

@@ -67,6 +67,16 @@ impl Opacity {
         }
     }
 
+    /// The colour shown for a pixel whose compared colour is `c` and alpha `a`: the
+    /// premultiplication undone (a transparent pixel black).
+    #[inline]
+    pub fn shown(self, c: [f32; 3], a: f32) -> [f32; 3] {
+        match self {
+            Opacity::Premultiplied if a > 0.0 => c.map(|v| v * (255.0 / a)),
+            _ => c,
+        }
+    }
+
     /// An RGBA pixel (0-255 each) as the planes hold it, the fourth lane 0 unless alpha
     /// goes there (a guide's lane is the caller's).
     #[inline]
