@@ -63,6 +63,18 @@ PICKS=(
   "plaster  $SH3D/roughcast.jpg"
 )
 
+COLOBOT=$PKGS/colobot-common-textures/usr/share/games/colobot/textures
+# Soft stochastic exemplars (issue 25's clouds and smoke; no smoke photograph was found in
+# the packages: their smoke is sprites with alpha): only the 128x128 central square, to
+# $OUT25S, for the tile and plain-synthesis measures.
+OUT25S=/tmp/peer25/soft
+SOFT=(
+  "clouds   $STK/../tracks/lighthouse/dynamic_clouds.png"
+  "mist     $COLOBOT/cloud02.png"
+  "wisps    $COLOBOT/cloud04.png"
+  "fire     $COLOBOT/cloud05.png"
+)
+
 [ -f "$PKG_NODE" ] || { echo "missing $PKG_NODE: build the package first" >&2; exit 1; }
 command -v node >/dev/null || { echo "node not found" >&2; exit 1; }
 
@@ -100,12 +112,13 @@ if [ ! -f "$JAR/.extracted" ]; then
 fi
 
 # ---------------------------------------------------------------- convert, masks
-mkdir -p "$OUT30" "$OUT25"
-printf '%s\n' "${PICKS[@]}" | PKG_NODE=$PKG_NODE OUT30=$OUT30 OUT25=$OUT25 node --input-type=module -e '
+mkdir -p "$OUT30" "$OUT25" "$OUT25S"
+{ printf '%s\n' "${PICKS[@]}"; printf '%s soft\n' "${SOFT[@]}"; } |
+  PKG_NODE=$PKG_NODE OUT30=$OUT30 OUT25=$OUT25 OUT25S=$OUT25S node --input-type=module -e '
 import { readFileSync, writeFileSync } from "node:fs";
 import { createHash } from "node:crypto";
 const ps = await import(process.env.PKG_NODE);
-const { OUT30, OUT25 } = process.env;
+const { OUT30, OUT25, OUT25S } = process.env;
 const LONG = 224, TILE = 128, MARGIN = 12;
 
 // Separable resampling with a tent filter, widened by the shrink factor (antialiased).
@@ -179,7 +192,7 @@ const sha = (b) => createHash("sha256").update(b).digest("hex").slice(0, 12);
 const lines = readFileSync(0, "utf8").trim().split("\n");
 console.log("name     source                                            src size   out      hole  ellipses margin sha(png/hole)");
 for (const line of lines) {
-  const [name, path] = line.trim().split(/\s+/);
+  const [name, path, soft] = line.trim().split(/\s+/);
   const bytes = readFileSync(path), img = ps.decodeImage(bytes);
   const cw = Math.round(img.width * 0.85), chh = Math.round(img.height * 0.85);
   const x0 = (img.width - cw) >> 1, y0 = (img.height - chh) >> 1;
@@ -187,6 +200,12 @@ for (const line of lines) {
   const out = cropScale(img, x0, y0, cw, chh, dw, dh);
   const s = Math.min(cw, chh);
   const tile = cropScale(img, x0 + ((cw - s) >> 1), y0 + ((chh - s) >> 1), s, s, TILE, TILE);
+  if (soft) {
+    const tilePng = ps.encodePng(tile);
+    writeFileSync(`${OUT25S}/${name}.png`, tilePng);
+    console.log(`${name.padEnd(8)} ${path.replace(/^.*\/(games|data)\//, "").padEnd(49)} ${(img.width + "x" + img.height).padEnd(10)} soft: 128x128 only ${sha(tilePng)}`);
+    continue;
+  }
   const { m, share, n, margin } = hole(name, dw, dh);
   const hd = new Uint8ClampedArray(dw * dh * 4);
   for (let i = 0; i < dw * dh; i++) { const v = m[i] ? 255 : 0; hd[4 * i] = hd[4 * i + 1] = hd[4 * i + 2] = v; hd[4 * i + 3] = 255; }
@@ -197,5 +216,6 @@ for (const line of lines) {
   const short = path.replace(/^\/tmp\/heldout\/(pkgs\/|jar\/)/, "").replace(/usr\/share\/games\/[^/]+\/(data\/)?|com\/eteks\/sweethome3d\/io\/resources\//, "").replace(/^textures\//, "sweethome3d.jar:textures/");
   console.log(`${name.padEnd(8)} ${short.padEnd(49)} ${(img.width + "x" + img.height).padEnd(10)} ${(dw + "x" + dh).padEnd(8)} ${(100 * share).toFixed(1).padStart(4)}% ${String(n).padStart(5)} ${String(margin).padStart(8)}   ${sha(png)}/${sha(holePng)}`);
 }
-console.log(`wrote ${lines.length} x (NAME.png, NAME.hole.png) to ${OUT30}, ${lines.length} x NAME.png (128x128) to ${OUT25}`);
+const soft = lines.filter((l) => l.trim().endsWith(" soft")).length, n = lines.length - soft;
+console.log(`wrote ${n} x (NAME.png, NAME.hole.png) to ${OUT30}, ${n} x NAME.png (128x128) to ${OUT25}, ${soft} soft ones to ${OUT25S}`);
 '
