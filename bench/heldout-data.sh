@@ -10,7 +10,8 @@
 # 2. Takes the material photographs listed in PICKS (explicit paths, one word a name), crops the
 #    central 85%, scales it (separable tent filter, antialiased when shrinking) so the longer side
 #    is 224 px, and writes /tmp/peer30/data/NAME.png; the central square of the same crop scaled
-#    to 128x128 goes to /tmp/peer25/data/NAME.png.
+#    to 128x128 goes to /tmp/peer25/data/NAME.png. The soft stochastic exemplars of SOFT
+#    (clouds, mist, wisps, fire-smoke) get only that square, in /tmp/peer25/soft/NAME.png.
 # 3. Writes /tmp/peer30/data/NAME.hole.png, the same size: opaque white in the hole, opaque black
 #    elsewhere. The hole is the union of 3-4 overlapping ellipses drawn from a PRNG seeded by the
 #    name (FNV-1a -> mulberry32), scaled to cover 8.5-10.5% (checked: 8-11%) of the pixels and

@@ -8,7 +8,9 @@
 //! a low score. Beside it, the same measure in windows of the exemplar's size
 //! (`energy::repetition_fair`, shifts of 24 pixels or more, as `tile_quality` measures
 //! tiles), against the exemplar's own: how much more the output repeats than its
-//! exemplar, with the output's size taken out.
+//! exemplar, with the output's size taken out. With `PEER` (texture-synthesis 0.8.3's
+//! CLI), its outputs of the same exemplars, sizes and seeds are measured alike (its time
+//! includes its process's start).
 #[path = "support/textures.rs"]
 mod textures;
 use patternsynth::raster::codec::encode_png;
@@ -29,19 +31,26 @@ fn main() {
         Ok("scanline") => Schedule::Scanline,
         _ => Schedule::Auto,
     };
+    // PEER=path of texture-synthesis 0.8.3's CLI: its outputs of the same exemplars,
+    // sizes and seeds, measured alike on the line below ours.
+    let peer = std::env::var("PEER").ok();
     std::fs::create_dir_all("out/large").unwrap();
     let (mut worst, mut energy_sum) = (f64::INFINITY, 0.0);
-    for name in &names {
+    for (name, by_peer) in names.iter().flat_map(|n| [(n, false)].into_iter().chain(peer.as_ref().map(|_| (n, true)))) {
         let ex = textures::load(name);
         let (mut rep, mut energy, mut colour, mut fair, mut ms) = (0.0, 0.0, 0.0, 0.0, Vec::new());
         for seed in 1..=seeds {
             let o = TextureOptions { width: size, height: size, seed, levels, schedule, ..Default::default() };
             let t = Instant::now();
-            let out = synthesize_texture(&ex, &o, &mut Silent).unwrap();
+            let out = match (&peer, by_peer) {
+                (Some(cli), true) => textures::peer(cli, name, size, seed, false),
+                _ => synthesize_texture(&ex, &o, &mut Silent).unwrap(),
+            };
             ms.push(t.elapsed().as_secs_f64() * 1e3);
             if seed == 1 {
                 let name = name.rsplit('/').next().unwrap_or(name).trim_end_matches(".png");
-                std::fs::write(format!("out/large/{name}-{size}.png"), encode_png(size, size, &out.data).unwrap())
+                let who = if by_peer { "-peer" } else { "" };
+                std::fs::write(format!("out/large/{name}-{size}{who}.png"), encode_png(size, size, &out.data).unwrap())
                     .unwrap();
             }
             let out = Image::from_rgba8(out.width, out.height, &out.data).unwrap();
@@ -55,12 +64,15 @@ fn main() {
         let own_fair = repetition(&ex, 24.min(ex.width / 4), 1);
         ms.sort_by(f64::total_cmp);
         let own = repetition(&ex, 48, 1);
+        let name = if by_peer { "  (peer)" } else { name.rsplit('/').next().unwrap_or(name) };
         println!(
             "{name:7} repetition {rep:.3} (exemplar {own:.3}), in exemplar-sized crops {fair:.3} (exemplar {own_fair:.3})  energy {energy:.2}  colour {colour:.3}  {:.0} ms",
             ms[ms.len() / 2]
         );
-        worst = worst.min(fair - own_fair).min(rep - own);
-        energy_sum += energy;
+        if !by_peer {
+            worst = worst.min(fair - own_fair).min(rep - own);
+            energy_sum += energy;
+        }
     }
     println!(
         "worst repetition below the exemplar's own (whole or in exemplar-sized crops) {worst:+.3}, mean energy {:.2}",

@@ -71,7 +71,7 @@ fn main() {
                         let t = seamless_tile(&img, &opts, &mut Silent).unwrap();
                         (t.image, t.seam_score)
                     }
-                    None => peer_tile(peer.as_deref().unwrap(), name, &stem, img.width, seed),
+                    None => peer_tile(peer.as_deref().unwrap(), name, img.width, seed),
                 };
                 let out = image(&tile);
                 sum[0] += patch_energy(&out, &ex, 300, (0, out.height), 1);
@@ -120,30 +120,9 @@ fn main() {
 
 const PEER_LABEL: &str = "texture-synthesis --tiling";
 
-/// The peer's tile of `name` (a PNG's path, or a fixture, written out first) at `side`,
-/// and its seam score by our measure.
-fn peer_tile(cli: &str, name: &str, stem: &str, side: usize, seed: u64) -> (patternsynth::raster::Rgba, f64) {
-    let dir = std::env::temp_dir().join("tile_quality_peer");
-    std::fs::create_dir_all(&dir).unwrap();
-    let input = if name.contains('/') {
-        std::path::PathBuf::from(name)
-    } else {
-        let r = textures::rgba(name);
-        let f = dir.join(format!("{stem}.png"));
-        std::fs::write(&f, patternsynth::raster::codec::encode_png(r.width, r.height, &r.data).unwrap()).unwrap();
-        f
-    };
-    let out = dir.join(format!("{stem}.s{seed}.png"));
-    let status = std::process::Command::new(cli)
-        .args(["--no-progress", "-o"])
-        .arg(&out)
-        .args(["--threads", "1", "--seed", &seed.to_string(), "--tiling", "--out-size", &side.to_string(), "generate"])
-        .arg(&input)
-        .status()
-        .expect("the peer runs");
-    assert!(status.success(), "the peer failed on {name}");
-    let tile = patternsynth::raster::codec::decode_image(&std::fs::read(&out).unwrap()).unwrap();
-    let rgb: Vec<[u8; 3]> = tile.data.chunks(4).map(|p| [p[0], p[1], p[2]]).collect();
-    let seam = patternsynth::seamless::measure::seam_score(&rgb, tile.width, tile.height);
+/// The peer's tile of `name` at `side`, and its seam score by our measure.
+fn peer_tile(cli: &str, name: &str, side: usize, seed: u64) -> (patternsynth::raster::Rgba, f64) {
+    let tile = textures::peer(cli, name, side, seed, true);
+    let seam = patternsynth::seamless::measure::seam_score(&tile.rgb(), tile.width, tile.height);
     (tile, seam)
 }

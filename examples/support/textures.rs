@@ -24,10 +24,18 @@ pub fn load(name: &str) -> Image {
     Image::from_rgba8(d.width, d.height, &d.data).unwrap()
 }
 
-/// The fixtures a probe's argument names: one, or `all`.
+/// The fixtures a probe's argument names: one, `all`, or every PNG in a folder.
 pub fn named(arg: &str) -> Vec<String> {
     if arg == "all" {
         ALL.iter().map(|s| s.to_string()).collect()
+    } else if std::path::Path::new(arg).is_dir() {
+        let mut pngs: Vec<String> = std::fs::read_dir(arg)
+            .unwrap()
+            .filter_map(|e| e.ok().map(|e| e.path().to_string_lossy().into_owned()))
+            .filter(|p| p.ends_with(".png"))
+            .collect();
+        pngs.sort();
+        pngs
     } else {
         vec![arg.to_string()]
     }
@@ -54,4 +62,30 @@ pub fn save_repeated(tile: &Rgba, path: &str) {
         }
     }
     std::fs::write(path, patternsynth::raster::codec::encode_png(2 * w, 2 * h, &rep).unwrap()).unwrap();
+}
+
+/// texture-synthesis 0.8.3's output (its CLI at `cli`, one thread) from `name` (a PNG's
+/// path, or a fixture, written out first) at `size` x `size`, seeded, a tile with
+/// `tiling`: the peer run on the same file in the same script.
+pub fn peer(cli: &str, name: &str, size: usize, seed: u64, tiling: bool) -> Rgba {
+    let dir = std::env::temp_dir().join("patternsynth_peer");
+    std::fs::create_dir_all(&dir).unwrap();
+    let stem = name.rsplit('/').next().unwrap_or(name).trim_end_matches(".png");
+    let input = if name.contains('/') {
+        std::path::PathBuf::from(name)
+    } else {
+        let r = rgba(name);
+        let f = dir.join(format!("{stem}.png"));
+        std::fs::write(&f, patternsynth::raster::codec::encode_png(r.width, r.height, &r.data).unwrap()).unwrap();
+        f
+    };
+    let out = dir.join(format!("{stem}.{size}.{}s{seed}.png", if tiling { "t" } else { "" }));
+    let mut cmd = std::process::Command::new(cli);
+    cmd.args(["--no-progress", "-o"]).arg(&out).args(["--threads", "1", "--seed", &seed.to_string()]);
+    if tiling {
+        cmd.arg("--tiling");
+    }
+    let status = cmd.args(["--out-size", &size.to_string(), "generate"]).arg(&input).status().expect("the peer runs");
+    assert!(status.success(), "the peer failed on {name}");
+    decode_image(&std::fs::read(&out).unwrap()).unwrap()
 }

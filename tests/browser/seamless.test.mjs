@@ -137,6 +137,32 @@ test('a 2048 x 2048 photograph is scaled to fit with a message, and its tile is 
   await page.selectOption('#seam-size', '');
 });
 
+test('line art on a transparent ground gives a tile on a transparent ground', async () => {
+  // Rings of ink 2 px wide on a clear ground, as a drawing program exports them.
+  const side = 128, data = new Uint8ClampedArray(side * side * 4);
+  const rings = Array.from({ length: 14 }, (_, k) => [(k * 37) % side, (k * 71 + 20) % side, 5 + (k % 5)]);
+  for (let i = 0; i < side * side; i++) {
+    const [x, y] = [(i % side) + 0.5, Math.floor(i / side) + 0.5];
+    const ink = Math.max(0, ...rings.map(([cx, cy, r]) => Math.min(1, 1.5 - Math.abs(Math.hypot(x - cx, y - cy) - r))));
+    data.set(ink > 0 ? [20, 30, 90, Math.round(ink * 255)] : [255, 255, 255, 0], i * 4);
+  }
+  const png = Buffer.from(encodePng({ width: side, height: side, data }));
+  await page.setInputFiles('#seam-file', { name: 'rings.png', mimeType: 'image/png', buffer: png });
+  await page.waitForFunction(() => document.querySelector('#seam-source').width === 128);
+  await page.selectOption('#seam-method', 'synthesis');
+  await run();
+  const [download] = await Promise.all([page.waitForEvent('download'), page.click('#seam-download')]);
+  const tile = decodeImage(readFileSync(await download.path()));
+  let clear = 0, inked = 0;
+  for (let i = 3; i < tile.data.length; i += 4) { clear += tile.data[i] === 0; inked += tile.data[i] >= 128; }
+  const n = tile.width * tile.height;
+  // Before, the tile came back opaque, its ground black.
+  assert.ok(clear / n > 0.75, `clear ${clear / n}`);
+  assert.ok(inked / n > 0.02, `inked ${inked / n}`);
+  mkdirSync('out', { recursive: true });
+  await page.screenshot({ path: 'out/seamless-clear.png', fullPage: true });
+});
+
 test('a non-square image is cropped with a message; not an image is refused', async () => {
   const data = new Uint8ClampedArray(90 * 40 * 4);
   for (let i = 0; i < 90 * 40; i++) data.set([(i * 37) % 256, (i * 11) % 256, 90, 255], 4 * i);
