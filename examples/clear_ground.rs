@@ -2,7 +2,7 @@
 //! of the output is clear and how much inked against the picture, over seeds 1-3, and
 //! each tile repeated 2 x 2 over white and over a checkerboard in `out/clear/`.
 //!
-//!   cargo run --release --features test-support --example clear_ground -- [art.png ...]
+//!   cargo run --release --example clear_ground -- [art.png ...]
 //!
 //! Without arguments, generated line art (wobbly rings of ink on a clear ground).
 
