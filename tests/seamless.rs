@@ -499,3 +499,26 @@ fn line_art_on_a_clear_ground_stays_on_a_clear_ground() {
     let paper = seamless_tile(&art, &o, &mut Silent).unwrap();
     assert!(paper.warnings.iter().any(|w| w.contains("transparency")), "{:?}", paper.warnings);
 }
+
+/// A channel of one level has a max count difference of 0, the lowest there is: an
+/// orange fire whose blue is all 0 was generated from its blue, and its E-TFMCM tile
+/// came back one flat colour. The channel chosen carries the picture's layout.
+#[test]
+fn etfmcm_generates_a_channel_that_varies() {
+    let mut img = crop(&fixture("wood"), 64, 64);
+    img.data.chunks_exact_mut(4).for_each(|p| p[2] = 0);
+    for refine in [false, true] {
+        let o = SeamlessOptions { method: Method::Etfmcm, refine, ..Default::default() };
+        let t = seamless_tile(&img, &o, &mut Silent).unwrap();
+        let colours: std::collections::HashSet<&[u8]> = t.image.data.chunks_exact(4).collect();
+        println!(
+            "refine {refine}: channel {:?}, {} colours, restoration {:.3}",
+            t.channel,
+            colours.len(),
+            t.restoration_rate
+        );
+        assert_ne!(t.channel, Some('b'));
+        assert!(colours.len() > 200, "refine {refine}: {} colours", colours.len());
+        assert!(t.restoration_rate > 0.8, "refine {refine}: restoration {:.3}", t.restoration_rate);
+    }
+}

@@ -180,15 +180,9 @@ pub fn seamless_tile(input: &Rgba, opts: &SeamlessOptions, progress: &mut dyn Pr
         }
         Method::Mend => unreachable!("made by `mended`"),
         Method::Etfmcm | Method::Tfmcm => {
-            // The channel whose histogram is least crowded.
             let channels: Vec<Grey> =
                 (0..3).map(|c| Grey { width: side, height: side, data: rgb.iter().map(|p| p[c]).collect() }).collect();
-            let c = (0..3)
-                .min_by(|&a, &b| {
-                    max_count_difference(&channels[a].histogram())
-                        .total_cmp(&max_count_difference(&channels[b].histogram()))
-                })
-                .unwrap();
+            let c = layout_channel(&channels);
             let conv = convert(&channels[c], opts.max_count_difference, opts.seed);
             let rule = if opts.method == Method::Etfmcm { Rule::Etfmcm } else { Rule::Tfmcm };
             let (grey, decisions) = {
@@ -217,6 +211,23 @@ pub fn seamless_tile(input: &Rgba, opts: &SeamlessOptions, progress: &mut dyn Pr
     let restoration_rate = restoration_rgb(&rgb, &colours);
     let seam_score = seam_score(&colours, out.width, out.height);
     Ok(SeamlessResult { image: out, restoration_rate, seam_score, warnings, channel, count_difference, decisions })
+}
+
+/// The channel E-TFMCM generates: the one whose histogram is least crowded (the
+/// lowest max count difference, SPEC 3), among those that carry the picture's layout.
+/// The paper is silent on a channel of one level, whose max count difference is 0 (its
+/// one level's count less the mean of one): an orange fire, its blue all 0, was made
+/// from its blue, and the tile came back one flat colour. So a channel counts only if
+/// it has at least a quarter as many levels present as the richest channel (and more
+/// than one, unless every channel has one).
+fn layout_channel(channels: &[Grey]) -> usize {
+    let hists: Vec<[u32; 256]> = channels.iter().map(Grey::histogram).collect();
+    let levels: Vec<usize> = hists.iter().map(|h| h.iter().filter(|&&n| n > 0).count()).collect();
+    let richest = levels.iter().copied().max().unwrap_or(0);
+    (0..channels.len())
+        .filter(|&c| 4 * levels[c] >= richest && (levels[c] > 1 || richest == 1))
+        .min_by(|&a, &b| max_count_difference(&hists[a]).total_cmp(&max_count_difference(&hists[b])))
+        .unwrap_or(0)
 }
 
 /// Method 'mend': the image itself, any size, a band around its wrap re-made.
