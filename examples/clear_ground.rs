@@ -12,28 +12,9 @@ use patternsynth::seamless::measure::seam_score;
 use patternsynth::seamless::{seamless_tile, SeamlessOptions};
 use patternsynth::Silent;
 
-fn line_art(side: usize, rings: usize, seed: u64) -> Rgba {
-    let mut rng = patternsynth::rng::Rng::new(seed);
-    let mut alpha = vec![0f64; side * side];
-    for _ in 0..rings {
-        let (cx, cy) = (rng.next_f64() * side as f64, rng.next_f64() * side as f64);
-        let r = 5.0 + 5.0 * rng.next_f64();
-        let (wobble, phase) = (0.8 + 0.8 * rng.next_f64(), rng.next_f64() * 6.3);
-        for y in 0..side {
-            for x in 0..side {
-                let (dx, dy) = (x as f64 + 0.5 - cx, y as f64 + 0.5 - cy);
-                let radius = r + wobble * (3.0 * dy.atan2(dx) + phase).sin();
-                let ink = (1.5 - ((dx * dx + dy * dy).sqrt() - radius).abs()).clamp(0.0, 1.0);
-                alpha[y * side + x] = alpha[y * side + x].max(ink);
-            }
-        }
-    }
-    let data = alpha
-        .iter()
-        .flat_map(|&a| if a > 0.0 { [20, 30, 90, (a * 255.0).round() as u8] } else { [255, 255, 255, 0] })
-        .collect();
-    Rgba { width: side, height: side, data }
-}
+#[path = "support/line_art.rs"]
+mod line_art;
+use line_art::line_art;
 
 fn share(img: &Rgba, f: impl Fn(u8) -> bool) -> f64 {
     img.data.chunks_exact(4).filter(|p| f(p[3])).count() as f64 / (img.width * img.height) as f64

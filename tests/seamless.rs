@@ -397,30 +397,9 @@ fn a_tile_keeps_the_photograph_s_make_up() {
     }
 }
 
-/// Line art on a clear ground, as a person exports it: `rings` wobbly rings of dark ink,
-/// 2 pixels wide and antialiased, on a transparent white ground, `side` on a side.
-fn line_art(side: usize, rings: usize, seed: u64) -> Rgba {
-    let mut rng = patternsynth::rng::Rng::new(seed);
-    let mut alpha = vec![0f64; side * side];
-    for _ in 0..rings {
-        let (cx, cy) = (rng.next_f64() * side as f64, rng.next_f64() * side as f64);
-        let r = 5.0 + 5.0 * rng.next_f64();
-        let (wobble, phase) = (0.8 + 0.8 * rng.next_f64(), rng.next_f64() * 6.3);
-        for y in 0..side {
-            for x in 0..side {
-                let (dx, dy) = (x as f64 + 0.5 - cx, y as f64 + 0.5 - cy);
-                let radius = r + wobble * (3.0 * dy.atan2(dx) + phase).sin();
-                let ink = (1.5 - ((dx * dx + dy * dy).sqrt() - radius).abs()).clamp(0.0, 1.0);
-                alpha[y * side + x] = alpha[y * side + x].max(ink);
-            }
-        }
-    }
-    let data = alpha
-        .iter()
-        .flat_map(|&a| if a > 0.0 { [20, 30, 90, (a * 255.0).round() as u8] } else { [255, 255, 255, 0] })
-        .collect();
-    Rgba { width: side, height: side, data }
-}
+#[path = "../examples/support/line_art.rs"]
+mod line_art;
+use line_art::line_art;
 
 /// Each pixel premultiplied by its alpha (what it shows over any ground), with the alpha.
 fn shown(img: &Rgba) -> Vec<[u8; 4]> {
@@ -450,13 +429,8 @@ fn line_art_on_a_clear_ground_stays_on_a_clear_ground() {
         let tile = seamless_tile(&art, &SeamlessOptions { seed, ..Default::default() }, &mut Silent).unwrap();
         let texture = {
             let ex = Image::from_rgba8(128, 128, &art.data).unwrap();
-            let o = TextureOptions {
-                width: 192,
-                height: 160,
-                seed,
-                alphas: vec![Some(art.data.chunks_exact(4).map(|p| p[3]).collect())],
-                ..Default::default()
-            };
+            let o =
+                TextureOptions { width: 192, height: 160, seed, alphas: vec![Some(art.alpha())], ..Default::default() };
             synthesize_texture(&ex, &o, &mut Silent).unwrap()
         };
         assert!(tile.warnings.is_empty(), "{:?}", tile.warnings);
@@ -466,7 +440,7 @@ fn line_art_on_a_clear_ground_stays_on_a_clear_ground() {
             assert!((c - clear).abs() < 0.08, "seed {seed} {what}: clear {c:.3} against {clear:.3}");
             // One seed may draw its rings sparser or denser (a tile of 128 holds a dozen);
             // none is empty, and over seeds the ink is the drawing's.
-            assert!(i > 0.4 * inked, "seed {seed} {what}: inked {i:.3} against {inked:.3}");
+            assert!(i > 0.3 * inked, "seed {seed} {what}: inked {i:.3} against {inked:.3}");
             ink[k] += i / inked / 3.0;
             // Every pixel is one of the drawing's, as it shows: no ink made up, no ground
             // turned opaque.
@@ -520,5 +494,41 @@ fn etfmcm_generates_a_channel_that_varies() {
         assert_ne!(t.channel, Some('b'));
         assert!(colours.len() > 200, "refine {refine}: {} colours", colours.len());
         assert!(t.restoration_rate > 0.8, "refine {refine}: restoration {:.3}", t.restoration_rate);
+    }
+}
+
+/// Each output pixel shows as the exemplar pixel its layout names, alpha and colour
+/// together, on a many-coloured photograph with an alpha that varies (a single ink colour
+/// could not tell a pixel's alpha read from the wrong source).
+#[test]
+fn a_synthesis_copies_each_pixel_s_alpha_with_its_colour() {
+    use patternsynth::raster::{synthesize_textures, Layout};
+    let mut img = crop(&fixture("wood"), 64, 64);
+    for (i, p) in img.data.chunks_exact_mut(4).enumerate() {
+        let (x, y) = (i % 64, i / 64);
+        p[3] = if (x / 8 + y / 8) % 3 == 0 { 0 } else { (120 + 2 * x + y) as u8 };
+    }
+    let ex = Image::from_rgba8(64, 64, &img.data).unwrap();
+    let shown = |p: &[u8]| if p[3] == 0 { [0, 0, 0, 0] } else { [p[0], p[1], p[2], p[3]] };
+    for tileable in [false, true] {
+        let o = TextureOptions {
+            width: 96,
+            height: 80,
+            seed: 2,
+            tileable,
+            keep_layout: true,
+            alphas: vec![Some(img.alpha())],
+            ..Default::default()
+        };
+        let s = synthesize_textures(std::slice::from_ref(&ex), &o, &mut Silent).unwrap();
+        let layout = s.layout.unwrap();
+        for (i, out) in s.image.data.chunks_exact(4).enumerate() {
+            let (_, x, y) = Layout::unpack(layout.data[i]);
+            let want = shown(&img.data[(y * 64 + x) * 4..][..4]);
+            assert_eq!(shown(out), want, "tileable {tileable}: pixel {i} copies ({x}, {y})");
+        }
+        let clear = s.image.data.chunks_exact(4).filter(|p| p[3] == 0).count() as f64 / (96.0 * 80.0);
+        println!("tileable {tileable}: clear {clear:.3} (the photograph's 0.333)");
+        assert!((0.2..0.45).contains(&clear), "tileable {tileable}: clear {clear:.3}");
     }
 }

@@ -178,12 +178,15 @@ export interface SeamlessOptions {
 }
 export interface SeamlessResult {
   image: RgbaImage;
-  /** The paper's restoration rate: 1 is the exemplar's colour histogram exactly. */
+  /** The paper's restoration rate: 1 is the exemplar's colour histogram exactly (of an
+   *  image with transparency, as it shows over white). */
   restorationRate: number;
   /** Difference across the wrap-around over the difference across the 4 parallel lines on
-   *  each side of it: about 1 is seamless; a photograph repeated as it is scores 2-8. */
+   *  each side of it: about 1 is seamless; a photograph repeated as it is scores 2-8 (of
+   *  an image with transparency, as it shows over white). */
   seamScore: number;
-  /** What was done to make the input square and a power of two. */
+  /** What was done to the input: cropped square or scaled, and why; its transparency not
+   *  read (E-TFMCM and TFMCM, whose tile is the image as it shows over white). */
   warnings: string[];
   channel: 'r' | 'g' | 'b' | null;
   countDifference: [number, number] | null;

@@ -237,7 +237,7 @@ impl Fill {
                 known: Some(self.known.clone()),
                 guide: None,
                 // Where the image's opacity varies, it is matched too (`synthesis::opacity`).
-                alpha: image.alpha_varies().then(|| image.data.chunks_exact(4).map(|p| p[3]).collect()),
+                alphas: vec![image.alpha_varies().then(|| image.alpha())],
                 kept_out: Some(self.kept_out),
             },
             ..Params::default()

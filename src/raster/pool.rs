@@ -86,6 +86,21 @@ impl Pool {
         (k, x, y - self.parts[k].0)
     }
 
+    /// One byte per pixel of each exemplar (its alpha; `None`: `fill` throughout) laid out
+    /// as the pool lays their colours, `fill` in the gutters.
+    pub fn lay_out(&self, planes: &[Option<&[u8]>], fill: u8) -> Vec<u8> {
+        let width = self.image.width;
+        let mut out = vec![fill; width * self.image.height];
+        for (&(top, w, h), plane) in self.parts.iter().zip(planes) {
+            if let Some(p) = plane {
+                for y in 0..h {
+                    out[(top + y) * width..][..w].copy_from_slice(&p[y * w..(y + 1) * w]);
+                }
+            }
+        }
+        out
+    }
+
     /// Each exemplar's size.
     pub fn sizes(&self) -> Vec<(usize, usize)> {
         self.parts.iter().map(|&(_, w, h)| (w, h)).collect()

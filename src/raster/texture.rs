@@ -36,10 +36,10 @@ pub struct TextureOptions {
     pub guides: Option<Guides>,
     /// Return the layout too (`Synthesis::layout`).
     pub keep_layout: bool,
-    /// Per exemplar, its alpha (one value per pixel) where any exemplar is not opaque
-    /// everywhere (read by the wasm layer from RGBA): the output keeps the alpha of the
-    /// pixels it copies, and where alpha varies candidates are compared by it too
-    /// (`synthesis::opacity`). Empty: opaque. Not for blends.
+    /// Per exemplar (a blend's A and B), its alpha (one value per pixel) where any
+    /// exemplar is not opaque everywhere (read by the wasm layer from RGBA): the output
+    /// keeps the alpha of the pixels it copies (a blend mixes them), and where alpha
+    /// varies candidates are compared by it too (`synthesis::opacity`). Empty: opaque.
     #[serde(skip)]
     pub alphas: Vec<Option<Vec<u8>>>,
 }
@@ -171,7 +171,7 @@ pub fn pool_job(exemplars: &[Image], opts: &TextureOptions) -> Result<(Job, Pool
     let gutter = pool::gutter(params.levels.unwrap_or(1), opts.neighbourhood);
     let pool = pool::pool(exemplars, &opts.sample_masks, gutter)?;
     params.constraints.allowed = vec![pool.allowed.clone()];
-    params.constraints.alpha = pooled_alpha(exemplars, &opts.alphas, gutter)?;
+    params.constraints.alphas = vec![pooled_alpha(&pool, exemplars, &opts.alphas)?];
     if let Some(g) = &opts.guides {
         if g.exemplars.len() != exemplars.len() {
             return invalid(format!(
@@ -204,24 +204,20 @@ pub fn pool_job(exemplars: &[Image], opts: &TextureOptions) -> Result<(Job, Pool
 
 /// The exemplars' alphas (`TextureOptions::alphas`; a missing one opaque) laid out as
 /// the pool lays their colours, or `None` when every exemplar is opaque.
-fn pooled_alpha(exemplars: &[Image], alphas: &[Option<Vec<u8>>], gutter: usize) -> Result<Option<Vec<u8>>> {
+fn pooled_alpha(pool: &Pool, exemplars: &[Image], alphas: &[Option<Vec<u8>>]) -> Result<Option<Vec<u8>>> {
     if alphas.iter().flatten().all(|a| a.iter().all(|&v| v == 255)) {
         return Ok(None);
     }
     if alphas.len() > exemplars.len() {
         return invalid(format!("{} alpha planes for {} exemplars.", alphas.len(), exemplars.len()));
     }
-    let mut greys = Vec::with_capacity(exemplars.len());
-    for (i, e) in exemplars.iter().enumerate() {
-        let a = alphas.get(i).and_then(|a| a.as_deref());
-        if a.is_some_and(|a| a.len() != e.width * e.height) {
+    for (i, (a, e)) in alphas.iter().zip(exemplars).enumerate() {
+        if a.as_ref().is_some_and(|a| a.len() != e.width * e.height) {
             return invalid(format!("Alpha plane {} does not match its exemplar ({}x{}).", i + 1, e.width, e.height));
         }
-        let opaque = vec![255; e.width * e.height];
-        greys.push(super::synthesis::opacity::grey(a.unwrap_or(&opaque), e.width, e.height));
     }
-    let image = pool::pool(&greys, &[], gutter)?.image;
-    Ok(Some(image.data.iter().map(|p| p[0].round().clamp(0.0, 255.0) as u8).collect()))
+    let planes: Vec<Option<&[u8]>> = alphas.iter().map(|a| a.as_deref()).collect();
+    Ok(Some(pool.lay_out(&planes, 255)))
 }
 
 /// Runs a job in the schedule its parameters ask for.
@@ -263,5 +259,7 @@ pub fn blend_job(a: &Image, b: &Image, opts: &BlendOptions) -> Result<Job> {
     if mu.is_empty() {
         return invalid("The output is empty.");
     }
-    Job::new(Sources::Blend { a, b, mu }, &base.params())
+    let mut params = base.params();
+    params.constraints.alphas = base.alphas.clone();
+    Job::new(Sources::Blend { a, b, mu }, &params)
 }

@@ -95,9 +95,13 @@ impl Default for SeamlessOptions {
 pub struct SeamlessResult {
     #[serde(skip)]
     pub image: Rgba,
+    /// The tile's colour histograms against the image's, and its wrap against the
+    /// lines beside it (`measure`); of an image with transparency, as it shows over
+    /// white.
     pub restoration_rate: f64,
     pub seam_score: f64,
-    /// What was done to the input to make it square and a power of two.
+    /// What was done to the input: cropped square or scaled (and why), its transparency
+    /// not read (E-TFMCM, TFMCM).
     pub warnings: Vec<String>,
     /// E-TFMCM: the channel generated (`"r"`, `"g"` or `"b"`), the max count difference
     /// before and after conversion, and how the points were decided.
@@ -131,12 +135,15 @@ pub fn seamless_tile(input: &Rgba, opts: &SeamlessOptions, progress: &mut dyn Pr
     // tile is its exemplar's size, so the image is scaled to it.
     let synthesis = opts.method == Method::Synthesis;
     let (width, height) = tile_size(opts, input)?;
-    let Prepared { ex_side, side, rgb, alpha } = prepare(input, width.max(height), !synthesis, &mut warnings)?;
+    let Prepared { ex_side, side, mut rgb, alpha } = prepare(input, width.max(height), !synthesis, &mut warnings)?;
     let opaque = alpha.iter().all(|&a| a == 255);
     if !(synthesis || opaque) {
+        // E-TFMCM's statistics are of colours: it is given the picture as it shows.
+        rgb = rgb.iter().zip(&alpha).map(|(&c, &a)| over_white(c, a)).collect();
         warnings.push(
-            "The image has transparency, which E-TFMCM does not read (its statistics are of colours): the tile is \
-             opaque. Method 'synthesis' keeps it."
+            "The image has transparency, which E-TFMCM and TFMCM do not read (their statistics are of colours): \
+             the tile is made of the image as it shows over white, and is opaque. Method 'synthesis' keeps the \
+             transparency."
                 .to_string(),
         );
     }
@@ -202,8 +209,9 @@ pub fn seamless_tile(input: &Rgba, opts: &SeamlessOptions, progress: &mut dyn Pr
     };
     let mut progress = Throttle::new(progress);
     progress.tick(1.0)?;
-    // With transparency, measured as the pixels show over white.
-    let (colours, rgb) = if opaque {
+    // With transparency, measured as the pixels show over white (E-TFMCM's were so
+    // already).
+    let (colours, rgb) = if opaque || !synthesis {
         (out.rgb(), rgb)
     } else {
         (out.rgb_over_white(), rgb.iter().zip(&alpha).map(|(&c, &a)| over_white(c, a)).collect())

@@ -21,13 +21,21 @@ pub fn rgba(v: &JsValue, what: &str) -> Result<Rgba, JsValue> {
     Ok(Rgba { width, height, data })
 }
 
+/// Reads `{ width, height, data }` into an engine image and its alpha (`None` when it
+/// is opaque everywhere).
+pub fn image_and_alpha(v: &JsValue, what: &str) -> Result<(Image, Option<Vec<u8>>), JsValue> {
+    let r = rgba(v, what)?;
+    let image = Image::from_rgba8(r.width, r.height, &r.data).map_err(js_error)?;
+    Ok((image, (!r.opaque()).then(|| r.alpha())))
+}
+
 /// Each image's alpha, or none when all are opaque (`TextureOptions::alphas`).
 type Alphas = Vec<Option<Vec<u8>>>;
 
 /// One image, or an array of them (`what` names them; items are numbered from 1), as
 /// colours and, where any of them is not opaque everywhere, each one's alpha.
 pub fn images(v: &JsValue, what: &str) -> Result<(Vec<Image>, Alphas), JsValue> {
-    let rgba = if is_array(v, what)? {
+    let read = if is_array(v, what)? {
         let a: &js_sys::Array = v.unchecked_ref();
         if a.length() == 0 {
             return Err(error(&format!("The {what} array is empty: pass at least one image.")));
@@ -35,18 +43,14 @@ pub fn images(v: &JsValue, what: &str) -> Result<(Vec<Image>, Alphas), JsValue> 
         if a.length() > 255 {
             return Err(error(&format!("The {what} array holds {} images; at most 255 are taken.", a.length())));
         }
-        (0..a.length()).map(|i| rgba(&a.get(i), &format!("{what} {}", i + 1))).collect::<Result<Vec<_>, _>>()?
+        (0..a.length())
+            .map(|i| image_and_alpha(&a.get(i), &format!("{what} {}", i + 1)))
+            .collect::<Result<Vec<_>, _>>()?
     } else {
-        vec![rgba(v, what)?]
+        vec![image_and_alpha(v, what)?]
     };
-    let images = rgba
-        .iter()
-        .map(|r| Image::from_rgba8(r.width, r.height, &r.data))
-        .collect::<Result<_, _>>()
-        .map_err(js_error)?;
-    let alphas =
-        if rgba.iter().all(|r| r.opaque()) { Vec::new() } else { rgba.iter().map(|r| Some(r.alpha())).collect() };
-    Ok((images, alphas))
+    let (images, alphas): (Vec<Image>, Alphas) = read.into_iter().unzip();
+    Ok((images, if alphas.iter().all(Option::is_none) { Vec::new() } else { alphas }))
 }
 
 /// A mask image of `size`: `true` where masked (opaque white).

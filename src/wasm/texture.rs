@@ -136,9 +136,12 @@ pub(super) fn blend_args(
     b: JsValue,
     opts: JsValue,
 ) -> Result<(Image, Image, raster::BlendOptions), JsValue> {
-    let a = masks::image(&a, "first image (A)")?;
-    let b = masks::image(&b, "second image (B)")?;
+    let (a, alpha_a) = masks::image_and_alpha(&a, "first image (A)")?;
+    let (b, alpha_b) = masks::image_and_alpha(&b, "second image (B)")?;
     let mut base: raster::TextureOptions = options(&opts, "blend options", &BLEND_KEYS, &SIZE)?;
+    if alpha_a.is_some() || alpha_b.is_some() {
+        base.alphas = vec![alpha_a, alpha_b];
+    }
     if base.keep_layout {
         return Err(error("keepLayout applies to synthesizeTexture (a blend mixes two sources per pixel)."));
     }

@@ -7,6 +7,7 @@ import assert from 'node:assert/strict';
 import { mkdirSync, readFileSync } from 'node:fs';
 import { openPlayground, patchEnergy } from './harness.mjs';
 import { decodeImage, encodePng } from '../../pkg/node/index.js';
+import { lineArt } from '../node/line-art.mjs';
 
 let page, close;
 
@@ -138,15 +139,7 @@ test('a 2048 x 2048 photograph is scaled to fit with a message, and its tile is 
 });
 
 test('line art on a transparent ground gives a tile on a transparent ground', async () => {
-  // Rings of ink 2 px wide on a clear ground, as a drawing program exports them.
-  const side = 128, data = new Uint8ClampedArray(side * side * 4);
-  const rings = Array.from({ length: 14 }, (_, k) => [(k * 37) % side, (k * 71 + 20) % side, 5 + (k % 5)]);
-  for (let i = 0; i < side * side; i++) {
-    const [x, y] = [(i % side) + 0.5, Math.floor(i / side) + 0.5];
-    const ink = Math.max(0, ...rings.map(([cx, cy, r]) => Math.min(1, 1.5 - Math.abs(Math.hypot(x - cx, y - cy) - r))));
-    data.set(ink > 0 ? [20, 30, 90, Math.round(ink * 255)] : [255, 255, 255, 0], i * 4);
-  }
-  const png = Buffer.from(encodePng({ width: side, height: side, data }));
+  const png = Buffer.from(encodePng(lineArt(128, 14, 3)));
   await page.setInputFiles('#seam-file', { name: 'rings.png', mimeType: 'image/png', buffer: png });
   await page.waitForFunction(() => document.querySelector('#seam-source').width === 128);
   await page.selectOption('#seam-method', 'synthesis');

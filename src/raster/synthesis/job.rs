@@ -63,9 +63,9 @@ pub struct Job {
     pub(crate) target: Option<Vec<Vec<f32>>>,
     /// How the exemplar's pixels carry its opacity (`Constraints::alpha`).
     pub(crate) opacity: Opacity,
-    /// Exemplar 0's alpha when it is not opaque everywhere: each output pixel takes the
-    /// alpha of the pixel it copies (`colour_rows`).
-    shown_alpha: Option<Vec<u8>>,
+    /// Each exemplar's alpha when any is not opaque everywhere: each output pixel takes
+    /// the alpha of the pixel it copies, or blends them (`colour_rows`).
+    shown_alpha: Option<Vec<Vec<u8>>>,
 }
 
 /// How the coarsest level starts when it is not grown from noise.
@@ -175,21 +175,33 @@ impl Job {
                 Some(g)
             }
         };
-        if let Some(a) = &c.alpha {
-            if a.len() != e0.width * e0.height || exemplars.len() > 1 {
-                return invalid("Alpha is given for one exemplar, one value per pixel.");
+        if c.alphas.len() > exemplars.len() {
+            return invalid(format!("{} alpha planes for {} exemplars.", c.alphas.len(), exemplars.len()));
+        }
+        for (i, (a, e)) in c.alphas.iter().zip(&exemplars).enumerate() {
+            if a.as_ref().is_some_and(|a| a.len() != e.width * e.height) {
+                return invalid(format!("Alpha plane {} is not one value per pixel of its exemplar.", i + 1));
             }
         }
-        let alpha = c.alpha.as_deref().filter(|a| a.iter().any(|&v| v != a[0]));
-        let shown_alpha = c.alpha.clone().filter(|a| a.iter().any(|&v| v != 255));
-        let opacity = Opacity::of(alpha.is_some(), guide.is_some());
+        // Each exemplar's alpha (a missing one opaque) where any of them is not opaque
+        // everywhere: shown through the source maps; compared where it varies.
+        let alphas: Vec<Vec<u8>> = exemplars
+            .iter()
+            .enumerate()
+            .map(|(i, e)| c.alphas.get(i).cloned().flatten().unwrap_or_else(|| vec![255; e.width * e.height]))
+            .collect();
+        let first = alphas[0].first().copied().unwrap_or(255);
+        let varies = alphas.iter().flatten().any(|&v| v != first);
+        let shown_alpha = alphas.iter().flatten().any(|&v| v != 255).then(|| alphas.clone());
+        let opacity = Opacity::of(varies, guide.is_some());
         let exs: Vec<Exemplar> = exemplars
             .iter()
             .enumerate()
             .map(|(i, e)| {
                 let allowed = c.allowed.get(i).and_then(|a| a.as_deref());
                 let guide = guide.map(|g| (&g.exemplar, g.scale()));
-                Exemplar::new(e, levels, allowed, guide, alpha.map(|a| (a, opacity)), c.kept_out())
+                let alpha = varies.then(|| (&alphas[i][..], opacity));
+                Exemplar::new(e, levels, allowed, guide, alpha, c.kept_out())
             })
             .collect::<Result<_>>()?;
         let sizes: Vec<_> = (0..levels).map(|l| (width.div_ceil(1 << l), height.div_ceil(1 << l))).collect();
@@ -472,6 +484,30 @@ impl Job {
         Rgba { width, height, data: self.colour_rows(src, 0, height) }
     }
 
+    /// The colour and alpha of output pixel (x, y) at index `i` of the finest sources,
+    /// from exemplars with transparency: each source's colour as it shows, and its alpha;
+    /// blended, the colours premultiplied by their alpha and mixed, then divided by the
+    /// mixed alpha (a transparent source adds no colour, only clearness).
+    fn shown(&self, alphas: &[Vec<u8>], src: &[Vec<u32>], i: usize, x: usize, y: usize) -> ([f32; 3], f32) {
+        let mut sum = ([0.0f32; 3], 0.0f32);
+        for (e, ex) in self.mix.exs.iter().enumerate() {
+            let w = self.mix.weight(e, 0, x, y);
+            if w <= 0.0 {
+                continue;
+            }
+            let p = src[e][i] as usize;
+            let a = alphas[e][p] as f32;
+            let c = ex.levels[0].data[p];
+            let c = self.opacity.shown([c[0], c[1], c[2]], a);
+            for (s, v) in sum.0.iter_mut().zip(c) {
+                *s += w * a * v;
+            }
+            sum.1 += w * a;
+        }
+        let (c, a) = sum;
+        (if a > 0.0 { c.map(|v| v / a) } else { [0.0; 3] }, a)
+    }
+
     /// RGBA bytes of the output's rows `first .. first + rows` (mod its height) from
     /// their sources at the finest level (`src`: those rows of each map, top first), so
     /// that the workers of the banded schedule colour the rows of their last bands.
@@ -482,11 +518,15 @@ impl Job {
             let y = (first + r) % height;
             for x in 0..width {
                 let i = r * width + x;
-                let c = self.mix.colour(0, src, i, x, y);
-                let a = self.shown_alpha.as_ref().map_or(255, |a| a[src[0][i] as usize]);
-                let c = self.opacity.shown([c[0], c[1], c[2]], a as f32);
+                let (c, a) = match &self.shown_alpha {
+                    None => {
+                        let c = self.mix.colour(0, src, i, x, y);
+                        ([c[0], c[1], c[2]], 255.0)
+                    }
+                    Some(alphas) => self.shown(alphas, src, i, x, y),
+                };
                 data.extend(c.iter().map(|&v| v.round().clamp(0.0, 255.0) as u8));
-                data.push(a);
+                data.push(a.round().clamp(0.0, 255.0) as u8);
             }
         }
         data

@@ -32,7 +32,7 @@ mod job;
 mod lanes;
 mod mask;
 mod mixer;
-pub(crate) mod opacity;
+mod opacity;
 mod pass;
 mod pinned;
 mod reuse;
@@ -102,14 +102,15 @@ pub struct Constraints {
     /// tile's band mended); see `synthesize`.
     pub known: Option<Vec<bool>>,
     pub guide: Option<Guide>,
-    /// Exemplar 0's alpha, one value per pixel (a fill of an RGBA image, a synthesis
-    /// from exemplars with transparency). The output takes the alpha of the pixel each
-    /// of its pixels copies (`Job::colour_rows`). Where it
-    /// varies, candidates are compared by it too (`opacity`): in the fourth lane, a
-    /// fully transparent pixel's colour counting as black; or, when a guide holds that
-    /// lane (it says where the output should be what, and is kept whole), by colours
-    /// premultiplied by it. Alpha the same everywhere changes nothing.
-    pub alpha: Option<Vec<u8>>,
+    /// Per exemplar, its alpha, one value per pixel (a fill of an RGBA image, a
+    /// synthesis or blend of exemplars with transparency; a missing one opaque). The
+    /// output takes the alpha of the pixel each of its pixels copies, blended as the
+    /// colours are (`Job::colour_rows`). Where alpha varies, candidates are compared by
+    /// it too (`opacity`): in the fourth lane, a fully transparent pixel's colour
+    /// counting as black; or, when a guide holds that lane (it says where the output
+    /// should be what, and is kept whole), by colours premultiplied by it. Alpha the
+    /// same everywhere is shown but changes no match.
+    pub alphas: Vec<Option<Vec<u8>>>,
     /// What keeps the disallowed pixels out, beginning the message when it leaves none
     /// to copy from (`None`: "The sample mask leaves"; a fill's hole: "The mask leaves").
     pub kept_out: Option<&'static str>,

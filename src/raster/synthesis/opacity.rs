@@ -143,7 +143,7 @@ mod tests {
         let c = Constraints {
             allowed: vec![Some(known.clone())],
             known: Some(known.clone()),
-            alpha: Some(alpha.clone()),
+            alphas: vec![Some(alpha.clone())],
             ..Constraints::default()
         };
         let job = Job::new(Sources::One(&img), &params(c)).expect("a fill's job");
@@ -156,7 +156,7 @@ mod tests {
         // alpha, 0 here, filled from around it as its colours are).
         let mut holed = alpha.clone();
         (0..1024).filter(|&i| hole(i)).for_each(|i| holed[i] = 0);
-        let c = Constraints { allowed: vec![Some(known.clone())], alpha: Some(holed), ..Constraints::default() };
+        let c = Constraints { allowed: vec![Some(known.clone())], alphas: vec![Some(holed)], ..Constraints::default() };
         let job = Job::new(Sources::One(&img), &params(c)).expect("a job");
         let coarse = job.plane(0, 1);
         let centre = coarse.data[8 * 16 + 8][3] / ALPHA_LANE;
@@ -169,7 +169,7 @@ mod tests {
         let grey = Image { width: 32, height: 32, data: (0..1024).map(|i| [(i % 32 * 8) as f32; 3]).collect() };
         let guide = Guide { exemplar: grey.clone(), target: grey.clone(), weight: 1.0 };
         let scale = guide.scale();
-        let c = Constraints { guide: Some(guide), alpha: Some(alpha.clone()), ..Constraints::default() };
+        let c = Constraints { guide: Some(guide), alphas: vec![Some(alpha.clone())], ..Constraints::default() };
         let job = Job::new(Sources::One(&img), &params(c)).expect("a guided job");
         assert_eq!(job.opacity, Opacity::Premultiplied);
         for (i, p) in job.plane(0, 0).data.iter().enumerate() {
@@ -178,7 +178,7 @@ mod tests {
             assert_eq!(p[3], scale * grey.data[i][0], "pixel {i}");
         }
         // Alpha the same everywhere (an opaque image) changes nothing.
-        let c = Constraints { alpha: Some(vec![255; 1024]), ..Constraints::default() };
+        let c = Constraints { alphas: vec![Some(vec![255; 1024])], ..Constraints::default() };
         let job = Job::new(Sources::One(&img), &params(c)).expect("a job");
         assert_eq!(job.opacity, Opacity::Ignored);
         let plain = Job::new(Sources::One(&img), &params(Constraints::default())).expect("a job");
