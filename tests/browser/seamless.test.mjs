@@ -154,6 +154,10 @@ test('line art on a transparent ground gives a tile on a transparent ground', as
   assert.ok(inked / n > 0.02, `inked ${inked / n}`);
   mkdirSync('out', { recursive: true });
   await page.screenshot({ path: 'out/seamless-clear.png', fullPage: true });
+  // The preview shows the clear ground as a checker, as image editors do.
+  const checker = await page.evaluate(() => getComputedStyle(document.querySelector('#seam-view')).backgroundImage);
+  assert.match(checker, /conic-gradient/);
+  await page.locator('#seam-view').screenshot({ path: 'out/seamless-clear-tile.png' });
 });
 
 test('a non-square image is cropped with a message; not an image is refused', async () => {
