@@ -2,7 +2,7 @@
 //! `synthesize_texture` from a 128 x 128 crop of a fixture photograph to SIDE x SIDE,
 //! one thread, as one JSON line per size. `cargo run --release --example speed -- 256 1024`
 //! (`RUNS=n` runs per size, 5 by default; `FIXTURE=name`, gravel by default; `TILEABLE=1`
-//! for tiles).
+//! for tiles; `FUSE=0` without seam fusion, `FUSE=both` each in turn, interleaved).
 use patternsynth::raster::codec::decode_image;
 use patternsynth::raster::{synthesize_texture, Image, TextureOptions};
 use patternsynth::Silent;
@@ -23,18 +23,28 @@ fn main() {
     for arg in std::env::args().skip(1) {
         let out: usize = arg.parse().expect("sizes in pixels");
         let tileable = std::env::var("TILEABLE").is_ok_and(|v| v == "1");
-        let opts = TextureOptions { width: out, height: out, seed: 1, tileable, ..Default::default() };
-        let mut ms: Vec<f64> = (0..runs)
-            .map(|_| {
+        let fuse = std::env::var("FUSE").unwrap_or_default();
+        let variants: Vec<bool> = match fuse.as_str() {
+            "0" => vec![false],
+            "both" => vec![true, false],
+            _ => vec![true],
+        };
+        let mut ms = vec![Vec::new(); variants.len()];
+        for _ in 0..runs {
+            for (k, &fuse_seams) in variants.iter().enumerate() {
+                let opts =
+                    TextureOptions { width: out, height: out, seed: 1, tileable, fuse_seams, ..Default::default() };
                 let t = Instant::now();
                 std::hint::black_box(synthesize_texture(&ex, &opts, &mut Silent).unwrap());
-                t.elapsed().as_secs_f64() * 1e3
-            })
-            .collect();
-        ms.sort_by(f64::total_cmp);
-        println!(
-            "{{\"fixture\":\"{fixture}\",\"tileable\":{tileable},\"side\":{out},\"runs\":{runs},\"ms\":{:.1}}}",
-            ms[runs / 2]
-        );
+                ms[k].push(t.elapsed().as_secs_f64() * 1e3);
+            }
+        }
+        for (k, fuse_seams) in variants.iter().enumerate() {
+            ms[k].sort_by(f64::total_cmp);
+            println!(
+                "{{\"fixture\":\"{fixture}\",\"tileable\":{tileable},\"fused\":{fuse_seams},\"side\":{out},\"runs\":{runs},\"ms\":{:.1}}}",
+                ms[k][runs / 2]
+            );
+        }
     }
 }

@@ -97,6 +97,12 @@ export interface TextureOptions extends TextureBase {
   guides?: Guides;
   /** Also return the layout: which exemplar pixel each output pixel came from. */
   keepLayout?: boolean;
+  /** Smooth the seams between the pieces copied from the exemplar (gradient-domain
+   *  fusion, default true): softer joins on clouds, smoke and stone. false: every pixel
+   *  is one of the exemplar's colours exactly. An exemplar of at most 64 colours (pixel
+   *  art), one with transparency, and blends are never fused; nor is a synthesis with
+   *  `keepLayout`, so that applyLayout on its exemplars gives its image pixel for pixel. */
+  fuseSeams?: boolean;
 }
 /** Guide images (luminance is read): one per exemplar, and the output's. */
 export interface Guides { exemplar: Rgba | Rgba[]; target: Rgba; weight?: number }
@@ -175,6 +181,9 @@ export interface SeamlessOptions {
    *  its layout and re-makes its detail from the image (default true); false gives the
    *  paper's tile as it is. */
   refine?: boolean;
+  /** 'synthesis', and E-TFMCM or TFMCM refined: smooth the seams between copied pieces
+   *  (default true; see TextureOptions.fuseSeams). */
+  fuseSeams?: boolean;
 }
 export interface SeamlessResult {
   image: RgbaImage;

@@ -51,7 +51,7 @@ impl Default for StyleOptions {
 /// 7.30 against the peer's 6.25. At 1 the tower was hardly to be seen on most of the
 /// eight; at 1.5 it shows as the peer's does, with the texture kept closer. (Measured
 /// with the coarsest level searched exhaustively; with the guided quilt that replaced
-/// that search, `job::GUIDED_QUILT`, the same run gives 0.93 and 5.95 in half the time.)
+/// that search, `synthesis::start::GUIDED_QUILT`, the same run gives 0.93 and 5.95 in half the time.)
 pub const STYLE_WEIGHT: f32 = 1.5;
 
 /// The default weight of `guides` in `synthesizeTexture`: twice the colours'. Measured
@@ -62,7 +62,7 @@ pub const STYLE_WEIGHT: f32 = 1.5;
 /// 0.90, at 3 with 0.92; patch energy 4.73, 5.42 and 6.01 against the peer's 6.27, and
 /// ours at most the peer's in 24, 20 and 11 runs of 24. Two follows the guide as
 /// closely as the peer does and keeps the texture closer to the photograph. (On eight
-/// other photographs, with the guided quilt, `job::GUIDED_QUILT`: 0.85 against the
+/// other photographs, with the guided quilt, `synthesis::start::GUIDED_QUILT`: 0.85 against the
 /// peer's 0.84, patch energy 5.30 against 5.55.)
 pub const GUIDE_WEIGHT: f32 = 2.0;
 

@@ -17,7 +17,7 @@
 //! With a guide (Efros and Freeman's texture transfer), a window's cost is the mean
 //! squared difference over its overlap plus the mean squared difference between the
 //! exemplar's guide under it and the target's where it is laid, and it tries up to
-//! `candidates` origins (every one where there are no more; `job::GUIDED_QUILT` asks
+//! `candidates` origins (every one where there are no more; `synthesis::start::GUIDED_QUILT` asks
 //! for 1,024): the windows then lay the target's light and dark out, which a few random
 //! origins could not. Its windows are small (4 pixels), so their overlap is one pixel
 //! and the cut is a straight line; the passes over the level join them.

@@ -42,6 +42,9 @@ pub struct TextureOptions {
     /// varies candidates are compared by it too (`synthesis::opacity`). Empty: opaque.
     #[serde(skip)]
     pub alphas: Vec<Option<Vec<u8>>>,
+    /// Smooth the seams between copied pieces (`synthesis::Params::fuse_seams`); never
+    /// with `keep_layout`, whose layout replays the image exactly.
+    pub fuse_seams: bool,
 }
 
 /// Guide images: grey values (luminance) of each exemplar's and of the output's size,
@@ -76,6 +79,7 @@ impl Default for TextureOptions {
             guides: None,
             keep_layout: false,
             alphas: Vec::new(),
+            fuse_seams: p.fuse_seams,
         }
     }
 }
@@ -117,6 +121,8 @@ impl TextureOptions {
             exhaustive: self.exhaustive,
             tileable: self.tileable,
             schedule: self.schedule,
+            // A layout replays exactly (`apply_layout` on the exemplars gives the image).
+            fuse_seams: self.fuse_seams && !self.keep_layout,
             start: self.start.clone(),
             constraints: synthesis::Constraints { allowed: self.sample_masks.clone(), ..Default::default() },
             ..Params::default()

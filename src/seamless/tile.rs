@@ -34,7 +34,7 @@ pub enum Method {
     /// Toroidal neighbourhood synthesis (ours), the default: it takes any width and
     /// height, and keeps structure (bricks) that E-TFMCM's layout breaks on small crops.
     /// Its coarsest level starts from a quilt of the photograph's windows laid round the
-    /// torus, chosen to cover the photograph evenly (`synthesis::job::TILE_QUILT`). On
+    /// torus, chosen to cover the photograph evenly (`synthesis::start::TILE_QUILT`). On
     /// twelve held-out photographs (`bench/heldout-data.sh`, 128, seeds 1-8,
     /// `examples/tile_quality` with texture-synthesis 0.8.3 `--tiling` beside it) its
     /// tiles' patch energy is a median 0.89 of the peer's (refined E-TFMCM 0.94), at or
@@ -72,6 +72,9 @@ pub struct SeamlessOptions {
     /// layer; methods 'synthesis' and 'mend').
     #[serde(skip)]
     pub sample_mask: Option<Vec<bool>>,
+    /// Synthesis and refined tiles: smooth the seams between the copied pieces
+    /// (`synthesis::fusion`); `false` keeps every pixel one of the image's colours.
+    pub fuse_seams: bool,
 }
 
 impl Default for SeamlessOptions {
@@ -86,6 +89,7 @@ impl Default for SeamlessOptions {
             refine: true,
             band: None,
             sample_mask: None,
+            fuse_seams: true,
         }
     }
 }
@@ -180,6 +184,7 @@ pub fn seamless_tile(input: &Rgba, opts: &SeamlessOptions, progress: &mut dyn Pr
                 tileable: true,
                 sample_masks,
                 alphas,
+                fuse_seams: opts.fuse_seams,
                 ..Default::default()
             };
             let out = synthesize_texture(&img, &o, &mut |f| progress.tick(f).is_ok())?;
@@ -200,7 +205,7 @@ pub fn seamless_tile(input: &Rgba, opts: &SeamlessOptions, progress: &mut dyn Pr
             let mut out = colourise(&grey, &conv.image, &rgb);
             if refined {
                 let mut progress = Throttle::with_range(progress, 0.3, 1.0);
-                out = refine(&out, &rgb, side, opts.seed, &mut progress)?;
+                out = refine(&out, &rgb, side, opts, &mut progress)?;
             }
             let data = out.iter().flat_map(|p| [p[0], p[1], p[2], 255]).collect();
             let out = Rgba { width: side, height: side, data };
@@ -277,14 +282,21 @@ fn mended(input: &Rgba, opts: &SeamlessOptions, progress: &mut dyn Progress) -> 
 /// arrangement and the exemplar's own neighbourhoods the detail. This is not in the
 /// paper: its tile is the field, colourised, whose pixel-by-pixel decisions break
 /// structured exemplars into pixelated pieces that repeat with the tile.
-fn refine(field: &[[u8; 3]], rgb: &[[u8; 3]], side: usize, seed: u64, progress: &mut Throttle) -> Result<Vec<[u8; 3]>> {
+fn refine(
+    field: &[[u8; 3]],
+    rgb: &[[u8; 3]],
+    side: usize,
+    opts: &SeamlessOptions,
+    progress: &mut Throttle,
+) -> Result<Vec<[u8; 3]>> {
     let image = |p: &[[u8; 3]]| Image { width: side, height: side, data: p.iter().map(|c| c.map(f32::from)).collect() };
     let o = TextureOptions {
         width: side,
         height: side,
-        seed,
+        seed: opts.seed,
         tileable: true,
         start: Some(image(field)),
+        fuse_seams: opts.fuse_seams,
         ..Default::default()
     };
     Ok(synthesize_texture(&image(rgb), &o, &mut |f| progress.tick(f).is_ok())?.rgb())

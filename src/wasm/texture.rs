@@ -146,6 +146,11 @@ pub(super) fn blend_args(
         return Err(error("keepLayout applies to synthesizeTexture (a blend mixes two sources per pixel)."));
     }
     if !(opts.is_undefined() || opts.is_null()) {
+        if !read::get(&opts, "fuseSeams", "blend options")?.is_undefined() {
+            return Err(error(
+                "fuseSeams applies to synthesizeTexture and seamlessTile: a blend mixes two sources per pixel and is not fused.",
+            ));
+        }
         let sizes = [(a.width, a.height), (b.width, b.height)];
         base.sample_masks = masks::sample_masks(&read::get(&opts, "sampleMask", "blend options")?, &sizes)?;
     }

@@ -212,9 +212,10 @@ test('the option types declare exactly the options the engine reads', () => {
   ];
   for (const [name, call] of cases) assert.deepEqual(keys(name), known(call), name);
   // Blend options: the texture options serde reads but the layout (which blends refuse).
-  const blendKnown = known((o) => ps.blendTextures(img, img, { width: 9, height: 9, ...o })).filter((k) => k !== 'keepLayout');
+  const blendKnown = known((o) => ps.blendTextures(img, img, { width: 9, height: 9, ...o })).filter((k) => k !== 'keepLayout' && k !== 'fuseSeams');
   assert.deepEqual(keys('BlendOptions'), blendKnown);
   assert.throws(() => ps.blendTextures(img, img, { width: 9, height: 9, keepLayout: true }), /keepLayout applies to synthesizeTexture/);
+  assert.throws(() => ps.blendTextures(img, img, { width: 9, height: 9, fuseSeams: false }), /fuseSeams applies to synthesizeTexture and seamlessTile/);
 });
 
 test('the packed package holds every file its modules import or fetch', async () => {

@@ -28,6 +28,7 @@
 //! exceed the best so far.
 
 mod exemplar;
+mod fusion;
 mod job;
 mod lanes;
 mod mask;
@@ -36,6 +37,7 @@ mod opacity;
 mod pass;
 mod pinned;
 mod reuse;
+mod start;
 
 pub use job::Job;
 pub(crate) use pass::{Map, Scratch};
@@ -82,6 +84,10 @@ pub struct Params {
     /// wraps out of range; a coherence bias of 4 rather than `pass::COHERENCE`, or the
     /// colour balance in 8 bins a channel, traded one photograph for another at no cost.
     pub corrections: usize,
+    /// Fuse the seams between copied pieces in the gradient domain (`fusion`): on by
+    /// default; off, every output pixel is an exemplar pixel's colour exactly. Applies to
+    /// one opaque exemplar of more than `fusion::PALETTE` colours, not around known pixels.
+    pub fuse_seams: bool,
     pub schedule: Schedule,
     /// A picture of the output's size whose layout the coarsest level starts from
     /// (`Job::started`): the seamless tile's E-TFMCM field, refined.
@@ -183,6 +189,7 @@ impl Default for Params {
             tileable: false,
             random_candidates: 2,
             corrections: 1,
+            fuse_seams: true,
             schedule: Schedule::Auto,
             start: None,
             constraints: Constraints::default(),

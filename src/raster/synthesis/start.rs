@@ -1,0 +1,196 @@
+//! How the coarsest level starts when it is not grown from noise: a quilt of exemplar
+//! windows (laid round the torus for a tile, `TILE_QUILT`; as a target guide asks,
+//! `GUIDED_QUILT`), a picture's layout, or the onion around known pixels.
+
+use super::exemplar::{distance, Exemplar, Offsets};
+use super::lanes::Px;
+use super::Job;
+use crate::raster::image::torus_index;
+use crate::raster::quilt::{Quilt, QuiltGuide};
+use crate::rng::Rng;
+
+/// A guided quilt's window side and the weight of its guide term (`quilt::QuiltGuide`).
+/// The quilt lays the large structure and the coherent passes keep to it, so a guided
+/// output follows its target as far as the quilt does. Measured on eight Debian
+/// photographs of 224 pixels guided by a disc (examples/guided_probe, 256², seeds 1-3,
+/// medians of 24 runs): the luminance's correlation with the disc was 0.81 with the
+/// plain quilt's 16-pixel windows, and with the guide at 4 (or 16) 0.83 at 8 pixels,
+/// 0.85 at 4 (0.86 with the guide at 16); searching the coarsest level exhaustively
+/// instead (as before the quilt knew the guide) gave 0.85 at about twice the time.
+/// Every origin is tried up to 1,024 (a 28-pixel coarsest level has 625).
+const GUIDED_QUILT: Quilt = Quilt { side: 4, candidates: 1024, spread: 0.0 };
+const GUIDED_QUILT_WEIGHT: f32 = 4.0;
+
+/// How the coarsest level starts when it is not grown from noise.
+pub(super) enum Start {
+    /// A quilt of exemplar windows.
+    Quilt(Quilt),
+    /// A picture's layout: each pixel takes the exemplar position whose neighbourhood
+    /// (centre included) best matches the picture's there, at the coarsest level, read
+    /// on the torus. The picture's own colours are never copied.
+    Layout(Vec<Px>),
+    /// Known pixels kept, the others filled from the edge of the known region inwards
+    /// (`onion`).
+    Onion,
+}
+
+impl Job {
+    /// Whether `level` starts from a map made whole (`starts`) and so needs no causal
+    /// pass: the coarsest level, when it starts from a picture's layout, or when its
+    /// exemplars are large enough to quilt (a tile's round the torus, `TILE_QUILT`).
+    pub(crate) fn started(&self, level: usize) -> bool {
+        level + 1 == self.levels && self.start.is_some()
+    }
+
+    /// Whether the coarsest level starts from a quilt of exemplar windows.
+    pub(crate) fn quilted(&self) -> bool {
+        matches!(self.start, Some(Start::Quilt(_)))
+    }
+
+    /// The coarsest level's starting maps, one per exemplar (empty when it is not
+    /// `started`): the same in both schedules, and made once per job, however many
+    /// bands read them.
+    pub(crate) fn starts(&self) -> &[Vec<u32>] {
+        self.starts.get_or_init(|| {
+            let level = self.levels - 1;
+            let (lw, lh) = self.sizes[level];
+            let exs = self.mix.exs.iter();
+            match &self.start {
+                None => Vec::new(),
+                Some(Start::Quilt(quilt)) => exs
+                    .enumerate()
+                    .map(|(e, ex)| {
+                        let mut rng = Rng::new(self.params.seed ^ (0x51 << 56) ^ e as u64);
+                        let plane = &ex.levels[level];
+                        // (A target guide lays the windows out as the target asks: see
+                        // `GUIDED_QUILT`.)
+                        let lane: Vec<f32>;
+                        let (quilt, guide) = match &self.target {
+                            Some(t) if self.params.constraints.guide.as_ref().is_some_and(|g| g.scale() > 0.0) => {
+                                lane = plane.data.iter().map(|p| p[3]).collect();
+                                let guide =
+                                    QuiltGuide { exemplar: &lane, target: &t[level], weight: GUIDED_QUILT_WEIGHT };
+                                (GUIDED_QUILT, Some(guide))
+                            }
+                            _ => (*quilt, None),
+                        };
+                        let mut map = quilt
+                            .lay(&plane.image(), plane.allowed_mask(), guide, (lw, lh), self.params.tileable, &mut rng)
+                            .expect("Job::new checked the window");
+                        // Windows that still reach masked positions: those pixels start
+                        // anywhere allowed, and the passes join them.
+                        map.iter_mut().filter(|p| !plane.allows(**p)).for_each(|p| *p = plane.random(&mut rng));
+                        map
+                    })
+                    .collect(),
+                Some(Start::Layout(picture)) => exs.map(|ex| self.layout(ex, level, picture)).collect(),
+                Some(Start::Onion) => vec![self.onion(level)],
+            }
+        })
+    }
+
+    /// For each pixel of `level` (`picture` at that level), the position of `ex` whose
+    /// neighbourhood, centre included, is nearest the picture's (exhaustive: the
+    /// coarsest level has a few hundred positions).
+    fn layout(&self, ex: &Exemplar, level: usize, picture: &[Px]) -> Vec<u32> {
+        let (lw, lh) = self.sizes[level];
+        let mut shape = self.full.clone();
+        shape.own.push((0, 0));
+        shape.parent.clear();
+        let off = Offsets::new(&shape, ex.levels[level].width);
+        let mut feature = Vec::with_capacity(shape.own.len());
+        let mut out = Vec::with_capacity(lw * lh);
+        for y in 0..lh {
+            for x in 0..lw {
+                feature.clear();
+                feature.extend(
+                    shape.own.iter().map(|&(dx, dy)| picture[torus_index(x as isize + dx, y as isize + dy, lw, lh)]),
+                );
+                let mut best = (f32::INFINITY, 0u32);
+                ex.levels[level].each_allowed(|pos| {
+                    let d = distance(ex, level, pos, &shape, &off, &feature, best.0);
+                    if d < best.0 {
+                        best = (d, pos);
+                    }
+                });
+                out.push(best.1);
+            }
+        }
+        out
+    }
+}
+
+/// How a tile's quilt is laid: round the torus, with the coverage term (`Quilt::spread`)
+/// and more origins to choose from, since the term now keeps the proportions that few
+/// origins kept before, in windows of 6 pixels (at a 16-pixel coarsest level, where 16
+/// would be cut to half the exemplar).
+///
+/// Tiles grew from noise until the coverage term. Quilted without it (four origins a
+/// window, windows half the exemplar), tiles were lower in patch energy (the twelve
+/// held-out photographs at 128 against texture-synthesis 0.8.3's `--tiling`, seeds 1-3:
+/// median 0.84 of the peer's, from noise 1.00) but a tile about the exemplar's size
+/// copied some of its regions two or three times and others never: colour further from
+/// the photograph's than the peer's on 4 of 12 (marble 0.207 against 0.089), repetition
+/// past the fixtures' own on 5 of 10 against 2 from noise (measured at 772de4b).
+/// Measured with the term over seeds 1-8 (examples/tile_quality, the twelve; from noise:
+/// energy at or below the peer's on 7, median 0.99; colour at most the peer's on 10;
+/// repetition within 0.05 of the photograph's own on 11; seams in 0.8-1.2 on 11):
+///
+/// | window, origins, weight | energy | median | colour | repetition | seams |
+/// |---|---|---|---|---|---|
+/// | 8, 8, 2 | 11 | 0.82 | 11 | 11 | 12 |
+/// | 8, 8, 3 | 12 | 0.83 | 10 | 10 | 12 |
+/// | 8, 8, 4 | 11 | 0.86 | 12 | 11 | 12 |
+/// | 8, 16, 3 | 12 | 0.85 | 11 | 12 | 11 |
+/// | 8, 32, 6 | 11 | 0.86 | 11 | 10 | 11 |
+/// | **6, 8, 3** | 11 | 0.89 | 11 | 12 | 11 |
+/// | 6, 16, 3 | 11 | 0.86 | 11 | 12 | 11 |
+/// | 4, 8, 3 | 11 | 0.88 | 10 | 12 | 12 |
+///
+/// Windows half the exemplar's side cover its middle twice as often as its edges,
+/// however they are chosen (two ways into the middle for one into a corner): gravel's
+/// 8-pixel tiles repeat their few dark pebbles (0.070 below the photograph's own), which
+/// a 2 x 2 repeat shows at once. Sand, whose energy is the one above the peer's at 6
+/// pixels (1.05), is there in every row (0.98-1.05; from noise 1.06). On the ten fixtures
+/// (seeds 1-8, against noise) 6-pixel windows lower the energy on 8 (tissue 8.48 ->
+/// 7.54, print 8.97 -> 8.87; coins 6.73 -> 7.10 and gravel's repetition 0.048 below its
+/// own), and the wrap over seeds 1-32 (examples/seam_lines) reads print 1.18 (from noise
+/// 1.12; 8-pixel windows 1.22, with 16 origins 1.25 and coins 1.17), brick 1.09, coins
+/// 1.05. (Where the 8-pixel windows' wrap rose, it was not where the windows meet:
+/// rolled at random before the passes, the same; nor mended by a wider band matched
+/// again along the wrap, by finer levels started from their parent rather than noise,
+/// or by an exhaustive search over the quilt, which lost the energy gained: median 0.93.)
+///
+/// On four soft stochastic photographs too (`bench/heldout-data.sh`'s clouds, mist, wisps
+/// and fire-smoke; seeds 1-8, with the twelve), weight 3 stays: 1 and 2 lowered mist's
+/// and fire's energy (1.63 and 0.89 at 1, from 2.03 and 1.08; the peer's 1.55 and 0.74,
+/// its tiles one smooth band repeated) but lost repetition on grass and gravel (1) or
+/// colour on marble and wisps (2), and brick's or roof's seam (1). Without the term
+/// (0) fire's energy is still 0.80, and wisps' colour 0.258 against the peer's 0.098;
+/// 7 x 7 and 9 x 9 neighbourhoods for tiles, at two to three times the work, left fire
+/// above the peer's and mist's colour further off.
+const TILE_QUILT: Quilt = Quilt { side: 6, candidates: 8, spread: 3.0 };
+
+/// Whether tiles quilt (always, but for a probe's `PATTERNSYNTH_TILE_QUILT=0`, which
+/// grows them from noise as before `TILE_QUILT`).
+pub(super) fn tile_quilt() -> bool {
+    !(cfg!(feature = "test-support") && std::env::var("PATTERNSYNTH_TILE_QUILT").is_ok_and(|v| v == "0"))
+}
+
+/// The quilt's window side, candidates and coverage weight (`TILE_QUILT` for a tile);
+/// probes may set them through `PATTERNSYNTH_QUILT=side,candidates[,spread]`.
+pub(super) fn quilt_params(tileable: bool) -> Quilt {
+    #[cfg(feature = "test-support")]
+    if let Ok(v) = std::env::var("PATTERNSYNTH_QUILT") {
+        let n: Vec<usize> = v.split(',').filter_map(|s| s.parse().ok()).collect();
+        let spread = v.split(',').nth(2).and_then(|s| s.parse().ok()).unwrap_or(0.0);
+        if n.len() >= 2 {
+            return Quilt { side: n[0], candidates: n[1], spread };
+        }
+    }
+    if tileable {
+        TILE_QUILT
+    } else {
+        Quilt::default()
+    }
+}
