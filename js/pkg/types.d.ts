@@ -100,7 +100,8 @@ export interface TextureOptions extends TextureBase {
   /** Smooth the seams between the pieces copied from the exemplar (gradient-domain
    *  fusion, default true): softer joins on clouds, smoke and stone. false: every pixel
    *  is one of the exemplar's colours exactly. An exemplar of at most 64 colours (pixel
-   *  art), one with transparency, and blends are never fused; nor is a synthesis with
+   *  art), one with transparency, blends, guided syntheses and style transfer are never
+   *  fused (their steps follow the guide); nor is a synthesis with
    *  `keepLayout`, so that applyLayout on its exemplars gives its image pixel for pixel. */
   fuseSeams?: boolean;
 }

@@ -242,6 +242,15 @@ pub fn store(job: &Job, step: Step, b: usize, rows: &[Vec<u32>], into: &mut [Vec
     }
 }
 
+/// The bands a fused output's colours are made in, when it is banded (the last step's):
+/// after the synthesis, one more step for the workers, each band fused from the whole
+/// finest level with the rows around it (`Job::fused_band`), so band edges are no seams.
+/// `None` when the last step's rows are coloured as they are made.
+pub fn colour_bands(job: &Job) -> Option<Vec<Band>> {
+    let last = *steps(job).last()?;
+    (job.fused() && job.params.banded()).then(|| bands(job, last))
+}
+
 /// The banded schedule run in this thread: the same image as any number of workers
 /// running the bands of each step (see `tests/texture.rs`).
 pub fn synthesize(job: &Job, progress: &mut Throttle) -> Result<Rgba> {

@@ -1,7 +1,9 @@
 //! The worker protocol of banded texture synthesis (`js/pkg/bands.js` drives it): each
 //! worker opens the same job, runs the bands it is given of each step from the step's
-//! starting state, and returns the rows of its bands of the last step as colours. Jobs
-//! live in this instance between calls, under a handle.
+//! starting state, and returns the rows of its bands of the last step as colours (for a
+//! fused output, `synthesis::fusion`, a step of its own after the synthesis's, whose
+//! bands are coloured from the whole finest level). Jobs live in this instance between
+//! calls, under a handle.
 
 use super::texture::{blend_args, style_args, texture_args};
 use super::{error, js_error, JsProgress};
@@ -74,16 +76,16 @@ pub fn bands_open(method: &str, args: js_sys::Array) -> Result<JsValue, JsValue>
         return Ok(JsValue::NULL);
     }
     let steps = js_sys::Array::new();
-    for step in bands::steps(&job) {
-        let (width, height) = job.sizes[step.level];
+    let push = |level: usize, pass: usize, bands: Vec<bands::Band>| -> Result<(), JsValue> {
+        let (width, height) = job.sizes[level];
         let list = js_sys::Array::new();
-        for b in bands::bands(&job, step) {
+        for b in bands {
             list.push(&js_sys::Array::of2(&(b.first as u32).into(), &(b.rows as u32).into()));
         }
         let o = js_sys::Object::new();
         for (k, v) in [
-            ("level", step.level.into()),
-            ("pass", step.pass.into()),
+            ("level", level.into()),
+            ("pass", pass.into()),
             ("width", width.into()),
             ("height", height.into()),
             ("bands", list.into()),
@@ -91,6 +93,15 @@ pub fn bands_open(method: &str, args: js_sys::Array) -> Result<JsValue, JsValue>
             js_sys::Reflect::set(&o, &k.into(), &v)?;
         }
         steps.push(&o);
+        Ok(())
+    };
+    let synthesis = bands::steps(&job);
+    for &step in &synthesis {
+        push(step.level, step.pass, bands::bands(&job, step))?;
+    }
+    // A fused output's colours, in a step of their own after the last pass.
+    if let Some(list) = bands::colour_bands(&job) {
+        push(0, synthesis.last().map_or(0, |s| s.pass + 1), list)?;
     }
     let exemplars = job.exemplars();
     let handle = OPEN.with_borrow_mut(|(next, jobs)| {
@@ -140,6 +151,11 @@ pub fn bands_run(
     with(handle, |open| {
         let job = &open.job;
         let steps = bands::steps(job);
+        if step == steps.len() {
+            if let Some(list) = bands::colour_bands(job) {
+                return colour_step(open, step, state, &list, from, to);
+            }
+        }
         let &s = steps.get(step).ok_or_else(|| error(&format!("There is no step {step}.")))?;
         let list = bands::bands(job, s);
         if from > to || to > list.len() {
@@ -169,7 +185,8 @@ pub fn bands_run(
             Some(m) => bands::Start::Maps(m),
             None => bands::Start::Initial,
         };
-        let last = step + 1 == steps.len();
+        // (A fused output is coloured in a step of its own: `colour_step`.)
+        let last = step + 1 == steps.len() && !job.fused();
         let total: usize = list[from..to].iter().map(|b| b.rows).sum();
         let mut done = 0usize;
         let mut throttle = Throttle::new(&mut progress);
@@ -204,6 +221,36 @@ pub fn bands_run(
             js_sys::Uint32Array::from(&sources[..]).into()
         })
     })
+}
+
+/// The colour step of a fused output (`bands::colour_bands`), one past the synthesis's
+/// steps: bands `from..to` of the finest level coloured from the whole level (`state`,
+/// with this worker's first band of the step, kept for its next ones).
+type Ran = (crate::Result<()>, bool, Vec<u32>, Vec<u8>);
+fn colour_step(
+    open: &mut Open,
+    step: usize,
+    state: Option<js_sys::Uint32Array>,
+    list: &[bands::Band],
+    from: usize,
+    to: usize,
+) -> Result<Ran, JsValue> {
+    if from > to || to > list.len() {
+        return Err(error(&format!("Bands {from}..{to} are not among the step's {}.", list.len())));
+    }
+    let job = &open.job;
+    if let Some(st) = state {
+        let m = maps(&st, job.exemplars(), job.level_pixels(0), "state")?;
+        open.start = Some(StepStart { step, maps: Some(m), uses: None });
+    }
+    let Some(StepStart { maps: Some(m), step: kept, .. }) = &open.start else {
+        return Err(error(&format!("Step {step}'s starting state was not given to this worker.")));
+    };
+    if *kept != step {
+        return Err(error(&format!("Step {step}'s starting state was not given to this worker.")));
+    }
+    let colours = list[from..to].iter().flat_map(|b| job.fused_band(m, b.first, b.rows)).collect();
+    Ok((Ok(()), true, Vec::new(), colours))
 }
 
 /// Frees a job (closing an unknown handle does nothing).

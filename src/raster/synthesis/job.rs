@@ -217,6 +217,7 @@ impl Job {
             && fusion::probed()
             && exemplars.len() == 1
             && known.is_none()
+            && guide.is_none()
             && shown_alpha.is_none()
             && !fusion::palette(e0, c.allowed.first().and_then(|a| a.as_deref()));
         Ok(Job {
@@ -384,24 +385,59 @@ impl Job {
     /// The output image from the finest level's sources.
     pub fn colours(&self, src: &[Vec<u32>]) -> Rgba {
         let (width, height) = (self.params.width, self.params.height);
-        if !(self.fused && self.params.banded()) {
-            return Rgba { width, height, data: self.colour_rows(src, 0, height) };
-        }
-        // Band by band, as the workers colour them (`colour_rows`).
-        let last = *bands::steps(self).last().expect("a job has steps");
-        let mut data = vec![0u8; 4 * width * height];
-        for band in bands::bands(self, last) {
-            let row = |r: usize| ((band.first + r) % height) * width;
-            let rows: Vec<Vec<u32>> = src
-                .iter()
-                .map(|m| (0..band.rows).flat_map(|r| m[row(r)..row(r) + width].iter().copied()).collect())
-                .collect();
-            let colours = self.colour_rows(&rows, band.first, band.rows);
-            for (r, c) in colours.chunks_exact(4 * width).enumerate() {
-                data[4 * row(r)..4 * (row(r) + width)].copy_from_slice(c);
+        let data = match bands::colour_bands(self) {
+            None => self.colour_rows(src, 0, height),
+            // Band by band, as the workers colour them (`fused_band`).
+            Some(list) => {
+                let mut data = vec![0u8; 4 * width * height];
+                for band in list {
+                    let colours = self.fused_band(src, band.first, band.rows);
+                    for (r, c) in colours.chunks_exact(4 * width).enumerate() {
+                        let row = ((band.first + r) % height) * width;
+                        data[4 * row..4 * (row + width)].copy_from_slice(c);
+                    }
+                }
+                data
             }
-        }
+        };
         Rgba { width, height, data }
+    }
+
+    /// Whether the finest level's seams are fused (`fusion`): the output's colours are
+    /// then made from the whole finest level, a band with the rows around it.
+    pub fn fused(&self) -> bool {
+        self.fused
+    }
+
+    /// RGBA bytes of rows `first .. first + rows` (mod the height) of a fused output, from
+    /// the whole finest level's sources `src`: the band is fused with `fusion::HALO` rows
+    /// on each side (the whole torus when that is all of it), so that bands coloured
+    /// apart meet as the whole output fused at once would, within rounding.
+    pub fn fused_band(&self, src: &[Vec<u32>], first: usize, rows: usize) -> Vec<u8> {
+        debug_assert!(self.fused);
+        let (width, height) = (self.params.width, self.params.height);
+        let plane = &self.mix.exs[0].levels[0];
+        let (colours, skip) = if rows + 2 * fusion::HALO >= height {
+            (fusion::fuse(plane, &src[0], width, height, true), first)
+        } else {
+            let top = first + height - fusion::HALO;
+            let span = rows + 2 * fusion::HALO;
+            let rows: Vec<u32> = (0..span)
+                .flat_map(|r| {
+                    let y = (top + r) % height;
+                    src[0][y * width..(y + 1) * width].iter().copied()
+                })
+                .collect();
+            (fusion::fuse(plane, &rows, width, span, false), fusion::HALO)
+        };
+        let n = colours.len() / width;
+        (0..rows)
+            .flat_map(|r| colours[((skip + r) % n) * width..][..width].iter())
+            .flat_map(|c| {
+                let [r, g, b] = c.map(|v| v.round().clamp(0.0, 255.0) as u8);
+                [r, g, b, 255]
+            })
+            .collect()
     }
 
     /// The colour and alpha of output pixel (x, y) at index `i` of the finest sources,
@@ -430,22 +466,16 @@ impl Job {
 
     /// RGBA bytes of the output's rows `first .. first + rows` (mod its height) from
     /// their sources at the finest level (`src`: those rows of each map, top first), so
-    /// that the workers of the banded schedule colour the rows of their last bands.
-    /// Fused (`fusion`), the whole output on the torus, or a band of rows on its own:
-    /// the banded schedule colours band by band however many workers run it
-    /// (`bands::synthesize`), so its image is the same with any number.
+    /// that the workers of the banded schedule colour the rows of their last bands. A
+    /// fused output's colours need the rows around too (`fused_band`); the whole output
+    /// (`first` 0, `rows` the height) is fused on the torus here.
     pub fn colour_rows(&self, src: &[Vec<u32>], first: usize, rows: usize) -> Vec<u8> {
         let (width, height) = (self.params.width, self.params.height);
-        let mut data = Vec::with_capacity(width * rows * 4);
         if self.fused {
-            let torus = first == 0 && rows == height;
-            let src = &src[0][..width * rows];
-            for c in fusion::fuse(&self.mix.exs[0].levels[0], src, width, rows, torus) {
-                data.extend(c.iter().map(|&v| v.round().clamp(0.0, 255.0) as u8));
-                data.push(255);
-            }
-            return data;
+            debug_assert!(first == 0 && rows == height, "a fused band is coloured by fused_band");
+            return self.fused_band(src, 0, height);
         }
+        let mut data = Vec::with_capacity(width * rows * 4);
         for r in 0..rows {
             let y = (first + r) % height;
             for x in 0..width {

@@ -86,7 +86,8 @@ pub struct Params {
     pub corrections: usize,
     /// Fuse the seams between copied pieces in the gradient domain (`fusion`): on by
     /// default; off, every output pixel is an exemplar pixel's colour exactly. Applies to
-    /// one opaque exemplar of more than `fusion::PALETTE` colours, not around known pixels.
+    /// one opaque exemplar of more than `fusion::PALETTE` colours, unguided (a guide's steps
+    /// are where the output follows it), not around known pixels.
     pub fuse_seams: bool,
     pub schedule: Schedule,
     /// A picture of the output's size whose layout the coarsest level starts from
