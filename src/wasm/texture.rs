@@ -146,7 +146,8 @@ pub(super) fn blend_args(
         return Err(error("keepLayout applies to synthesizeTexture (a blend mixes two sources per pixel)."));
     }
     if !(opts.is_undefined() || opts.is_null()) {
-        if !read::get(&opts, "fuseSeams", "blend options")?.is_undefined() {
+        // (false asks for what a blend does anyway: one options object may serve all calls.)
+        if read::get(&opts, "fuseSeams", "blend options")?.as_bool() == Some(true) {
             return Err(error(
                 "fuseSeams applies to synthesizeTexture and seamlessTile: a blend mixes two sources per pixel and is not fused.",
             ));

@@ -215,7 +215,8 @@ test('the option types declare exactly the options the engine reads', () => {
   const blendKnown = known((o) => ps.blendTextures(img, img, { width: 9, height: 9, ...o })).filter((k) => k !== 'keepLayout' && k !== 'fuseSeams');
   assert.deepEqual(keys('BlendOptions'), blendKnown);
   assert.throws(() => ps.blendTextures(img, img, { width: 9, height: 9, keepLayout: true }), /keepLayout applies to synthesizeTexture/);
-  assert.throws(() => ps.blendTextures(img, img, { width: 9, height: 9, fuseSeams: false }), /fuseSeams applies to synthesizeTexture and seamlessTile/);
+  assert.throws(() => ps.blendTextures(img, img, { width: 9, height: 9, fuseSeams: true }), /fuseSeams applies to synthesizeTexture and seamlessTile/);
+  assert.equal(ps.blendTextures(img, img, { width: 9, height: 9, fuseSeams: false }).width, 9);
 });
 
 test('the packed package holds every file its modules import or fetch', async () => {
