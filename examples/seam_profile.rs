@@ -46,7 +46,8 @@ fn main() {
             };
             let n = image.width;
             if seed == 1 {
-                textures::save_repeated(&image, &format!("out/seam-{name}-{}.png", a[2]));
+                let stem = std::path::Path::new(name).file_stem().unwrap().to_string_lossy();
+                textures::save_repeated(&image, &format!("out/seam-{stem}-{}.png", a[2]));
             }
             let out = Image::from_rgba8(n, n, &image.data).unwrap();
             energy += patch_energy(&out, &textures::load(name), 200, (0, n), seed);

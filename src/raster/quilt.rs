@@ -23,8 +23,9 @@
 //! and the cut is a straight line; the passes over the level join them.
 //!
 //! With `spread` (tiles), a window's cost also counts how much of the exemplar under it
-//! is copied already, so that the quilt covers the exemplar about evenly rather than
-//! copying some regions several times and others never.
+//! is copied already against the share each pixel should take (`reach`), so that the
+//! quilt covers the exemplar about evenly rather than copying some regions several
+//! times and others never. The windows that close a torus's wrap go by their fit alone.
 //!
 //! Windows are clipped at the output's edges, or, for a tile, laid round the torus:
 //! spread evenly so that every gap is at most a step, each row's last window cut against
@@ -44,10 +45,11 @@ pub struct Quilt {
     /// Weight of the coverage term (0: none). A window's cost is then its overlap's
     /// mean squared difference over the exemplar's (the mean squared difference of two
     /// of its pixels drawn at random), plus `spread` times how many times over the
-    /// exemplar pixels under it are copied already, per the share each would copy if
-    /// the output used every pixel equally. Without it, a tile about the exemplar's size
-    /// copies some regions two or three times and others never: the tile repeats and its
-    /// colours drift from the exemplar's. (A guided quilt follows its guide instead.)
+    /// exemplar pixels under it are copied already, per the share each should copy
+    /// (`reach`). Without it, a tile about the exemplar's size copies some regions two
+    /// or three times and others never: the tile repeats and its colours drift from the
+    /// exemplar's. (A guided quilt follows its guide instead.) The windows that close
+    /// a torus's wrap leave the term out: see `lay`.
     pub spread: f32,
 }
 
@@ -121,6 +123,7 @@ impl Quilt {
         // two terms (see `spread`).
         let mut uses = vec![0u32; if self.spread > 0.0 { ew * eh } else { 0 }];
         let share = (lw * lh) as f32 / (ew * eh) as f32;
+        let reach = if self.spread > 0.0 { reach(ew, eh, b) } else { Vec::new() };
         let contrast = if self.spread > 0.0 { 2.0 * variance(ex) } else { 1.0 };
         // (The exemplar's channels apart, for a guided quilt's rows of origins.)
         let channels: [Vec<f32>; 3] = match guide {
@@ -209,14 +212,22 @@ impl Quilt {
                 let origin = match guide {
                     None => {
                         let mut best = (f32::INFINITY, (0, 0));
+                        // The windows that close a torus's wrap (a row's last, and the last
+                        // row) meet laid pixels on three or four sides: they are chosen by
+                        // how they fit alone. With the term, they had paid what it still
+                        // owed at the quilt's end; a photograph with a cloud bank cut off
+                        // by its top edge (a feature with no top anywhere in it) had the
+                        // bank laid along the wrap in a straight step no pass could mend,
+                        // 27 times the mean row's difference at 600 x 600.
+                        let closing = torus && (r + 1 == rows.len() || k + 1 == cols.len());
                         for _ in 0..self.candidates.max(1) {
                             let origin = random(rng);
                             let mut e = cost(origin);
-                            if self.spread > 0.0 {
-                                let base = pos(origin, 0, 0);
-                                let under = (0..b).flat_map(|dy| (0..b).map(move |dx| dy * ew + dx));
-                                let used: u32 = under.map(|d| uses[base as usize + d]).sum();
-                                let over = used as f32 / (b * b) as f32 / share.max(1e-6);
+                            if self.spread > 0.0 && !closing {
+                                let base = pos(origin, 0, 0) as usize;
+                                let under = (0..b).flat_map(|dy| (0..b).map(move |dx| base + dy * ew + dx));
+                                let (used, owed) = under.fold((0u32, 0f32), |(u, o), p| (u + uses[p], o + reach[p]));
+                                let over = used as f32 / (share * owed).max(1e-6);
                                 e = e / overlap.max(1.0) / contrast.max(1e-6) + self.spread * over;
                             }
                             if e < best.0 {
@@ -317,6 +328,24 @@ impl Quilt {
         debug_assert!(out.iter().all(|&p| p != FREE));
         Some(out)
     }
+}
+
+/// The share of the copies each exemplar pixel should take (mean 1): the square root
+/// of how many windows of side `b` hold it, over the mean. Windows drawn at random
+/// copy the exemplar's middle more than its edges (a pixel at a corner lies in one
+/// window of its row, one in the middle in `b`); the term evens that out only halfway.
+/// Pressed to copy the edges as often as the middle, a tile laid the exemplar's edges
+/// where nothing in the exemplar meets them (a cloud bank cut off by a photograph's top
+/// edge, in flat-topped blobs); with the edges' plain share (no root), a tile took too
+/// few of them: marble's colour 0.139 from the photograph against the peer's 0.095
+/// (examples/tile_quality, seeds 1-8; with the root 0.123, and 13 of the 16 held-out
+/// exemplars at most the peer's colour distance against 12).
+fn reach(ew: usize, eh: usize, b: usize) -> Vec<f32> {
+    // Windows holding column x of a side n long: origins max(0, x + 1 - b) ..= min(x, n - b).
+    let holding = |x: usize, n: usize| (x.min(n - b) + 1 - (x + 1).saturating_sub(b)) as f32;
+    let root: Vec<f32> = (0..ew * eh).map(|i| (holding(i % ew, ew) * holding(i / ew, eh)).sqrt()).collect();
+    let mean = root.iter().sum::<f32>() / root.len().max(1) as f32;
+    root.iter().map(|r| r / mean).collect()
 }
 
 /// The colour channels' variances, summed: half the mean squared difference between
@@ -525,30 +554,38 @@ mod tests {
     }
 
     #[test]
-    fn the_coverage_term_copies_the_exemplar_evenly() {
-        // A tile the exemplar's size from 8-pixel windows of a 16-pixel exemplar of noise
-        // (no origin's overlap matches better than another's): in quarters of the
-        // exemplar side, how often each of its sixteen squares is copied against its own
-        // share, over 32 seeds. Random origins favour the middle, which more windows
-        // cover; the term evens that out, though windows half the exemplar's side
-        // still cover its middle more (there are two ways into it for one into a corner).
+    fn the_coverage_term_copies_the_exemplar_as_it_should() {
+        // A tile three times the exemplar's side from 8-pixel windows of a 16-pixel
+        // exemplar of noise (no origin's overlap matches better than another's): in
+        // quarters of the exemplar side, how often each of its sixteen squares is copied
+        // against the share `reach` gives it, over 32 seeds. Random origins favour the
+        // middle, which more windows cover (without the term, squares are copied 0.14
+        // to 2.79 times an even share, 0.25 to 1.80 times their own); the term takes
+        // every square to 0.38-1.50 times its own.
         let mut ex = Image::new(16, 16);
         let mut rng = Rng::new(5);
         ex.data.iter_mut().for_each(|p| *p = [rng.below(256) as f32; 3]);
+        const N: usize = 48;
+        let owed = reach(16, 16, 8);
         let shares = |quilt: Quilt| {
-            let mut share = [0.0f64; 16];
+            let (mut copied, mut due) = ([0.0f64; 16], [0.0f64; 16]);
             for seed in 1..=32 {
-                for p in quilt.lay(&ex, None, None, (16, 16), true, &mut Rng::new(seed)).unwrap() {
+                for p in quilt.lay(&ex, None, None, (N, N), true, &mut Rng::new(seed)).unwrap() {
                     let (x, y) = (p as usize % 16, p as usize / 16);
-                    share[x / 4 + 4 * (y / 4)] += 1.0 / (32.0 * 16.0);
+                    copied[x / 4 + 4 * (y / 4)] += 1.0;
                 }
             }
-            let least = share.iter().copied().fold(f64::INFINITY, f64::min);
-            (least, share.iter().copied().fold(0.0, f64::max))
+            for (p, r) in owed.iter().enumerate() {
+                due[p % 16 / 4 + 4 * (p / 16 / 4)] += *r as f64 * (32 * N * N) as f64 / 256.0;
+            }
+            let ratios: Vec<f64> = copied.iter().zip(&due).map(|(c, d)| c / d).collect();
+            (ratios.iter().copied().fold(f64::INFINITY, f64::min), ratios.iter().copied().fold(0.0, f64::max))
         };
         let (least, most) = shares(Quilt { side: 16, candidates: 4, spread: 0.0 });
-        assert!(least < 0.3 && most > 2.4, "without: {least:.2}-{most:.2}");
+        println!("without: {least:.2}-{most:.2}");
+        assert!(least < 0.3 && most > 1.7, "without: {least:.2}-{most:.2}");
         let (least, most) = shares(Quilt { side: 16, candidates: 8, spread: 3.0 });
-        assert!(least > 0.3 && most < 2.0, "with: {least:.2}-{most:.2}");
+        println!("with: {least:.2}-{most:.2}");
+        assert!(least > 0.35 && most < 1.6, "with: {least:.2}-{most:.2}");
     }
 }

@@ -340,6 +340,8 @@ fn given_words(text: &str) -> String {
     let given = match given.strip_prefix("floating point `").and_then(|g| g.strip_suffix('`')) {
         Some(number) => number.strip_suffix(".0").unwrap_or(number).to_string(),
         None if given.starts_with("string ") => format!("the {given}"),
+        // (JS null reaches serde as the unit value.)
+        None if given == "unit value" => "null".to_string(),
         None => given.to_string(),
     };
     format!("got {given}{expected}")

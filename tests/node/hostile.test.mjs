@@ -53,6 +53,11 @@ test('geometry beyond range is left out with a warning, not flattened into billi
   assert.ok(r.warnings.some((w) => /2 shape\(s\) lie beyond/.test(w)), r.warnings.join('; '));
 });
 
+test('an option set to null is named as null in the message', () => {
+  const img = { width: 16, height: 16, data: new Uint8ClampedArray(16 * 16 * 4).fill(200) };
+  assert.throws(() => ps.synthesizeTexture(img, { width: 16, height: 16, fuseSeams: null }), /fuseSeams.*got null, expected true or false|got null, expected true or false.*fuseSeams/);
+});
+
 test('an option set to undefined means its default', () => {
   const strokes = [{ points: [[0, 0], [4, 4]], width: 1 }, { points: [[20, 0], [24, 4]], width: 1 }];
   const a = ps.synthesizeStrokes(strokes, { width: 100, height: 10, seed: undefined, variation: undefined });
