@@ -584,8 +584,9 @@ fn a_feature_cut_off_by_the_exemplar_s_edge_is_seldom_laid_in_a_step() {
     // owed in the rows that close the wrap: on a photograph with such a bank (600 x 600,
     // seed 3) the row above the wrap differed 27 times as much as the mean row. Here,
     // seeds 1-8 at 256: the strongest row step was over 8 times the median row's on 5
-    // seeds (up to 41 times); now on 2 (21 and 15 times: the bank laid inside the tile,
-    // where the quilt's coverage term still owed it; `quilt::reach`).
+    // seeds (up to 41 times). With the closing windows by fit alone and `quilt::reach`,
+    // on 2 (21 and 15 times: the bank laid inside the tile, which the coverage term
+    // still owed it); with `quilt::MISFIT` too, on 1 (11 times).
     let img = cloud_bank(128, 7);
     let mut strong = Vec::new();
     for seed in 1..=8 {
@@ -600,5 +601,5 @@ fn a_feature_cut_off_by_the_exemplar_s_edge_is_seldom_laid_in_a_step() {
             strong.push(ratio);
         }
     }
-    assert!(strong.len() <= 2, "steps over 8 times the median row's: {strong:.1?}");
+    assert!(strong.len() <= 1, "steps over 8 times the median row's: {strong:.1?}");
 }

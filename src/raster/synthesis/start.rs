@@ -176,13 +176,14 @@ impl Job {
 /// photograph's edge cuts off (a cloud bank along its top) has no top in it, so the
 /// bank was laid in flat-topped blobs along the wrap (27 times the mean row's step at
 /// 600 x 600). Now each pixel's share is `quilt::reach` (the edges' halfway to the
-/// middle's) and the closing windows go by their fit alone. Over seeds 1-8 against the
-/// peer (the twelve and the soft four): energy at or below the peer's on 16 of 16
+/// middle's), the closing windows go by their fit alone, and a window that fits badly
+/// earns no credit for what it would cover (`quilt::MISFIT`). Over seeds 1-8 against
+/// the peer (the twelve and the soft four): energy at or below the peer's on 16 of 16
 /// (from 14; fire 0.73 against the peer's 0.74, mist 1.46 against 1.55), median 0.84
-/// (from 0.88); colour at most the peer's on 13 (from 12; marble 0.123 against 0.098
-/// before and the peer's 0.095); repetition on 15 (sand 0.869 against its own 0.933,
-/// from 0.900); seams in 0.8-1.2 on 15 (brick 0.67, from 0.76: its wrap smoother than
-/// its lines).
+/// (from 0.88); colour at most the peer's on 11 (from 12; marble 0.117 against 0.098
+/// before and the peer's 0.095, clouds 0.172 against 0.168, wisps 0.117 against
+/// 0.098, plaster, grass); repetition on 15 (sand 0.869 against its own 0.933, from
+/// 0.900); seams in 0.8-1.2 on 16 (from 15; brick 0.85).
 const TILE_QUILT: Quilt = Quilt { side: 6, candidates: 8, spread: 3.0 };
 
 /// Whether tiles quilt (always, but for a probe's `PATTERNSYNTH_TILE_QUILT=0`, which
