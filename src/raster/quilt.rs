@@ -25,7 +25,8 @@
 //! With `spread` (tiles), a window's cost also counts how much of the exemplar under it
 //! is copied already against the share each pixel should take (`reach`), so that the
 //! quilt covers the exemplar in about those proportions rather than copying some
-//! regions several times and others never. The windows that close a torus's wrap go by their fit alone.
+//! regions several times and others never. The windows that close a torus's wrap go
+//! by their fit alone.
 //!
 //! Windows are clipped at the output's edges, or, for a tile, laid round the torus:
 //! spread evenly so that every gap is at most a step, each row's last window cut against
@@ -355,8 +356,8 @@ const MISFIT: f32 = 1.5;
 /// where nothing in the exemplar meets them (a cloud bank cut off by a photograph's top
 /// edge, in flat-topped blobs); with the edges' plain share (no root), a tile took too
 /// few of them: marble's colour 0.139 from the photograph against the peer's 0.095
-/// (examples/tile_quality, seeds 1-8; with the root 0.123, and 13 of the 16 held-out
-/// exemplars at most the peer's colour distance against 12).
+/// (examples/tile_quality, seeds 1-8, before `MISFIT`; with the root 0.123, and 13 of
+/// the 16 held-out exemplars at most the peer's colour distance against 12).
 fn reach(ew: usize, eh: usize, b: usize) -> Vec<f32> {
     // Windows holding column x of a side n long: origins max(0, x + 1 - b) ..= min(x, n - b).
     debug_assert!(b <= ew.min(eh), "window {b} larger than the exemplar {ew}x{eh}");
