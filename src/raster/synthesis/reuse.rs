@@ -66,37 +66,69 @@ pub struct Uses {
     balance: Vec<Option<Balance>>,
 }
 
-/// Weight of the colour balance (see `Balance`): over-represented by half again, a
-/// colour's positions cost `1 + BALANCE / 2` times their distance. Synthesis tiles at
-/// 128 over seeds 1-6 (examples/tile_quality), means at weights 0 / 0.5 / 0.75 / 1:
-/// - twelve held-out photographs (textures from Debian packages): patch energy 7.27 /
-///   7.04 / 7.07 / 7.21, colour distance 0.088 / 0.083 / 0.081 / 0.076, repetition
-///   more than 0.05 below the exemplar's own on 2 / 1 / 1 / 2 (clouds at every weight);
-/// - the ten fixtures: energy 6.13 / 6.37 / 6.34 / 6.41 (tissue and print rise, as
-///   their textured parts come back), colour 0.162 / 0.124 / 0.109 / 0.094 (tissue
-///   0.68 at 0), repetition 2 / 0 / 0 / 0 below; every seam within 0.8-1.2 at 0.75.
-const BALANCE: f32 = 0.75;
-/// Bins per channel of the balance's colours.
-const BALANCE_BINS: usize = 4;
-
-/// The colour balance of a tile's coarsest level grown from noise, from one exemplar
-/// and with no guide (after the histogram matching of Kopf et al. 2007, Solid texture
-/// synthesis from 2D exemplars): each exemplar position's colour bin, how many of the
-/// pixels being made copy a position of each bin, and how many would in the exemplar's
-/// own shares. A candidate's distance is multiplied by
-/// `1 + BALANCE max(0, copies / expected - 1)` of its bin. In the banded schedule each
-/// band balances its own rows (`Uses::balance_rows`): every band seeing the whole
-/// level's excess would correct it once per band.
+/// Weight of the colour balance (see `Balance`): over-represented by a tenth, a
+/// colour's positions cost `1 + BALANCE / 10` times their distance (up to
+/// `BALANCE_CAP`).
 ///
-/// Why: grown causally from noise, the layout drifts towards the exemplar's smoothest
-/// region, whose neighbourhoods match everything well (tissue's tiles almost all the
-/// pale stroma, colour distance 0.68; a clouds tile mostly sky), and a penalty per
-/// position does not see it, the drift spreading over the region's many positions.
-/// Outputs whose exemplar is large enough start from a quilt instead (`quilt`; tiles
-/// since its coverage term, `job::TILE_QUILT`), so this is for tiles from small
-/// exemplars and for probes that grow tiles from noise. A guide asks for other shares than the
-/// exemplar's, and a blend's exemplar is seen only where its weight is, so neither is
-/// balanced.
+/// Measured on synthesis tiles at 128 from the sixteen held-out photographs of
+/// `bench/heldout-data.sh`, seeds 1-8, against texture-synthesis 0.8.3 `--tiling` in the
+/// same run (examples/tile_quality), with the balance on every level and 8 bins, not
+/// capped:
+/// - weight 0 (the quilt alone): colour distance at most the peer's on 11 of 16 (clouds
+///   0.172, wisps 0.117, marble 0.117 over), energy on 16, repetition within 0.05 of
+///   the photograph's own on 15 (sand);
+/// - 1.5 / 2 / 3: colour on 14 / 14 / 14 (clouds 0.116 / 0.103 / 0.087 against the
+///   peer's 0.168, fire 0.256 / 0.246 / 0.231 against 0.351, marble 0.108 / 0.100 /
+///   0.095 against 0.095), repetition on 16 / 16 / 15, energy on 15 (fire 0.75 / 0.75 /
+///   0.77 against 0.74), median energy ratio 0.82 / 0.83 / 0.88.
+///
+/// Only the coarser levels balanced gave the same within a seed's spread (the finest
+/// level copies coherent pieces of what they laid). 4 bins per channel, as before, left
+/// marble (greys within two bins) where it was.
+const BALANCE: f32 = 2.0;
+/// Bins per channel of the balance's colours: those of `energy::colour_distance`.
+const BALANCE_BINS: usize = 8;
+/// The largest factor the balance puts on a distance. Capped, the balance chooses among
+/// candidates that fit about equally well and never makes a misfit the best, as
+/// `quilt::MISFIT` keeps the quilt from laying one for coverage. Uncapped, it laid
+/// again what `MISFIT` had stopped: helper-62's cloud (colobot cloud03 cropped at
+/// (300, 100), 128², as a tileable 600² in bands, seeds 1-8, examples/seam_profile)
+/// grew rows of flat-bottomed dark blobs, its strongest row step 1.87 times the mean
+/// row's at a cap of 1.3 against 1.57 with no balance.
+///
+/// Caps 1.15 / 1.2 / 1.3 at weight 2, as above: colour on 14 / 15 / 15 (marble 0.101 /
+/// 0.091 / 0.091; plaster stays over at 0.038 / 0.039 / 0.035 against 0.025), sand's
+/// repetition 0.894 / 0.909 / 0.900 (its own 0.933), energy on 16 at each (fire 0.72
+/// against 0.74), the cloud's strongest row 1.55 / 1.54 / 1.87 (one small blob per tile
+/// at 1.2, as with no balance). Brick's seam score falls from 0.85 with no balance to
+/// 0.77 / 0.73 / 0.76 (seeds 9-16: 0.79 to 0.71 at 1.2): its wrap lies in a mortar
+/// course more often, smoother than the lines about it, not a seam one sees.
+///
+/// On the ten fixtures (tiles at 128, seeds 1-3), with no balance / as now: mean colour
+/// distance 0.110 / 0.097 (fur 0.160 / 0.131, print 0.191 / 0.162, tissue 0.244 /
+/// 0.221), mean patch energy 5.57 / 5.58, grass's repetition 0.064 / 0.043 under its
+/// own, every seam within 0.8-1.2 (coins 1.24 / 1.07, brick 1.05 / 1.20).
+const BALANCE_CAP: f32 = 1.2;
+
+/// The colour balance of a tile from one exemplar and with no guide, at every level
+/// (after the histogram matching of Kopf et al. 2007, Solid texture synthesis from 2D
+/// exemplars): each exemplar position's colour bin, how many of the pixels being made
+/// copy a position of each bin, and how many would in the exemplar's own shares. A
+/// candidate's distance is multiplied by `1 + BALANCE max(0, copies / expected - 1)` of
+/// its bin. In the banded schedule each band balances its own rows
+/// (`Uses::balance_rows`): every band seeing the whole level's excess would correct it
+/// once per band.
+///
+/// Why: a tile is about its exemplar's size, so which regions it copies sets its
+/// colours. Grown causally from noise, the layout drifts towards the exemplar's
+/// smoothest region, whose neighbourhoods match everything well (tissue's tiles almost
+/// all the pale stroma, colour distance 0.68; a clouds tile mostly sky). The quilt
+/// (`quilt`, `start::TILE_QUILT`) lays an even spread of windows, yet the passes then
+/// favour what fits best: a clouds tile's colours stood 0.172 from the photograph's
+/// (the peer's 0.168), and 0.103 balanced. A penalty per position (`Uses`) does not see either, the
+/// drift spreading over a region's many positions. A guide asks for other shares than
+/// the exemplar's, and a blend's exemplar is seen only where its weight is, so neither
+/// is balanced.
 #[derive(Clone)]
 struct Balance {
     weight: f32,
@@ -106,6 +138,8 @@ struct Balance {
     /// The pixels balanced, and how many of them copy each bin.
     pixels: f32,
     copies: Vec<u32>,
+    /// The largest factor (`BALANCE_CAP`).
+    cap: f32,
 }
 
 impl Balance {
@@ -127,7 +161,11 @@ impl Balance {
         let weight = std::env::var("PATTERNSYNTH_BALANCE").ok().and_then(|v| v.parse().ok()).unwrap_or(BALANCE);
         #[cfg(not(feature = "test-support"))]
         let weight = BALANCE;
-        Balance { weight: weight.max(0.0), bin, share, pixels, copies }
+        #[cfg(feature = "test-support")]
+        let cap = std::env::var("PATTERNSYNTH_BALANCE_CAP").ok().and_then(|v| v.parse().ok()).unwrap_or(BALANCE_CAP);
+        #[cfg(not(feature = "test-support"))]
+        let cap = BALANCE_CAP;
+        Balance { weight: weight.max(0.0), bin, share, pixels, copies, cap: cap.max(1.0) }
     }
 
     /// Counted again over `src` alone (a band's rows).
@@ -143,7 +181,7 @@ impl Balance {
     fn factor(&self, pos: usize) -> f32 {
         let b = self.bin[pos] as usize;
         let expected = (self.share[b] * self.pixels).max(1.0);
-        1.0 + self.weight * (self.copies[b] as f32 / expected - 1.0).max(0.0)
+        (1.0 + self.weight * (self.copies[b] as f32 / expected - 1.0).max(0.0)).min(self.cap)
     }
 
     #[inline]
@@ -163,13 +201,8 @@ impl Uses {
         }
         let pixels = job.level_pixels(level) as f32;
         let (mut counts, mut scale, mut free, mut balance) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
-        // (A tile's coarsest level grown from noise keeps its colours balanced.)
-        let balanced = job.params.tileable
-            && level + 1 == job.levels
-            && !job.started(level)
-            && job.exemplars() == 1
-            && job.target.is_none()
-            && balance_on();
+        // (A tile keeps its colours balanced at every level.)
+        let balanced = job.params.tileable && job.exemplars() == 1 && job.target.is_none() && balance_on();
         for e in 0..job.exemplars() {
             let n = job.positions(e, level);
             let mut c = vec![0u32; n];
