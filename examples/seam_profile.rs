@@ -1,8 +1,7 @@
 //! Mean difference across each line boundary (columns and rows together; `ONLY=rows` or
 //! `ONLY=cols` for one direction) over seeds 1-8, relative to the mean over all
 //! boundaries, and the mean patch energy: shows whether the wrap stands out from the
-//! lines inside, and the mean boundary by its phase mod 8. Saves seed 1's tile repeated
-//! 2 x 2 as out/seam-<exemplar>-<method>.png.
+//! lines inside. Saves seed 1's tile repeated 2 x 2 as out/seam-<exemplar>-<method>.png.
 //! `cargo run --release --example seam_profile <exemplar|all> <etfmcm|tfmcm|synthesis|bands> [size]`
 //! (`bands`: a tileable synthesis in the banded schedule, which workers share; `mend`: the
 //! fixture mended into a tile, its band `BAND`, default 0.25.)
@@ -95,14 +94,4 @@ fn main() {
     top.sort_by(|&a, &b| rel[b].total_cmp(&rel[a]));
     println!("top: {}", top[..12].iter().map(|&b| format!("{b}:{:.2}", rel[b])).collect::<Vec<_>>().join(" "));
     println!("p10 {:.3} p50 {:.3} p90 {:.3} max {:.3}", s[n / 10], s[n / 2], s[9 * n / 10], s[n - 1]);
-    // Boundaries by their phase on the 8-pixel grid of the coarsest levels: coherent
-    // copies keep an exemplar's own grid (a JPEG's blocks) in phase, and the wrap is
-    // always at phase 7.
-    let phase: Vec<String> = (0..8)
-        .map(|k| {
-            let at: Vec<f64> = rel.iter().skip(k).step_by(8).copied().collect();
-            format!("{k}:{:.2}", at.iter().sum::<f64>() / at.len() as f64)
-        })
-        .collect();
-    println!("by phase mod 8: {}", phase.join(" "));
 }
