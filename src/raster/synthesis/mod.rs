@@ -8,9 +8,9 @@
 //! noise, it drifted towards the exemplar's smoothest region. A tile's quilt covers the
 //! exemplar evenly (`quilt::Quilt::spread`); a tile from an exemplar too small to quilt
 //! grows from noise. Either way a tile keeps to the exemplar's colours by a penalty on
-//! colours copied more than their share, at every level (`reuse::Balance`). A pixel's feature is its causal
-//! neighbourhood at this level and a 3x3 block of the (finished) parent level, read
-//! where the pixel lies on it (`Pass::parent_feature`).
+//! colours copied more than their share, at every level (`reuse::Balance`). A pixel's
+//! feature is its causal neighbourhood at this level and a 3x3 block of the (finished)
+//! parent level, read where the pixel lies on it (`Pass::parent_feature`).
 //! For each exemplar with weight > 0 the best-matching exemplar position is found and
 //! the colours are mixed.
 //!

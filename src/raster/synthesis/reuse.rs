@@ -101,8 +101,11 @@ const BALANCE_BINS: usize = 8;
 /// repetition 0.894 / 0.909 / 0.900 (its own 0.933), energy on 16 at each (fire 0.72
 /// against 0.74), the cloud's strongest row 1.55 / 1.54 / 1.87 (one small blob per tile
 /// at 1.2, as with no balance). Brick's seam score falls from 0.85 with no balance to
-/// 0.77 / 0.73 / 0.76 (seeds 9-16: 0.79 to 0.71 at 1.2): its wrap lies in a mortar
-/// course more often, smoother than the lines about it, not a seam one sees.
+/// 0.77 / 0.73 / 0.76 (seeds 9-16: 0.79 to 0.71 at 1.2). That is the photograph's own
+/// 8-pixel grid, whose lines at phase 7 are smoother than the rest (0.74 of the mean
+/// across rows, 0.80 across columns), kept in phase by coherent copies: the wrap always
+/// falls on phase 7, and examples/seam_lines reads it 0.726 against 0.755 for the
+/// tile's inner lines at that phase.
 ///
 /// On the ten fixtures (tiles at 128, seeds 1-3), with no balance / as now: mean colour
 /// distance 0.110 / 0.097 (fur 0.160 / 0.131, print 0.191 / 0.162, tissue 0.244 /
@@ -125,8 +128,8 @@ const BALANCE_CAP: f32 = 1.2;
 /// all the pale stroma, colour distance 0.68; a clouds tile mostly sky). The quilt
 /// (`quilt`, `start::TILE_QUILT`) lays an even spread of windows, yet the passes then
 /// favour what fits best: a clouds tile's colours stood 0.172 from the photograph's
-/// (the peer's 0.168), and 0.103 balanced. A penalty per position (`Uses`) does not see either, the
-/// drift spreading over a region's many positions. A guide asks for other shares than
+/// (the peer's 0.168), balanced 0.141 (capped; 0.103 uncapped). A penalty per position
+/// (`Uses`) does not see either, the drift spreading over a region's many positions. A guide asks for other shares than
 /// the exemplar's, and a blend's exemplar is seen only where its weight is, so neither
 /// is balanced.
 #[derive(Clone)]
