@@ -145,13 +145,22 @@ fn colours_come_from_the_exemplar_and_a_seed_repeats() {
 #[test]
 fn odd_sizes_are_cropped_and_scaled_with_a_message() {
     let img = crop(&fixture("grass"), 100, 70);
-    let r = seamless_tile(&img, &SeamlessOptions::default(), &mut Silent).unwrap();
+    // E-TFMCM's tile is a square, a power of two on a side: the image's centred square,
+    // scaled to it.
+    let etfmcm = SeamlessOptions { method: Method::Etfmcm, ..Default::default() };
+    let r = seamless_tile(&img, &etfmcm, &mut Silent).unwrap();
     assert_eq!(r.image.width, 64);
     assert!(r.warnings.iter().any(|w| w.contains("Cropped the 100x70 image to its centre 70x70")), "{:?}", r.warnings);
     assert!(r.warnings.iter().any(|w| w.contains("Scaled 70x70 to 64x64")), "{:?}", r.warnings);
-    let r = seamless_tile(&img, &SeamlessOptions { size: Some(128), ..Default::default() }, &mut Silent).unwrap();
+    let r = seamless_tile(&img, &SeamlessOptions { size: Some(128), ..etfmcm }, &mut Silent).unwrap();
     assert_eq!(r.image.width, 128);
-    // Synthesis enlarges by making more texture, not by scaling the image up.
+    // Synthesis, the default, takes the whole image at its own scale: the tile is the
+    // image's size, nothing cropped or scaled.
+    let r = seamless_tile(&img, &SeamlessOptions::default(), &mut Silent).unwrap();
+    assert_eq!((r.image.width, r.image.height), (100, 70));
+    assert!(r.warnings.is_empty(), "{:?}", r.warnings);
+    assert!(r.seam_score < 1.3, "seam {}", r.seam_score);
+    // It enlarges by making more texture, not by scaling the image up...
     let exact = crop(&fixture("grass"), 64, 64);
     let o = SeamlessOptions { method: Method::Synthesis, size: Some(128), ..Default::default() };
     let r = seamless_tile(&exact, &o, &mut Silent).unwrap();
@@ -159,6 +168,14 @@ fn odd_sizes_are_cropped_and_scaled_with_a_message() {
     assert!(r.warnings.iter().any(|w| w.contains("from the 64x64 image at its own scale")), "{:?}", r.warnings);
     assert!(r.seam_score < 1.3, "seam {}", r.seam_score);
     assert!(seamless_tile(&exact, &SeamlessOptions::default(), &mut Silent).unwrap().warnings.is_empty());
+    // ...and makes a smaller tile of the image's own pixels, not of the image scaled
+    // down: unfused, every pixel is one of the 100 x 70 image's colours.
+    let o = SeamlessOptions { size: Some(32), fuse_seams: false, ..Default::default() };
+    let r = seamless_tile(&img, &o, &mut Silent).unwrap();
+    assert_eq!(r.image.width, 32);
+    let colours: std::collections::HashSet<&[u8]> = img.data.chunks_exact(4).collect();
+    assert!(r.image.data.chunks_exact(4).all(|p| colours.contains(p)));
+    assert!(r.warnings.is_empty(), "{:?}", r.warnings);
 }
 
 #[test]

@@ -171,7 +171,8 @@ export interface SeamlessOptions {
   band?: number;
   /** 'synthesis' and 'mend': pixels of the image never copied (opaque white). */
   sampleMask?: Mask;
-  /** Tile side, a power of two from 8 to 512 (default: the largest the image allows). */
+  /** Tile side, a power of two from 8 to 512 (default: 'synthesis' the image's own size,
+   *  at most 512 on a side; E-TFMCM and TFMCM the largest power of two the image allows). */
   size?: number; seed?: number;
   /** Method 'synthesis' only, in place of `size`: any width and height from 8 to 4096
    *  (one alone: a square). */

@@ -8,6 +8,7 @@ pub mod etfmcm;
 pub mod measure;
 pub mod mend;
 pub mod order;
+pub mod prepare;
 pub mod tile;
 
 pub use tile::{seamless_tile, Method, SeamlessOptions, SeamlessResult};

@@ -1,5 +1,6 @@
-//! The seamless-tile entry point (SPEC 3): prepare the exemplar (square, a power of two
-//! on a side), then either E-TFMCM (the paper: grey generation on the channel with the
+//! The seamless-tile entry point (SPEC 3): prepare the exemplar (`prepare`: the image's
+//! square at the tile's side for E-TFMCM, the whole image at its own scale for
+//! synthesis), then either E-TFMCM (the paper: grey generation on the channel with the
 //! lowest max count difference, then colourisation) or our own method, toroidal
 //! Wei-Levoy synthesis (engine 2 with `tileable`), which keeps structure as well as the
 //! histogram. Every tile comes with its restoration rate and seam score.
@@ -18,6 +19,7 @@ use super::cooccurrence::Grey;
 use super::density::{convert, max_count_difference};
 use super::etfmcm::{generate, Decisions, Rule};
 use super::measure::{restoration_rgb, seam_score};
+use super::prepare::{self, Prepared};
 use crate::error::{invalid, Result};
 use crate::progress::{Progress, Throttle};
 use crate::raster::image::over_white;
@@ -51,8 +53,9 @@ pub enum Method {
 #[serde(rename_all = "camelCase", default, deny_unknown_fields)]
 pub struct SeamlessOptions {
     pub method: Method,
-    /// Side of the tile, a power of two from 8 to `MAX_TILE`; by default the largest
-    /// that fits the image.
+    /// Side of the tile, a power of two from 8 to `MAX_TILE`. By default a synthesized
+    /// tile is the image's own size (its exemplar's: `prepare::whole`), an E-TFMCM or
+    /// TFMCM tile the largest power of two that fits the image.
     pub size: Option<usize>,
     /// Width and height of the tile, any from 8 to `MAX_SYNTHESIS_TILE` (toroidal
     /// synthesis only: E-TFMCM's fractal halves a square, power-of-two tile at each
@@ -117,9 +120,10 @@ pub struct SeamlessResult {
 /// Largest tile side (E-TFMCM's indexes grow with the exemplar's pixel count).
 pub const MAX_TILE: usize = 512;
 /// Largest side of a tile made by toroidal synthesis with `width` and `height` (its
-/// exemplar is at most `MAX_TILE` on a side; the output's cost is linear in its pixels).
+/// exemplar is at most `prepare::MAX_EXEMPLAR` on a side; the output's cost is linear in
+/// its pixels).
 pub const MAX_SYNTHESIS_TILE: usize = 4096;
-const MIN_TILE: usize = 8;
+const MIN_TILE: usize = prepare::MIN_SIDE;
 
 /// A seamless tile from `input` (RGBA).
 pub fn seamless_tile(input: &Rgba, opts: &SeamlessOptions, progress: &mut dyn Progress) -> Result<SeamlessResult> {
@@ -135,11 +139,30 @@ pub fn seamless_tile(input: &Rgba, opts: &SeamlessOptions, progress: &mut dyn Pr
         );
     }
     let mut warnings = Vec::new();
-    // Synthesis makes a tile of any size from the image at its own scale; E-TFMCM's
-    // tile is its exemplar's size, so the image is scaled to it.
+    // Synthesis makes a tile of any size from the whole image at its own scale; E-TFMCM's
+    // tile is its exemplar's size, so the image's square is scaled to it.
     let synthesis = opts.method == Method::Synthesis;
-    let (width, height) = tile_size(opts, input)?;
-    let Prepared { ex_side, side, mut rgb, alpha } = prepare(input, width.max(height), !synthesis, &mut warnings)?;
+    let (width, height, Prepared { width: ex_width, height: ex_height, mut rgb, alpha }) = if synthesis {
+        let ex = prepare::whole(input, &mut warnings)?;
+        let (w, h) = tile_size(opts, input, Some((ex.width, ex.height)))?;
+        if w > ex.width || h > ex.height {
+            warnings.push(format!(
+                "The tile is larger than the image: synthesized from the {}x{} image at its own scale.",
+                ex.width, ex.height
+            ));
+        }
+        (w, h, ex)
+    } else {
+        let (w, h) = tile_size(opts, input, None)?;
+        let why = if input.width.min(input.height) > MAX_TILE {
+            format!("tiles are a power of two on a side, at most {MAX_TILE}")
+        } else {
+            "tiles are a power of two on a side".to_string()
+        };
+        (w, h, prepare::square(input, w, &why, &mut warnings)?)
+    };
+    // (E-TFMCM's exemplar is a square of the tile's side.)
+    let side = ex_width;
     let opaque = alpha.iter().all(|&a| a == 255);
     if !(synthesis || opaque) {
         // E-TFMCM's statistics are of colours: it is given the picture as it shows.
@@ -159,7 +182,7 @@ pub fn seamless_tile(input: &Rgba, opts: &SeamlessOptions, progress: &mut dyn Pr
         Method::Synthesis => {
             let mut progress = Throttle::new(progress);
             let img =
-                Image { width: ex_side, height: ex_side, data: rgb.iter().map(|p| p.map(|v| v as f32)).collect() };
+                Image { width: ex_width, height: ex_height, data: rgb.iter().map(|p| p.map(|v| v as f32)).collect() };
             // The sample mask cropped and scaled as the image was: a pixel is kept out
             // where any pixel of its footprint was.
             let sample_masks = match &opts.sample_mask {
@@ -170,7 +193,7 @@ pub fn seamless_tile(input: &Rgba, opts: &SeamlessOptions, progress: &mut dyn Pr
                     }
                     let out: Vec<u8> = m.iter().flat_map(|&a| if a { [0, 0, 0, 255] } else { [255; 4] }).collect();
                     let out = Rgba { width: input.width, height: input.height, data: out };
-                    let scaled = prepare(&out, width.max(height), false, &mut Vec::new())?;
+                    let scaled = prepare::whole(&out, &mut Vec::new())?;
                     vec![Some(scaled.rgb.iter().map(|p| p[0] == 0).collect())]
                 }
             };
@@ -303,9 +326,9 @@ fn refine(
 }
 
 /// The tile's width and height from the options: `width`/`height` (synthesis only, any
-/// size) or `size` (a power of two), by default the largest power of two the image
-/// allows, at most `MAX_TILE`.
-fn tile_size(opts: &SeamlessOptions, input: &Rgba) -> Result<(usize, usize)> {
+/// size) or `size` (a power of two); by default the size of a synthesized tile's
+/// `exemplar`, else the largest power of two the image allows, at most `MAX_TILE`.
+fn tile_size(opts: &SeamlessOptions, input: &Rgba, exemplar: Option<(usize, usize)>) -> Result<(usize, usize)> {
     let short = input.width.min(input.height);
     match (opts.width.or(opts.height), opts.size) {
         (Some(_), Some(_)) => invalid("Give the tile's `size` or its `width` and `height`, not both."),
@@ -329,89 +352,11 @@ fn tile_size(opts: &SeamlessOptions, input: &Rgba) -> Result<(usize, usize)> {
             "The tile size must be a power of two from {MIN_TILE} to {MAX_TILE} (got {s}); for any other size, pass `width` and `height` instead of `size` (method 'synthesis')."
         )),
         (None, Some(s)) => Ok((s, s)),
+        (None, None) if let Some(size) = exemplar => Ok(size),
         (None, None) => {
             // `prepare` refuses images under MIN_TILE; `max(1)` keeps ilog2 defined first.
             let s = (1usize << short.max(1).ilog2()).min(MAX_TILE);
             Ok((s, s))
         }
     }
-}
-
-/// The exemplar as `prepare` makes it.
-struct Prepared {
-    /// The exemplar's side and the tile's.
-    ex_side: usize,
-    side: usize,
-    /// Its colours, averaged over each pixel's footprint by their alpha (a clear
-    /// ground's colour does not darken the edges of what is drawn on it), and its alpha.
-    rgb: Vec<[u8; 3]>,
-    alpha: Vec<u8>,
-}
-
-/// Crops `input` to a centred square and scales it to the tile's side `side` (its longer
-/// one), saying so; without `enlarge`, a tile larger than the image keeps the image at
-/// its own size, and the exemplar is at most `MAX_TILE` on a side.
-fn prepare(input: &Rgba, side: usize, enlarge: bool, warnings: &mut Vec<String>) -> Result<Prepared> {
-    let (w, h) = (input.width, input.height);
-    crate::raster::image::check_size(w, h, "image")?;
-    if input.data.len() != w * h * 4 {
-        return invalid(format!("The image data has {} bytes; {w}x{h} RGBA needs {}.", input.data.len(), w * h * 4));
-    }
-    let short = w.min(h);
-    if short < MIN_TILE {
-        return invalid(format!("The image is {w}x{h}; a seamless tile needs at least {MIN_TILE} pixels on a side."));
-    }
-    let (x0, y0) = ((w - short) / 2, (h - short) / 2);
-    if w != h {
-        warnings.push(format!("Cropped the {w}x{h} image to its centre {short}x{short} (tiles are square)."));
-    }
-    let ex_side = if enlarge { side } else { side.min(short).min(MAX_TILE) };
-    if ex_side < side && ex_side == short {
-        warnings.push(format!(
-            "The tile is larger than the image: synthesized from the {short}x{short} image at its own scale."
-        ));
-    }
-    if short != ex_side {
-        let why = if enlarge {
-            format!(
-                "tiles are a power of two on a side{}",
-                if short > MAX_TILE { format!(", at most {MAX_TILE}") } else { String::new() }
-            )
-        } else {
-            format!("the exemplar of a synthesized tile is at most {MAX_TILE} on a side, and at most the tile's")
-        };
-        warnings.push(format!("Scaled {short}x{short} to {ex_side}x{ex_side} ({why})."));
-    }
-    // Box filter over each output pixel's footprint (bilinear-like when enlarging).
-    let scale = short as f64 / ex_side as f64;
-    let mut rgb = Vec::with_capacity(ex_side * ex_side);
-    let mut alpha = Vec::with_capacity(ex_side * ex_side);
-    for y in 0..ex_side {
-        for x in 0..ex_side {
-            let (fx0, fy0) = (x as f64 * scale, y as f64 * scale);
-            let (sx0, sy0) = (fx0.floor() as usize, fy0.floor() as usize);
-            let sx1 = ((fx0 + scale).ceil() as usize).clamp(sx0 + 1, short);
-            let sy1 = ((fy0 + scale).ceil() as usize).clamp(sy0 + 1, short);
-            let (mut acc, mut weighted, mut coverage) = ([0u32; 3], [0u64; 3], 0u64);
-            for sy in sy0..sy1 {
-                for sx in sx0..sx1 {
-                    let i = ((y0 + sy) * w + x0 + sx) * 4;
-                    let a = input.data[i + 3] as u64;
-                    for c in 0..3 {
-                        acc[c] += input.data[i + c] as u32;
-                        weighted[c] += input.data[i + c] as u64 * a;
-                    }
-                    coverage += a;
-                }
-            }
-            let n = ((sx1 - sx0) * (sy1 - sy0)) as u32;
-            rgb.push(if coverage == 0 || coverage == 255 * n as u64 {
-                acc.map(|v| ((v + n / 2) / n) as u8)
-            } else {
-                weighted.map(|v| ((v + coverage / 2) / coverage) as u8)
-            });
-            alpha.push(((coverage + n as u64 / 2) / n as u64) as u8);
-        }
-    }
-    Ok(Prepared { ex_side, side, rgb, alpha })
 }

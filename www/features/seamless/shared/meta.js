@@ -6,7 +6,7 @@ export const defaultOptions = {
   // GIMP packages it had lower patch energy than refined E-TFMCM (0.88 against 0.91 of
   // texture-synthesis's, mean over seeds 1-3) and every seam within 0.8-1.2 (10 of 12).
   method: 'synthesis', // 'etfmcm' | 'tfmcm'
-  size: '', // '' = the largest power of two the image allows; 'custom' = width x height
+  size: '', // '' = the image's own size (E-TFMCM: the largest power of two it allows); 'custom' = width x height
   width: 300, // a custom tile's (toroidal synthesis only)
   height: 200,
   seed: 1,
