@@ -87,42 +87,66 @@ pub fn whole(input: &Rgba, warnings: &mut Vec<String>) -> Result<Prepared> {
     Ok(resample(input, ((w - cw) / 2, (h - ch) / 2, cw, ch), (ow, oh)))
 }
 
-/// The region `(x0, y0, cw, ch)` of `input` scaled to `(ow, oh)` by a box filter over
-/// each output pixel's footprint (bilinear-like when enlarging).
+/// The region `(x0, y0, cw, ch)` of `input` scaled to `(ow, oh)`, each axis apart
+/// (`taps`): shrinking, each output pixel is the mean of the input pixels under its
+/// footprint weighted by how much of each it covers (an area-weighted box filter);
+/// enlarging, the two nearest input pixels weighted by distance (linear). Colours are
+/// weighted by alpha, so a clear pixel's hidden colour does not bleed into its
+/// neighbours. (The box once took every pixel the footprint touched at full weight:
+/// shrinking a 640x900 gravel photograph to 364x512 it averaged 2-3 pixels a side for
+/// 1.76, and the tile's sharpness, mean |dx| of luminance, was 12.8 against 14.9 for the
+/// photograph area-weighted to the same size, helper-66's trial.)
 fn resample(input: &Rgba, (x0, y0, cw, ch): (usize, usize, usize, usize), (ow, oh): (usize, usize)) -> Prepared {
-    let (sx, sy) = (cw as f64 / ow as f64, ch as f64 / oh as f64);
+    let (across, down) = (taps(cw, ow), taps(ch, oh));
     let mut rgb = Vec::with_capacity(ow * oh);
     let mut alpha = Vec::with_capacity(ow * oh);
-    for y in 0..oh {
-        let (fy0, fy1) = (y as f64 * sy, (y + 1) as f64 * sy);
-        let ya = fy0.floor() as usize;
-        let yb = (fy1.ceil() as usize).clamp(ya + 1, ch);
-        for x in 0..ow {
-            let (fx0, fx1) = (x as f64 * sx, (x + 1) as f64 * sx);
-            let xa = fx0.floor() as usize;
-            let xb = (fx1.ceil() as usize).clamp(xa + 1, cw);
-            let (mut acc, mut weighted, mut coverage) = ([0u32; 3], [0u64; 3], 0u64);
-            for py in ya..yb {
-                for px in xa..xb {
+    for ty in &down {
+        for tx in &across {
+            let (mut plain, mut weighted, mut coverage, mut total) = ([0f64; 3], [0f64; 3], 0f64, 0f64);
+            for &(py, wy) in ty {
+                for &(px, wx) in tx {
                     let i = ((y0 + py) * input.width + x0 + px) * 4;
-                    let a = input.data[i + 3] as u64;
+                    let (w, a) = (wy * wx, input.data[i + 3] as f64 / 255.0);
                     for c in 0..3 {
-                        acc[c] += input.data[i + c] as u32;
-                        weighted[c] += input.data[i + c] as u64 * a;
+                        plain[c] += w * input.data[i + c] as f64;
+                        weighted[c] += w * a * input.data[i + c] as f64;
                     }
-                    coverage += a;
+                    coverage += w * a;
+                    total += w;
                 }
             }
-            let n = ((xb - xa) * (yb - ya)) as u32;
-            rgb.push(if coverage == 0 || coverage == 255 * n as u64 {
-                acc.map(|v| ((v + n / 2) / n) as u8)
-            } else {
-                weighted.map(|v| ((v + coverage / 2) / coverage) as u8)
-            });
-            alpha.push(((coverage + n as u64 / 2) / n as u64) as u8);
+            // (Wholly clear: the plain mean, so the colour under it is kept.)
+            let colour = if coverage > 1e-9 { weighted.map(|v| v / coverage) } else { plain.map(|v| v / total) };
+            rgb.push(colour.map(|v| v.round().clamp(0.0, 255.0) as u8));
+            alpha.push((255.0 * coverage / total).round().clamp(0.0, 255.0) as u8);
         }
     }
     Prepared { width: ow, height: oh, rgb, alpha }
+}
+
+/// For each of `out` pixels along an axis of `len` input pixels, the input pixels it
+/// reads and their weights (summing to 1): the share of each under its footprint when
+/// shrinking, the two nearest by distance when enlarging.
+fn taps(len: usize, out: usize) -> Vec<Vec<(usize, f64)>> {
+    let scale = len as f64 / out as f64;
+    (0..out)
+        .map(|o| {
+            let taps: Vec<(usize, f64)> = if scale >= 1.0 {
+                let (lo, hi) = (o as f64 * scale, (o + 1) as f64 * scale);
+                (lo.floor() as usize..(hi.ceil() as usize).min(len))
+                    .map(|i| (i, (hi.min(i as f64 + 1.0) - lo.max(i as f64)).max(0.0)))
+                    .filter(|&(_, w)| w > 1e-9)
+                    .collect()
+            } else {
+                let centre = ((o as f64 + 0.5) * scale - 0.5).clamp(0.0, (len - 1) as f64);
+                let i = centre.floor() as usize;
+                let t = centre - i as f64;
+                vec![(i, 1.0 - t), ((i + 1).min(len - 1), t)]
+            };
+            let sum: f64 = taps.iter().map(|t| t.1).sum();
+            taps.into_iter().map(|(i, w)| (i, w / sum)).collect()
+        })
+        .collect()
 }
 
 #[cfg(test)]
@@ -151,6 +175,22 @@ mod tests {
         let p = whole(&image(4000, 10), &mut warnings).unwrap();
         assert_eq!((p.width, p.height), (512, 8));
         assert!(warnings[0].contains("Cropped the 4000x10 image to its centre 640x10"), "{warnings:?}");
+    }
+
+    #[test]
+    fn shrinking_weighs_each_pixel_by_the_share_it_covers() {
+        // Three columns into two: the middle one is half under each output pixel.
+        let mut input = Rgba { width: 3, height: 1, data: vec![0, 0, 0, 255, 90, 90, 90, 255, 180, 180, 180, 255] };
+        let p = resample(&input, (0, 0, 3, 1), (2, 1));
+        assert_eq!(p.rgb, vec![[30; 3], [150; 3]]);
+        // Enlarging: linear between the nearest two (output 4's centre is input 1.75).
+        let p = resample(&input, (0, 0, 3, 1), (6, 1));
+        assert_eq!(p.rgb[4][0], 158);
+        assert_eq!(taps(3, 6).iter().map(|t| t.len()).max(), Some(2));
+        // A clear pixel's colour does not bleed: the left output is its opaque pixels'.
+        input.data[7] = 0;
+        let p = resample(&input, (0, 0, 3, 1), (2, 1));
+        assert_eq!((p.rgb[0], p.alpha[0]), ([0; 3], 170));
     }
 
     #[test]
