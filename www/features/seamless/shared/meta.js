@@ -26,7 +26,7 @@ export const methods = [
 export const methodHelp = {
   etfmcm: 'Rebuilds the tile from how the image\'s colours sit next to one another, so the tile keeps the image\'s colours in their proportions; refined, its detail is then re-made from the image, otherwise shapes larger than a few pixels break up.',
   tfmcm: 'The same idea without the fractal refinement: faster, rougher. For comparison.',
-  synthesis: 'Grows the tile pixel by pixel from the image\'s own neighbourhoods, wrapping round its edges: keeps structure (bricks, weave, wood grain).',
+  synthesis: 'Grows the tile pixel by pixel from the image\'s own neighbourhoods, wrapping round its edges: keeps structure (bricks, weave, wood grain). A photograph of a few large pieces (big stone blocks, wide planks) breaks up: \u201cMake it tile\u201d in Fill & mend keeps them whole.',
 };
 
 /** Built-in photographs (CC0, public domain or unrestricted; see tests/fixtures/textures/SOURCES.md). */
