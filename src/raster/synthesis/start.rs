@@ -286,6 +286,15 @@ fn field_quilt(ex: &Exemplar, level: usize, picture: &[Px], size: (usize, usize)
 /// before and the peer's 0.095, clouds 0.172 against 0.168, wisps 0.117 against
 /// 0.098, plaster, grass); repetition on 15 (sand 0.869 against its own 0.933, from
 /// 0.900); seams in 0.8-1.2 on 16 (from 15; brick 0.85).
+///
+/// The windows' one-pixel overlap makes their cut a straight line, and on soft
+/// photographs some windows' edges still show in the tile (a bright puff of cloud with
+/// a straight side: helper-66's trial, supertuxkart-data's clouds). Wider overlaps, for
+/// cuts that can wander, were measured over seeds 1-8 on the sixteen and not kept: 6-pixel
+/// windows overlapping by 2 (so 4 apart), colour at most the peer's on 12 and energy on
+/// 15 (sand 6.59 against 6.46); 7-pixel windows overlapping by 2 (5 apart, as now),
+/// colour on 11 (marble 0.155, mist 0.359 against the peer's 0.095, 0.347), and neither
+/// took the straight edges away.
 const TILE_QUILT: Quilt = Quilt { side: 6, candidates: 8, spread: 3.0 };
 
 /// Whether tiles quilt (always, but for a probe's `PATTERNSYNTH_TILE_QUILT=0`, which
