@@ -26,7 +26,10 @@
 //! is copied already against the share each pixel should take (`reach`), so that the
 //! quilt covers the exemplar in about those proportions rather than copying some
 //! regions several times and others never. The windows that close a torus's wrap go
-//! by their fit alone.
+//! by their fit alone. With both `spread` and a guide (a refined E-TFMCM tile following
+//! its field: `synthesis::start::FIELD_QUILT`), the guide is one more term of the cost
+//! of each of the `candidates` random origins, on the fit's scale, and the best is
+//! taken, as without a guide.
 //!
 //! Windows are clipped at the output's edges, or, for a tile, laid round the torus:
 //! spread evenly so that every gap is at most a step, each row's last window cut against
@@ -49,7 +52,8 @@ pub struct Quilt {
     /// exemplar pixels under it are copied already, per the share each should copy
     /// (`reach`). Without it, a tile about the exemplar's size copies some regions two
     /// or three times and others never: the tile repeats and its colours drift from the
-    /// exemplar's. (A guided quilt follows its guide instead.) The windows that close
+    /// exemplar's. (A guided quilt with no coverage term follows its guide alone; with
+    /// one, the guide is a third term: see the module's doc.) The windows that close
     /// a torus's wrap leave the term out (see `lay`), and a window fitting worse than
     /// `MISFIT` is charged as if what it covers were copied its share already.
     pub spread: f32,
@@ -101,8 +105,9 @@ impl Quilt {
     /// `window_for` is. With `allowed` (a sample mask), a window is drawn again (up to 16
     /// times) while its corners or centre are not allowed (guided, with every origin
     /// tried, those not allowed are skipped); positions it still holds that are not
-    /// allowed are the caller's to replace. With `guide`, windows follow its target too
-    /// (see the module's doc).
+    /// allowed are the caller's to replace. With `guide`, windows follow its target too,
+    /// trying up to `candidates` origins and drawing among the near-best, or with
+    /// `spread`, taking the best of `candidates` random ones (see the module's doc).
     pub fn lay(
         &self,
         ex: &Image,

@@ -6,7 +6,7 @@
 //! histogram. Every tile comes with its restoration rate and seam score.
 //!
 //! Beyond the paper: by default (`refine`) the E-TFMCM (or TFMCM) tile is refined by
-//! toroidal synthesis that starts from its layout, so the co-occurrence field gives the
+//! toroidal synthesis that starts from a quilt following its layout, so the co-occurrence field gives the
 //! arrangement of colours and the exemplar's neighbourhoods give the detail. The paper's
 //! tile, decided pixel by pixel, breaks bricks, shingles and letters into pixelated
 //! pieces that repeat with the tile; over the ten fixture photographs (128, seeds 1-3,
@@ -37,13 +37,13 @@ pub enum Method {
     /// height, and keeps structure (bricks) that E-TFMCM's layout breaks on small crops.
     /// Its coarsest level starts from a quilt of the photograph's windows laid round the
     /// torus, chosen to cover the photograph evenly (`synthesis::start::TILE_QUILT`). On
-    /// twelve held-out photographs (`bench/heldout-data.sh`, 128, seeds 1-8,
+    /// the sixteen held-out photographs of `bench/heldout-data.sh` (128, seeds 1-8,
     /// `examples/tile_quality` with texture-synthesis 0.8.3 `--tiling` beside it) its
-    /// tiles' patch energy is a median 0.89 of the peer's (refined E-TFMCM 0.94), at or
-    /// below it on 11 (8), sand 1.05; colours at most the peer's distance on 11 (8);
-    /// repetition within 0.05 of the photograph's own on 12 (12); seams within 0.8-1.2
-    /// on 11 (12), brick's wrap 0.79 smoother than its lines. Grown from noise, as before
-    /// the quilt: 0.99, 7, 10, 11 and 11.
+    /// tiles' patch energy is at or below the peer's on 16 (refined E-TFMCM: 15, and
+    /// within 1.1x on 16), a median 0.87 of it (0.87); colours at most the peer's
+    /// distance on 15 (15; plaster over by both); repetition within 0.05 of the
+    /// photograph's own on 16 (16); seams within 0.8-1.2 on 15 (16), brick's wrap 0.73
+    /// on the photograph's own 8-pixel grid (`examples/seam_lines`).
     Synthesis,
     /// The image kept, a band around its wrap re-made (`mend`).
     Mend,

@@ -133,8 +133,10 @@ impl Job {
 /// How a tile that starts from a picture (refined E-TFMCM: its co-occurrence field) lays
 /// its coarsest level: a quilt round the torus whose windows are chosen, besides their
 /// fit and coverage (`TILE_QUILT`), by how near their luminance is to the picture's
-/// where they are laid (`FIELD_WEIGHT`, on the coverage term's scale), among more
-/// origins than a plain tile's so that there are some that follow it.
+/// where they are laid (`FIELD_WEIGHT` times its mean squared difference over twice the
+/// exemplar's summed RGB variance, the fit's scale: so on a grey exemplar about a third
+/// of a random window's fit, and less where the exemplar varies more in hue than in
+/// light), among more origins than a plain tile's so that there are some that follow it.
 ///
 /// Until this, each pixel took the exemplar position whose neighbourhood best matched
 /// the picture's (`Job::layout`, still the start of an output too small to quilt). On
@@ -191,7 +193,8 @@ fn luminance(p: &[f32]) -> f32 {
 }
 
 /// `values` given the distribution of `to`, rank for rank (histogram matching): the
-/// picture's arrangement of light and dark in the exemplar's own shares of them.
+/// picture's arrangement of light and dark in the exemplar's own shares of them. Equal
+/// values stay equal.
 fn matched(values: Vec<f32>, to: &[f32]) -> Vec<f32> {
     if to.is_empty() {
         return values;
@@ -201,8 +204,15 @@ fn matched(values: Vec<f32>, to: &[f32]) -> Vec<f32> {
     let mut rank: Vec<usize> = (0..values.len()).collect();
     rank.sort_by(|&a, &b| values[a].total_cmp(&values[b]));
     let mut out = vec![0.0; values.len()];
-    for (r, &i) in rank.iter().enumerate() {
-        out[i] = sorted[(r * sorted.len() + sorted.len() / 2) / values.len().max(1)];
+    // Equal values take the quantile of their run's middle rank: ranked one by one, a
+    // flat region's target would run from dark at its top to light at its bottom.
+    let mut start = 0;
+    while start < rank.len() {
+        let end = start + rank[start..].iter().take_while(|&&i| values[i] == values[rank[start]]).count();
+        let middle = (start + end - 1) / 2;
+        let value = sorted[(middle * sorted.len() + sorted.len() / 2) / values.len()];
+        rank[start..end].iter().for_each(|&i| out[i] = value);
+        start = end;
     }
     out
 }
@@ -318,5 +328,20 @@ pub(super) fn quilt_params(tileable: bool) -> Quilt {
         TILE_QUILT
     } else {
         Quilt::default()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::matched;
+
+    #[test]
+    fn matching_keeps_the_order_and_takes_the_exemplar_s_values() {
+        // Four values in the exemplar's eight: each takes the exemplar's value at the
+        // middle of its rank's share (ranks 0-3: positions 1, 3, 5, 7).
+        let to = [80.0, 10.0, 70.0, 20.0, 60.0, 30.0, 50.0, 40.0];
+        assert_eq!(matched(vec![0.3, 0.1, 0.4, 0.2], &to), vec![60.0, 20.0, 80.0, 40.0]);
+        // A flat region stays flat: equal values take their run's middle rank (1).
+        assert_eq!(matched(vec![5.0, 5.0, 5.0, 9.0], &to), vec![40.0, 40.0, 40.0, 80.0]);
     }
 }
