@@ -16,8 +16,13 @@ use serde::Deserialize;
 
 /// The luminance (Rec. 601) of each pixel, in all three channels.
 pub fn luminance(img: &Image) -> Image {
-    let data = img.data.iter().map(|c| [0.299 * c[0] + 0.587 * c[1] + 0.114 * c[2]; 3]).collect();
+    let data = img.data.iter().map(|c| [luma(c); 3]).collect();
     Image { width: img.width, height: img.height, data }
+}
+
+/// The luminance (Rec. 601) of one colour (its first three channels).
+pub fn luma(c: &[f32]) -> f32 {
+    0.299 * c[0] + 0.587 * c[1] + 0.114 * c[2]
 }
 
 /// Options of `transfer_style`.

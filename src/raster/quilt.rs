@@ -233,15 +233,13 @@ impl Quilt {
                         let closing = torus && (r + 1 == rows.len() || k + 1 == cols.len());
                         for _ in 0..self.candidates.max(1) {
                             let origin = random(rng);
-                            let (mut e, g) = sums(origin);
+                            let (sum, g) = sums(origin);
                             // (Both terms on the coverage term's scale: over the exemplar's
-                            // contrast.)
-                            let fit = e / overlap.max(1.0) / contrast.max(1e-6);
+                            // contrast. Unguided and without it, the sum alone ranks.)
+                            let fit = sum / overlap.max(1.0) / contrast.max(1e-6);
                             let led = guide
                                 .map_or(0.0, |gd| gd.weight * g / (cells.len() as f32).max(1.0) / contrast.max(1e-6));
-                            if guide.is_some() {
-                                e = fit + led;
-                            }
+                            let mut e = if guide.is_some() { fit + led } else { sum };
                             if self.spread > 0.0 && !closing {
                                 let base = pos(origin, 0, 0) as usize;
                                 let under = (0..b).flat_map(|dy| (0..b).map(move |dx| base + dy * ew + dx));

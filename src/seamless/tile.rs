@@ -6,8 +6,9 @@
 //! histogram. Every tile comes with its restoration rate and seam score.
 //!
 //! Beyond the paper: by default (`refine`) the E-TFMCM (or TFMCM) tile is refined by
-//! toroidal synthesis that starts from a quilt following its layout, so the co-occurrence field gives the
-//! arrangement of colours and the exemplar's neighbourhoods give the detail. The paper's
+//! toroidal synthesis that starts from a quilt following its layout, so the
+//! co-occurrence field gives the arrangement of colours and the exemplar's
+//! neighbourhoods give the detail. The paper's
 //! tile, decided pixel by pixel, breaks bricks, shingles and letters into pixelated
 //! pieces that repeat with the tile; over the ten fixture photographs (128, seeds 1-3,
 //! `examples/tile_quality`) refining lowered its patch energy on every one (mean 9.11
@@ -308,8 +309,8 @@ fn mended(input: &Rgba, opts: &SeamlessOptions, progress: &mut dyn Progress) -> 
 /// exemplar's own neighbourhoods the detail. (A level too small to quilt starts from
 /// the field's layout: each pixel the exemplar position whose neighbourhood best
 /// matches the field's there. That was every tile's start until the quilt, and soft
-/// exemplars repeated: fire and mist at 0.19 against their own 0.34 and 0.31.) This is not in the
-/// paper: its tile is the field, colourised, whose pixel-by-pixel decisions break
+/// exemplars repeated: fire and mist at 0.19 against their own 0.34 and 0.31.) This is
+/// not in the paper: its tile is the field, colourised, whose pixel-by-pixel decisions break
 /// structured exemplars into pixelated pieces that repeat with the tile.
 fn refine(
     field: &[[u8; 3]],

@@ -15,6 +15,7 @@ use crate::raster::bands;
 use crate::raster::image::{check_output, check_size, Rgba};
 use crate::raster::neighbourhood::Shape;
 use crate::raster::pyramid::{self, Edge};
+use crate::raster::quilt::Quilt;
 use crate::rng::Rng;
 use std::sync::OnceLock;
 
@@ -193,11 +194,15 @@ impl Job {
                 .map(|l| l.data.iter().map(|p| scale * p[0]).collect())
                 .collect()
         });
+        // Whether every exemplar's coarsest level takes `quilt`'s windows.
+        let fits = |quilt: &Quilt, torus: bool| {
+            exs.iter().all(|ex| {
+                let coarsest = &ex.levels[levels - 1];
+                quilt.window_for((coarsest.width, coarsest.height), sizes[levels - 1], torus).is_some()
+            })
+        };
         let quilt = quilt_params(params.tileable);
-        let quiltable = exs.iter().all(|ex| {
-            let coarsest = &ex.levels[levels - 1];
-            quilt.window_for((coarsest.width, coarsest.height), sizes[levels - 1], params.tileable).is_some()
-        });
+        let quiltable = fits(&quilt, params.tileable);
         let start = match &params.start {
             Some(picture) => {
                 if (picture.width, picture.height) != (width, height) {
@@ -211,12 +216,7 @@ impl Job {
                 let picture = coarsest.data.iter().map(|&c| px(c)).collect();
                 // (A tile's picture is followed by a quilt where the level is large
                 // enough: `start::FIELD_QUILT`.)
-                let field = field_params().0;
-                let quilts = exs.iter().all(|ex| {
-                    let coarsest = &ex.levels[levels - 1];
-                    field.window_for((coarsest.width, coarsest.height), sizes[levels - 1], true).is_some()
-                });
-                if params.tileable && quilts && field_quilt_on() {
+                if params.tileable && fits(&field_params().0, true) && field_quilt_on() {
                     Some(Start::FieldQuilt(picture))
                 } else {
                     Some(Start::Layout(picture))

@@ -5,6 +5,7 @@
 use super::exemplar::{distance, Exemplar, Offsets};
 use super::lanes::Px;
 use super::Job;
+use crate::raster::guide::luma;
 use crate::raster::image::torus_index;
 use crate::raster::quilt::{Quilt, QuiltGuide};
 use crate::rng::Rng;
@@ -187,11 +188,6 @@ pub(super) fn field_params() -> (Quilt, f32) {
     (FIELD_QUILT, FIELD_WEIGHT)
 }
 
-/// Luminance, the lane a picture guides a tile's quilt by.
-fn luminance(p: &[f32]) -> f32 {
-    0.299 * p[0] + 0.587 * p[1] + 0.114 * p[2]
-}
-
 /// `values` given the distribution of `to`, rank for rank (histogram matching): the
 /// picture's arrangement of light and dark in the exemplar's own shares of them. Equal
 /// values stay equal.
@@ -199,10 +195,9 @@ fn matched(values: Vec<f32>, to: &[f32]) -> Vec<f32> {
     if to.is_empty() {
         return values;
     }
-    let mut sorted = to.to_vec();
-    sorted.sort_by(f32::total_cmp);
-    let mut rank: Vec<usize> = (0..values.len()).collect();
-    rank.sort_by(|&a, &b| values[a].total_cmp(&values[b]));
+    // (`order`'s sort: each closure given to `sort_by` is its own copy in the wasm.)
+    let sorted: Vec<f32> = crate::order::sorted(to, |&v| v as f64);
+    let rank = crate::order::by_key(&values.iter().map(|&v| v as f64).collect::<Vec<_>>());
     let mut out = vec![0.0; values.len()];
     // Equal values take the quantile of their run's middle rank: ranked one by one, a
     // flat region's target would run from dark at its top to light at its bottom.
@@ -223,8 +218,9 @@ fn field_quilt(ex: &Exemplar, level: usize, picture: &[Px], size: (usize, usize)
     let (quilt, weight) = field_params();
     let plane = &ex.levels[level];
     let image = plane.image();
-    let lane: Vec<f32> = image.data.iter().map(|p| luminance(p)).collect();
-    let target = matched(picture.iter().map(|p| luminance(p)).collect(), &lane);
+    // (Luminance: the lane a picture guides a tile's quilt by.)
+    let lane: Vec<f32> = image.data.iter().map(|p| luma(p)).collect();
+    let target = matched(picture.iter().map(|p| luma(p)).collect(), &lane);
     let guide = QuiltGuide { exemplar: &lane, target: &target, weight };
     let mut map = quilt.lay(&image, plane.allowed_mask(), Some(guide), size, true, rng)?;
     // (As a plain tile's quilt.)
