@@ -79,6 +79,13 @@ fn main() {
                 sum[2] += repetition_fair(&out, (ex.width, ex.height), 24.min(ex.width / 4), 8, 1);
                 sum[3] += repetition(&ex, 24.min(ex.width / 4), 1);
                 sum[4] += seam;
+                // (SAVE_ALL: every seed's tile, once, to out/all/.)
+                if std::env::var("SAVE_ALL").is_ok() {
+                    std::fs::create_dir_all("out/all").unwrap();
+                    let png = patternsynth::raster::codec::encode_png(tile.width, tile.height, &tile.data).unwrap();
+                    let tag = label.replace([' ', '(', ')', '-'], "");
+                    std::fs::write(format!("out/all/{stem}-{tag}-s{seed}.png"), png).unwrap();
+                }
                 if seed == first {
                     textures::save_repeated(
                         &tile,

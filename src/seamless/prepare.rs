@@ -30,8 +30,8 @@ pub struct Prepared {
     pub alpha: Vec<u8>,
 }
 
-/// Refuses an image that is not what its size says, or too small to tile.
-fn check(input: &Rgba) -> Result<()> {
+/// Refuses an image that is not what its size says, too small to tile, or clear.
+pub(crate) fn check(input: &Rgba) -> Result<()> {
     let (w, h) = (input.width, input.height);
     crate::raster::image::check_size(w, h, "image")?;
     if input.data.len() != w * h * 4 {
@@ -39,6 +39,11 @@ fn check(input: &Rgba) -> Result<()> {
     }
     if w.min(h) < MIN_SIDE {
         return invalid(format!("The image is {w}x{h}; a seamless tile needs at least {MIN_SIDE} pixels on a side."));
+    }
+    // (A clear image would give a clear tile, or E-TFMCM's white one: nothing a person
+    // meant to tile.)
+    if input.data.chunks_exact(4).all(|p| p[3] == 0) {
+        return invalid("The image is fully transparent: there is nothing in it to tile.");
     }
     Ok(())
 }
@@ -50,10 +55,15 @@ pub fn square(input: &Rgba, side: usize, why: &str, warnings: &mut Vec<String>) 
     let (w, h) = (input.width, input.height);
     let short = w.min(h);
     if w != h {
-        warnings.push(format!("Cropped the {w}x{h} image to its centre {short}x{short} (tiles are square)."));
+        // (A strip loses most of itself: say which method keeps it whole.)
+        let kept = 100 * short / w.max(h);
+        warnings.push(format!(
+            "Cropped the {w}x{h} image to its centre {short}x{short}, {kept}% of it (tiles are square; method 'synthesis' uses the whole image)."
+        ));
     }
     if short != side {
-        warnings.push(format!("Scaled {short}x{short} to {side}x{side} ({why})."));
+        let verb = if side > short { "Enlarged" } else { "Scaled" };
+        warnings.push(format!("{verb} {short}x{short} to {side}x{side} ({why})."));
     }
     Ok(resample(input, ((w - short) / 2, (h - short) / 2, short, short), (side, side)))
 }
@@ -201,5 +211,17 @@ mod tests {
         assert!(warnings[0].contains("Cropped the 100x70 image to its centre 70x70"));
         assert!(warnings[1].contains("Scaled 70x70 to 64x64"));
         assert!(square(&image(6, 50), 8, "", &mut warnings).is_err());
+        // A strip says how little is kept and which method keeps it; enlarging says so.
+        let mut warnings = Vec::new();
+        square(&image(9, 300), 16, "tiles are a power of two on a side", &mut warnings).unwrap();
+        assert!(warnings[0].contains("centre 9x9, 3% of it") && warnings[0].contains("'synthesis'"), "{warnings:?}");
+        assert!(warnings[1].starts_with("Enlarged 9x9 to 16x16"), "{warnings:?}");
+        // A fully transparent image is refused, by every method's preparation.
+        let mut clear = image(16, 16);
+        clear.data.chunks_exact_mut(4).for_each(|p| p[3] = 0);
+        for made in [whole(&clear, &mut warnings), square(&clear, 16, "", &mut warnings)] {
+            let e = made.err().expect("refused").to_string();
+            assert!(e.contains("fully transparent"), "{e}");
+        }
     }
 }

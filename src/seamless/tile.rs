@@ -270,13 +270,7 @@ fn layout_channel(channels: &[Grey]) -> usize {
 /// Method 'mend': the image itself, any size, a band around its wrap re-made.
 fn mended(input: &Rgba, opts: &SeamlessOptions, progress: &mut dyn Progress) -> Result<SeamlessResult> {
     let (w, h) = (input.width, input.height);
-    crate::raster::image::check_size(w, h, "image")?;
-    if input.data.len() != w * h * 4 {
-        return invalid(format!("The image data has {} bytes; {w}x{h} RGBA needs {}.", input.data.len(), w * h * 4));
-    }
-    if w < MIN_TILE || h < MIN_TILE {
-        return invalid(format!("The image is {w}x{h}; a seamless tile needs at least {MIN_TILE} pixels on a side."));
-    }
+    prepare::check(input)?;
     if opts.size.is_some() || opts.width.is_some() || opts.height.is_some() {
         return invalid("Method 'mend' keeps the image's own size: leave out `size`, `width` and `height`.");
     }

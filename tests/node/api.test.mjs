@@ -219,6 +219,16 @@ test('the option types declare exactly the options the engine reads', () => {
   assert.equal(ps.blendTextures(img, img, { width: 9, height: 9, fuseSeams: false }).width, 9);
 });
 
+test('seamlessTile refuses a clear image, and says what a strip loses to a square', () => {
+  const clear = { width: 16, height: 16, data: new Uint8Array(16 * 16 * 4) };
+  for (const method of ['synthesis', 'etfmcm', 'mend']) {
+    assert.throws(() => ps.seamlessTile(clear, { method }), /fully transparent: there is nothing in it to tile/, method);
+  }
+  const data = new Uint8Array(9 * 300 * 4).map((_, i) => (i % 4 === 3 ? 255 : (i * 37) % 256));
+  const r = ps.seamlessTile({ width: 9, height: 300, data }, { method: 'etfmcm' });
+  assert.match(r.warnings.join(' '), /centre 9x9, 3% of it \(tiles are square; method 'synthesis' uses the whole image\)/);
+});
+
 test('the packed package holds every file its modules import or fetch', async () => {
   const { execFileSync } = await import('node:child_process');
   const { readFileSync } = await import('node:fs');

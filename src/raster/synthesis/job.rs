@@ -426,11 +426,19 @@ impl Job {
     /// on each side (the whole torus when that is all of it), so that bands coloured
     /// apart meet as the whole output fused at once would, within rounding.
     pub fn fused_band(&self, src: &[Vec<u32>], first: usize, rows: usize) -> Vec<u8> {
+        self.fused_rows(src, first, rows, false)
+    }
+
+    /// `fused_band`, and with `keep` (a whole output coloured at once, unbanded) the
+    /// copied colours' distribution kept (`fusion::keep_distribution`). Bands keep
+    /// fusion's colours: a band sees only its own rows and halo, and a map made from
+    /// each band's would differ from band to band (by up to 5 levels at 192 x 200).
+    fn fused_rows(&self, src: &[Vec<u32>], first: usize, rows: usize, keep: bool) -> Vec<u8> {
         debug_assert!(self.fused);
         let (width, height) = (self.params.width, self.params.height);
         let plane = &self.mix.exs[0].levels[0];
         let (colours, skip) = if rows + 2 * fusion::HALO >= height {
-            (fusion::fuse(plane, &src[0], width, height, true), first)
+            (fusion::fuse(plane, &src[0], width, height, true, keep), first)
         } else {
             let top = first + height - fusion::HALO;
             let span = rows + 2 * fusion::HALO;
@@ -440,7 +448,7 @@ impl Job {
                     src[0][y * width..(y + 1) * width].iter().copied()
                 })
                 .collect();
-            (fusion::fuse(plane, &rows, width, span, false), fusion::HALO)
+            (fusion::fuse(plane, &rows, width, span, false, false), fusion::HALO)
         };
         let n = colours.len() / width;
         (0..rows)
@@ -485,7 +493,7 @@ impl Job {
         let (width, height) = (self.params.width, self.params.height);
         if self.fused {
             debug_assert!(first == 0 && rows == height, "a fused band is coloured by fused_band");
-            return self.fused_band(src, 0, height);
+            return self.fused_rows(src, 0, height, true);
         }
         let mut data = Vec::with_capacity(width * rows * 4);
         for r in 0..rows {
