@@ -427,7 +427,7 @@ fn a_banded_output_is_fused_across_its_band_edges_as_a_whole() {
         let src = patternsynth::raster::texture::sources(&job, &mut patternsynth::progress::Throttle::new(&mut Silent))
             .unwrap();
         let banded = job.colours(&src);
-        let whole = job.fused_band(&src, 0, 200);
+        let whole = job.fused_band(&src, 0, 200, &job.keep(&src));
         let worst = banded.data.iter().zip(&whole).map(|(a, b)| a.abs_diff(*b)).max().unwrap();
         let over = banded.data.iter().zip(&whole).filter(|(a, b)| a.abs_diff(**b) > 1).count();
         println!("tileable {tileable}: worst {worst}, {over} bytes over 1 of {}", whole.len());

@@ -19,6 +19,9 @@ struct Open {
     job: Job,
     parent: Vec<Vec<u32>>,
     start: Option<StepStart>,
+    /// A fused output's colour map (`Job::keep`), made by this worker at its first
+    /// band of the colour step.
+    keep: Option<crate::raster::synthesis::Keep>,
 }
 
 /// A step's starting maps (none at a level's first pass, which starts from the parent)
@@ -109,7 +112,7 @@ pub fn bands_open(method: &str, args: js_sys::Array) -> Result<JsValue, JsValue>
             jobs.pop_first();
         }
         *next += 1;
-        jobs.insert(*next, Open { job, parent: Vec::new(), start: None });
+        jobs.insert(*next, Open { job, parent: Vec::new(), start: None, keep: None });
         *next
     });
     let out = js_sys::Object::new();
@@ -241,6 +244,7 @@ fn colour_step(
     let job = &open.job;
     if let Some(st) = state {
         let m = maps(&st, job.exemplars(), job.level_pixels(0), "state")?;
+        open.keep = Some(job.keep(&m));
         open.start = Some(StepStart { step, maps: Some(m), uses: None });
     }
     let Some(StepStart { maps: Some(m), step: kept, .. }) = &open.start else {
@@ -249,7 +253,10 @@ fn colour_step(
     if *kept != step {
         return Err(error(&format!("Step {step}'s starting state was not given to this worker.")));
     }
-    let colours = list[from..to].iter().flat_map(|b| job.fused_band(m, b.first, b.rows)).collect();
+    let Some(keep) = &open.keep else {
+        return Err(error(&format!("Step {step}'s starting state was not given to this worker.")));
+    };
+    let colours = list[from..to].iter().flat_map(|b| job.fused_band(m, b.first, b.rows, keep)).collect();
     Ok((Ok(()), true, Vec::new(), colours))
 }
 

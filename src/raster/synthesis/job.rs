@@ -2,7 +2,7 @@
 //! and the neighbourhood shapes, which both schedules run their passes over.
 
 use super::exemplar::{Exemplar, Offsets, Plane};
-use super::fusion;
+use super::fusion::{self, Keep, Shares};
 use super::lanes::px;
 use super::mask;
 use super::mixer::{Mixer, MU_ONE};
@@ -402,8 +402,9 @@ impl Job {
             // Band by band, as the workers colour them (`fused_band`).
             Some(list) => {
                 let mut data = vec![0u8; 4 * width * height];
+                let keep = self.keep(src);
                 for band in list {
-                    let colours = self.fused_band(src, band.first, band.rows);
+                    let colours = self.fused_band(src, band.first, band.rows, &keep);
                     for (r, c) in colours.chunks_exact(4 * width).enumerate() {
                         let row = ((band.first + r) % height) * width;
                         data[4 * row..4 * (row + width)].copy_from_slice(c);
@@ -422,23 +423,63 @@ impl Job {
     }
 
     /// RGBA bytes of rows `first .. first + rows` (mod the height) of a fused output, from
-    /// the whole finest level's sources `src`: the band is fused with `fusion::HALO` rows
-    /// on each side (the whole torus when that is all of it), so that bands coloured
-    /// apart meet as the whole output fused at once would, within rounding.
-    pub fn fused_band(&self, src: &[Vec<u32>], first: usize, rows: usize) -> Vec<u8> {
-        self.fused_rows(src, first, rows, false)
+    /// the whole finest level's sources `src`, given back the copied colours'
+    /// distribution by `keep` (`Job::keep`, the same for every band).
+    pub fn fused_band(&self, src: &[Vec<u32>], first: usize, rows: usize, keep: &Keep) -> Vec<u8> {
+        let mut colours = self.fused_rows(src, first, rows);
+        colours.iter_mut().for_each(|c| keep.apply(c));
+        rgba(&colours)
     }
 
-    /// `fused_band`, and with `keep` (a whole output coloured at once, unbanded) the
-    /// copied colours' distribution kept (`fusion::keep_distribution`). Bands keep
-    /// fusion's colours: a band sees only its own rows and halo, and a map made from
-    /// each band's would differ from band to band (by up to 5 levels at 192 x 200).
-    fn fused_rows(&self, src: &[Vec<u32>], first: usize, rows: usize, keep: bool) -> Vec<u8> {
+    /// The map that gives a fused output back its copied colours' distribution
+    /// (`fusion::Keep`): counted over the whole output when it is about as small as
+    /// `KEEP_STRIPS` strips with their halos, else over those strips, spread evenly down
+    /// it. A band sees only its own rows, and a map from each band's differed from band
+    /// to band by up to 5 levels at 192 x 200; the strips are the same for every band and
+    /// worker.
+    pub fn keep(&self, src: &[Vec<u32>]) -> Keep {
+        let height = self.params.height;
+        let strip = KEEP_ROWS;
+        let mut shares = Shares::new();
+        if KEEP_STRIPS * (strip + 2 * fusion::HALO) >= height {
+            shares.add(self.copied_rows(src, 0, height), &self.fused_rows(src, 0, height));
+        } else {
+            for k in 0..KEEP_STRIPS {
+                let first = k * height / KEEP_STRIPS;
+                shares.add(self.copied_rows(src, first, strip), &self.fused_rows(src, first, strip));
+            }
+        }
+        shares.keep()
+    }
+
+    /// The copied colours of rows `first .. first + rows` (mod the height).
+    fn copied_rows<'a>(
+        &'a self,
+        src: &'a [Vec<u32>],
+        first: usize,
+        rows: usize,
+    ) -> impl Iterator<Item = [f32; 3]> + 'a {
+        let (width, height) = (self.params.width, self.params.height);
+        let plane = &self.mix.exs[0].levels[0];
+        (0..rows).flat_map(move |r| {
+            let y = (first + r) % height;
+            src[0][y * width..(y + 1) * width].iter().map(|&p| {
+                let c = plane.data[p as usize];
+                [c[0], c[1], c[2]]
+            })
+        })
+    }
+
+    /// The fused colours of rows `first .. first + rows` (mod the height), from the whole
+    /// finest level's sources `src`: the band is fused with `fusion::HALO` rows on each
+    /// side (the whole torus when that is all of it), so that bands coloured apart meet
+    /// as the whole output fused at once would, within rounding.
+    fn fused_rows(&self, src: &[Vec<u32>], first: usize, rows: usize) -> Vec<[f32; 3]> {
         debug_assert!(self.fused);
         let (width, height) = (self.params.width, self.params.height);
         let plane = &self.mix.exs[0].levels[0];
         let (colours, skip) = if rows + 2 * fusion::HALO >= height {
-            (fusion::fuse(plane, &src[0], width, height, true, keep), first)
+            (fusion::fuse(plane, &src[0], width, height, true), first)
         } else {
             let top = first + height - fusion::HALO;
             let span = rows + 2 * fusion::HALO;
@@ -448,16 +489,10 @@ impl Job {
                     src[0][y * width..(y + 1) * width].iter().copied()
                 })
                 .collect();
-            (fusion::fuse(plane, &rows, width, span, false, false), fusion::HALO)
+            (fusion::fuse(plane, &rows, width, span, false), fusion::HALO)
         };
         let n = colours.len() / width;
-        (0..rows)
-            .flat_map(|r| colours[((skip + r) % n) * width..][..width].iter())
-            .flat_map(|c| {
-                let [r, g, b] = c.map(|v| v.round().clamp(0.0, 255.0) as u8);
-                [r, g, b, 255]
-            })
-            .collect()
+        (0..rows).flat_map(|r| colours[((skip + r) % n) * width..][..width].iter().copied()).collect()
     }
 
     /// The colour and alpha of output pixel (x, y) at index `i` of the finest sources,
@@ -493,7 +528,13 @@ impl Job {
         let (width, height) = (self.params.width, self.params.height);
         if self.fused {
             debug_assert!(first == 0 && rows == height, "a fused band is coloured by fused_band");
-            return self.fused_rows(src, 0, height, true);
+            // (Coloured at once: the map counts every pixel.)
+            let mut colours = self.fused_rows(src, 0, height);
+            let mut shares = Shares::new();
+            shares.add(self.copied_rows(src, 0, height), &colours);
+            let keep = shares.keep();
+            colours.iter_mut().for_each(|c| keep.apply(c));
+            return rgba(&colours);
         }
         let mut data = Vec::with_capacity(width * rows * 4);
         for r in 0..rows {
@@ -513,4 +554,20 @@ impl Job {
         }
         data
     }
+}
+
+/// Strips of `KEEP_ROWS` rows that a banded output's `Keep` is counted over: at 1024 x
+/// 1024, a fifth of the output fused once more by each worker (with their halos).
+const KEEP_STRIPS: usize = 4;
+const KEEP_ROWS: usize = 16;
+
+/// Fused colours as opaque RGBA bytes.
+fn rgba(colours: &[[f32; 3]]) -> Vec<u8> {
+    colours
+        .iter()
+        .flat_map(|c| {
+            let [r, g, b] = c.map(|v| v.round().clamp(0.0, 255.0) as u8);
+            [r, g, b, 255]
+        })
+        .collect()
 }

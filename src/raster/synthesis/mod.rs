@@ -39,6 +39,7 @@ mod pinned;
 mod reuse;
 mod start;
 
+pub use fusion::Keep;
 pub use job::Job;
 pub(crate) use pass::{Map, Scratch};
 pub use pinned::REMATCH_ROUNDS;
