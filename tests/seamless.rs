@@ -702,7 +702,7 @@ fn a_feature_cut_off_by_the_exemplar_s_edge_is_seldom_laid_in_a_step() {
 fn fusion_keeps_the_copied_colours_distribution() {
     // A fused tile and the same tile unfused copy the same positions (the seed decides
     // them; fusion only colours): channel by channel, the fused tile's values are the
-    // copied ones, moved between pixels but not changed (`fusion::keep_distribution`).
+    // copied ones, moved between pixels but not changed (`fusion::Keep`).
     // Fused as before (each seam pulled in, extremes first), 27-39% of the ranked values
     // differed, by up to 10; plaster's tile lost contrast.
     for name in ["gravel", "tissue"] {

@@ -186,8 +186,9 @@ pub struct Keep {
 }
 
 impl Keep {
-    pub(crate) fn apply(&self, c: &mut [f32; 3]) {
-        (0..3).for_each(|k| c[k] = self.map[k][bin(c[k])]);
+    /// A fused colour, mapped.
+    pub(crate) fn applied(&self, c: [f32; 3]) -> [f32; 3] {
+        std::array::from_fn(|k| self.map[k][bin(c[k])])
     }
 }
 
@@ -204,7 +205,7 @@ impl Shares {
     }
 
     /// Counts the same pixels' copied and fused colours.
-    pub fn add(&mut self, copied: impl Iterator<Item = [f32; 3]>, fused: &[[f32; 3]]) {
+    pub fn add(&mut self, copied: impl Iterator<Item = [f32; 3]>, fused: impl Iterator<Item = [f32; 3]>) {
         for c in copied {
             (0..3).for_each(|k| self.copied[k][bin(c[k])] += 1);
         }
@@ -312,9 +313,9 @@ mod tests {
 
     fn kept(fused: &mut [[f32; 3]], copied: &[[f32; 3]]) {
         let mut shares = Shares::new();
-        shares.add(copied.iter().copied(), fused);
+        shares.add(copied.iter().copied(), fused.iter().copied());
         let keep = shares.keep();
-        fused.iter_mut().for_each(|c| keep.apply(c));
+        fused.iter_mut().for_each(|c| *c = keep.applied(*c));
     }
 
     #[test]
@@ -340,11 +341,10 @@ mod tests {
         // Counted (a banded output's strips): fused 10 and 20 were copied 12 and 24.
         // Elsewhere, 15 lies between (18), 5 and 30 beyond (shifted as 10 and 20 are).
         let mut shares = Shares::new();
-        shares.add([[12.0; 3], [24.0; 3]].into_iter(), &[[10.0; 3], [20.0; 3]]);
+        shares.add([[12.0; 3], [24.0; 3]].into_iter(), [[10.0; 3], [20.0; 3]].into_iter());
         let keep = shares.keep();
         for (fused, kept) in [(15.0, 18.0), (5.0, 7.0), (30.0, 34.0), (10.0, 12.0)] {
-            let mut c = [fused; 3];
-            keep.apply(&mut c);
+            let c = keep.applied([fused; 3]);
             assert!((c[0] - kept).abs() < 0.02, "{fused} -> {} (not {kept})", c[0]);
         }
     }

@@ -426,9 +426,8 @@ impl Job {
     /// the whole finest level's sources `src`, given back the copied colours'
     /// distribution by `keep` (`Job::keep`, the same for every band).
     pub fn fused_band(&self, src: &[Vec<u32>], first: usize, rows: usize, keep: &Keep) -> Vec<u8> {
-        let mut colours = self.fused_rows(src, first, rows);
-        colours.iter_mut().for_each(|c| keep.apply(c));
-        rgba(&colours)
+        let (span, skip) = self.fused_span(src, first, rows, fusion::HALO);
+        rgba(self.span_rows(&span, skip, rows).map(|&c| keep.applied(c)))
     }
 
     /// The map that gives a fused output back its copied colours' distribution
@@ -439,14 +438,16 @@ impl Job {
     /// worker.
     pub fn keep(&self, src: &[Vec<u32>]) -> Keep {
         let height = self.params.height;
-        let strip = KEEP_ROWS;
         let mut shares = Shares::new();
-        if KEEP_STRIPS * (strip + 2 * fusion::HALO) >= height {
-            shares.add(self.copied_rows(src, 0, height), &self.fused_rows(src, 0, height));
+        let mut count = |first: usize, rows: usize, halo: usize| {
+            let (span, skip) = self.fused_span(src, first, rows, halo);
+            shares.add(self.copied_rows(src, first, rows), self.span_rows(&span, skip, rows).copied());
+        };
+        if KEEP_STRIPS * (KEEP_ROWS + 2 * KEEP_HALO) >= height {
+            count(0, height, fusion::HALO);
         } else {
             for k in 0..KEEP_STRIPS {
-                let first = k * height / KEEP_STRIPS;
-                shares.add(self.copied_rows(src, first, strip), &self.fused_rows(src, first, strip));
+                count(k * height / KEEP_STRIPS, KEEP_ROWS, KEEP_HALO);
             }
         }
         shares.keep()
@@ -470,29 +471,34 @@ impl Job {
         })
     }
 
-    /// The fused colours of rows `first .. first + rows` (mod the height), from the whole
-    /// finest level's sources `src`: the band is fused with `fusion::HALO` rows on each
-    /// side (the whole torus when that is all of it), so that bands coloured apart meet
-    /// as the whole output fused at once would, within rounding.
-    fn fused_rows(&self, src: &[Vec<u32>], first: usize, rows: usize) -> Vec<[f32; 3]> {
+    /// Rows `first .. first + rows` (mod the height) fused from the whole finest level's
+    /// sources `src`, with `halo` rows on each side (the whole torus when that is all of
+    /// it), so that bands coloured apart meet as the whole output fused at once would,
+    /// within rounding: the span fused, and the index of the band's first row in it.
+    fn fused_span(&self, src: &[Vec<u32>], first: usize, rows: usize, halo: usize) -> (Vec<[f32; 3]>, usize) {
         debug_assert!(self.fused);
         let (width, height) = (self.params.width, self.params.height);
         let plane = &self.mix.exs[0].levels[0];
-        let (colours, skip) = if rows + 2 * fusion::HALO >= height {
-            (fusion::fuse(plane, &src[0], width, height, true), first)
-        } else {
-            let top = first + height - fusion::HALO;
-            let span = rows + 2 * fusion::HALO;
-            let rows: Vec<u32> = (0..span)
-                .flat_map(|r| {
-                    let y = (top + r) % height;
-                    src[0][y * width..(y + 1) * width].iter().copied()
-                })
-                .collect();
-            (fusion::fuse(plane, &rows, width, span, false), fusion::HALO)
-        };
-        let n = colours.len() / width;
-        (0..rows).flat_map(|r| colours[((skip + r) % n) * width..][..width].iter().copied()).collect()
+        if rows + 2 * halo >= height {
+            return (fusion::fuse(plane, &src[0], width, height, true), first);
+        }
+        let top = first + height - halo;
+        let span = rows + 2 * halo;
+        let rows: Vec<u32> = (0..span)
+            .flat_map(|r| {
+                let y = (top + r) % height;
+                src[0][y * width..(y + 1) * width].iter().copied()
+            })
+            .collect();
+        (fusion::fuse(plane, &rows, width, span, false), halo)
+    }
+
+    /// The `rows` rows of a fused span (`fused_span`) from its row `skip` on (wrapping
+    /// round a whole torus).
+    fn span_rows<'a>(&self, span: &'a [[f32; 3]], skip: usize, rows: usize) -> impl Iterator<Item = &'a [f32; 3]> + 'a {
+        let width = self.params.width;
+        let n = span.len() / width;
+        (0..rows).flat_map(move |r| span[((skip + r) % n) * width..][..width].iter())
     }
 
     /// The colour and alpha of output pixel (x, y) at index `i` of the finest sources,
@@ -529,12 +535,11 @@ impl Job {
         if self.fused {
             debug_assert!(first == 0 && rows == height, "a fused band is coloured by fused_band");
             // (Coloured at once: the map counts every pixel.)
-            let mut colours = self.fused_rows(src, 0, height);
+            let (colours, _) = self.fused_span(src, 0, height, fusion::HALO);
             let mut shares = Shares::new();
-            shares.add(self.copied_rows(src, 0, height), &colours);
+            shares.add(self.copied_rows(src, 0, height), colours.iter().copied());
             let keep = shares.keep();
-            colours.iter_mut().for_each(|c| keep.apply(c));
-            return rgba(&colours);
+            return rgba(colours.iter().map(|&c| keep.applied(c)));
         }
         let mut data = Vec::with_capacity(width * rows * 4);
         for r in 0..rows {
@@ -556,15 +561,18 @@ impl Job {
     }
 }
 
-/// Strips of `KEEP_ROWS` rows that a banded output's `Keep` is counted over: at 1024 x
-/// 1024, a fifth of the output fused once more by each worker (with their halos).
+/// Strips of `KEEP_ROWS` rows that a banded output's `Keep` is counted over, each fused
+/// with `KEEP_HALO` rows on either side (a change fades 0.44 a row, so 8 rows away it is
+/// 0.0014 of its step, far under the map's 1/64 steps): each worker fuses 128 rows once
+/// more, a quarter of its colour step's rows at 1024 x 1024 with two workers, half at
+/// 512 x 512.
 const KEEP_STRIPS: usize = 4;
 const KEEP_ROWS: usize = 16;
+const KEEP_HALO: usize = 8;
 
 /// Fused colours as opaque RGBA bytes.
-fn rgba(colours: &[[f32; 3]]) -> Vec<u8> {
+fn rgba(colours: impl Iterator<Item = [f32; 3]>) -> Vec<u8> {
     colours
-        .iter()
         .flat_map(|c| {
             let [r, g, b] = c.map(|v| v.round().clamp(0.0, 255.0) as u8);
             [r, g, b, 255]

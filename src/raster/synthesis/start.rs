@@ -301,6 +301,20 @@ fn field_quilt(ex: &Exemplar, level: usize, picture: &[Px], size: (usize, usize)
 /// 15 (sand 6.59 against 6.46); 7-pixel windows overlapping by 2 (5 apart, as now),
 /// colour on 11 (marble 0.155, mist 0.359 against the peer's 0.095, 0.347), and neither
 /// took the straight edges away.
+///
+/// Most of the straight edges that stay are where a window copies the photograph's own
+/// edge (a cloud bank its top edge cuts off, in helper-67's megaglest sky: the pixels
+/// along two of the three straight edges in a 256 x 190 tile copy its top row), which no
+/// pass can move, since nothing lies beyond it to continue. Measured and not kept (seeds
+/// 1-8 on the sixteen at 128; 1-3 on fifteen photographs of 64-1024 from helper-66's and
+/// helper-67's trials at their own size): cutting the finest level's long straight seams
+/// again within 8 pixels of where they lie (the least-difference path through the two
+/// pieces extended across it, after Kwatra et al. 2003) changed nothing, since the passes
+/// leave no long straight seam at the finest level (patch energy and the straight-edge
+/// share within 0.01); drawing no window within one pixel of the exemplar's edges cost
+/// colour at 128 (at most the peer's distance on 10 of 16, marble 0.185, mist 0.393) and
+/// was mixed at the photographs' own sizes (lower on 8 of 15, higher on 6: bark 0.044 ->
+/// 0.062).
 const TILE_QUILT: Quilt = Quilt { side: 6, candidates: 8, spread: 3.0 };
 
 /// Whether tiles quilt (always, but for a probe's `PATTERNSYNTH_TILE_QUILT=0`, which
