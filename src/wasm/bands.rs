@@ -19,17 +19,16 @@ struct Open {
     job: Job,
     parent: Vec<Vec<u32>>,
     start: Option<StepStart>,
-    /// A fused output's colour map (`Job::keep`), made by this worker at its first
-    /// band of the colour step.
-    keep: Option<crate::raster::synthesis::Keep>,
 }
 
 /// A step's starting maps (none at a level's first pass, which starts from the parent)
-/// and their use counts.
+/// and their use counts; at the colour step, the fused output's colour map made from
+/// them (`Job::keep`).
 struct StepStart {
     step: usize,
     maps: Option<Vec<Vec<u32>>>,
     uses: Option<Uses>,
+    keep: Option<crate::raster::synthesis::Keep>,
 }
 
 /// Jobs kept open at once. The client closes each job when its call ends, and runs one
@@ -112,7 +111,7 @@ pub fn bands_open(method: &str, args: js_sys::Array) -> Result<JsValue, JsValue>
             jobs.pop_first();
         }
         *next += 1;
-        jobs.insert(*next, Open { job, parent: Vec::new(), start: None, keep: None });
+        jobs.insert(*next, Open { job, parent: Vec::new(), start: None });
         *next
     });
     let out = js_sys::Object::new();
@@ -181,7 +180,7 @@ pub fn bands_run(
                 Some(m) => bands::uses(job, s, bands::Start::Maps(m), &open.parent),
                 None => bands::uses(job, s, bands::Start::Initial, &open.parent),
             };
-            open.start = Some(StepStart { step, maps: start, uses });
+            open.start = Some(StepStart { step, maps: start, uses, keep: None });
         }
         let Some(StepStart { maps, uses, .. }) = &open.start else { unreachable!("set above") };
         let start = match maps {
@@ -244,18 +243,15 @@ fn colour_step(
     let job = &open.job;
     if let Some(st) = state {
         let m = maps(&st, job.exemplars(), job.level_pixels(0), "state")?;
-        open.keep = Some(job.keep(&m));
-        open.start = Some(StepStart { step, maps: Some(m), uses: None });
+        let keep = Some(job.keep(&m));
+        open.start = Some(StepStart { step, maps: Some(m), uses: None, keep });
     }
-    let Some(StepStart { maps: Some(m), step: kept, .. }) = &open.start else {
+    let Some(StepStart { maps: Some(m), step: kept, keep: Some(keep), .. }) = &open.start else {
         return Err(error(&format!("Step {step}'s starting state was not given to this worker.")));
     };
     if *kept != step {
         return Err(error(&format!("Step {step}'s starting state was not given to this worker.")));
     }
-    let Some(keep) = &open.keep else {
-        return Err(error(&format!("Step {step}'s starting state was not given to this worker.")));
-    };
     let colours = list[from..to].iter().flat_map(|b| job.fused_band(m, b.first, b.rows, keep)).collect();
     Ok((Ok(()), true, Vec::new(), colours))
 }

@@ -536,9 +536,7 @@ impl Job {
             debug_assert!(first == 0 && rows == height, "a fused band is coloured by fused_band");
             // (Coloured at once: the map counts every pixel.)
             let (colours, _) = self.fused_span(src, 0, height, fusion::HALO);
-            let mut shares = Shares::new();
-            shares.add(self.copied_rows(src, 0, height), colours.iter().copied());
-            let keep = shares.keep();
+            let keep = Shares::of(self.copied_rows(src, 0, height), colours.iter().copied()).keep();
             return rgba(colours.iter().map(|&c| keep.applied(c)));
         }
         let mut data = Vec::with_capacity(width * rows * 4);
