@@ -2,7 +2,9 @@
 //! `synthesize_texture` from a 128 x 128 crop of a fixture photograph to SIDE x SIDE,
 //! one thread, as one JSON line per size. `cargo run --release --example speed -- 256 1024`
 //! (`RUNS=n` runs per size, 5 by default; `FIXTURE=name`, gravel by default; `TILEABLE=1`
-//! for tiles; `FUSE=0` without seam fusion, `FUSE=both` each in turn, interleaved).
+//! for tiles; `FUSE=0` without seam fusion, `FUSE=both` each in turn, interleaved; `HASH=1`
+//! adds an FNV-1a hash of the last output's bytes, to show that a faster build makes the
+//! same image).
 use patternsynth::raster::codec::decode_image;
 use patternsynth::raster::{synthesize_texture, Image, TextureOptions};
 use patternsynth::Silent;
@@ -30,19 +32,29 @@ fn main() {
             _ => vec![true],
         };
         let mut ms = vec![Vec::new(); variants.len()];
+        let mut hash = vec![0u64; variants.len()];
         for _ in 0..runs {
             for (k, &fuse_seams) in variants.iter().enumerate() {
                 let opts =
                     TextureOptions { width: out, height: out, seed: 1, tileable, fuse_seams, ..Default::default() };
                 let t = Instant::now();
-                std::hint::black_box(synthesize_texture(&ex, &opts, &mut Silent).unwrap());
+                let out = std::hint::black_box(synthesize_texture(&ex, &opts, &mut Silent).unwrap());
                 ms[k].push(t.elapsed().as_secs_f64() * 1e3);
+                hash[k] = out
+                    .data
+                    .iter()
+                    .fold(0xcbf2_9ce4_8422_2325u64, |h, &b| (h ^ u64::from(b)).wrapping_mul(0x100_0000_01b3));
             }
         }
         for (k, fuse_seams) in variants.iter().enumerate() {
             ms[k].sort_by(f64::total_cmp);
+            let hashed = if std::env::var("HASH").is_ok_and(|v| v == "1") {
+                format!(",\"hash\":\"{:016x}\"", hash[k])
+            } else {
+                String::new()
+            };
             println!(
-                "{{\"fixture\":\"{fixture}\",\"tileable\":{tileable},\"fused\":{fuse_seams},\"side\":{out},\"runs\":{runs},\"ms\":{:.1}}}",
+                "{{\"fixture\":\"{fixture}\",\"tileable\":{tileable},\"fused\":{fuse_seams},\"side\":{out},\"runs\":{runs},\"ms\":{:.1}{hashed}}}",
                 ms[k][runs / 2]
             );
         }

@@ -14,7 +14,7 @@
 //! the next, which joins the two sides in its scanline order.
 
 use super::image::Rgba;
-use super::synthesis::{Job, Map, Scratch, Uses};
+use super::synthesis::{Job, Scratch, Uses};
 use crate::error::Result;
 use crate::progress::Throttle;
 use crate::rng::Rng;
@@ -189,7 +189,8 @@ pub fn run(
             w
         })
         .collect();
-    let mut map = Map::rows(window, uses.clone(), first, rows, lw, lh);
+    let sweep = job.pass(level, parent);
+    let mut map = sweep.map(window, uses.clone(), first, rows);
     if band.rows < lh {
         // (A band balances its own rows' colours: see `Uses::balance_rows`.)
         if let Some(u) = &mut map.uses {
@@ -198,7 +199,6 @@ pub fn run(
             }
         }
     }
-    let sweep = job.pass(level, parent);
     let kind = kind(job, level, pass);
     let (shape, use_full, reverse) = match kind {
         Kind::Causal => (&job.causal, false, false),

@@ -41,7 +41,7 @@ mod start;
 
 pub use fusion::Keep;
 pub use job::Job;
-pub(crate) use pass::{Map, Scratch};
+pub(crate) use pass::Scratch;
 pub use pinned::REMATCH_ROUNDS;
 pub(crate) use pinned::{begin as begin_pinned, Finest};
 pub use reuse::Uses;
@@ -274,11 +274,13 @@ pub enum Sources<'a> {
 /// (the paper's schedule, one thread). `bands::synthesize` is the schedule that several
 /// workers can share.
 ///
-/// Memory: the output is never stored as colours. Each level keeps, per exemplar and
-/// pixel, the exemplar position it copies (4 bytes), and a pixel's colour is read through
-/// it (mixed by mu when blending). With the parent level's map and mu in 16 bits, that
-/// is at most 5 bytes per output pixel for one exemplar and 12 for two, plus the RGBA
-/// result (4) at the end, when the parent's map is gone. The job also keeps the coarsest
+/// Memory: each level keeps, per exemplar and pixel, the exemplar position it copies
+/// (4 bytes), and a pixel's colour is read through it (mixed by mu when blending). With
+/// the parent level's map and mu in 16 bits, that is at most 5 bytes per output pixel
+/// for one exemplar and 12 for two, plus the RGBA result (4) at the end, when the
+/// parent's map is gone. A map of at most 512 x 512 pixels (every level of an output in
+/// scanline order, a band's window) also keeps its pixels' colours, and its parent's,
+/// for speed: 16 bytes a pixel, at most 5 MB (`pass::CACHED`). The job also keeps the coarsest
 /// level's starting maps (`Job::starts`: 4 bytes per pixel of that level and exemplar, a
 /// quarter of a byte per output pixel with three levels, 4 with one).
 pub fn synthesize(job: &Job, progress: &mut Throttle) -> Result<Rgba> {
@@ -311,8 +313,8 @@ pub fn sources(job: &Job, progress: &mut Throttle) -> Result<Vec<Vec<u32>>> {
                 .collect()
         };
         let uses = Uses::count(job, level, |e, y, out| out.extend_from_slice(&src[e][y * lw..(y + 1) * lw]));
-        let mut map = Map::whole(src, uses, lw, lh);
         let pass = job.pass(level, &parent_src);
+        let mut map = pass.whole(src, uses);
         let mut scratch = Scratch::new(&job.full);
         // One causal pass, then the correction passes with full neighbourhoods, the first
         // in reverse scanline order: structure then also spreads up and left, from the

@@ -112,7 +112,7 @@ pub(crate) fn begin(job: &Job, progress: &mut Throttle) -> Result<Finest> {
         let src =
             if job.started(level) { job.starts()[0].clone() } else { upsampled(job, level, &parent_src[0], &mut rng) };
         let uses = Uses::count(job, level, |_, y, out| out.extend_from_slice(&src[y * lw..(y + 1) * lw]));
-        let mut map = Map::whole(vec![src], uses, lw, lh);
+        let mut map = job.pass(level, &parent_src).whole(vec![src], uses);
         let free = &free[level];
         let passes = if level == 0 { passes - 1 } else { passes };
         for p in 0..passes {

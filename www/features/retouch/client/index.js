@@ -168,7 +168,7 @@ export function mountRetouch(root, client) {
       result.keep(made);
       say('Done.');
     });
-    if (!$('ret-view').classList.contains('shown')) $('ret-info').textContent = 'No result: see the message on the left.';
+    if (!$('ret-view').classList.contains('shown')) $('ret-info').textContent = `No result: see the message under ${$('ret-run').textContent}.`;
   });
 
   // --- the result, kept across reloads (shared/results.js) ---

@@ -95,7 +95,7 @@ export function mountSeamless(root, client) {
       result.keep(made);
       say(r.warnings.length ? r.warnings.join(' ') : 'Done.', r.warnings.length ? 'warn' : '');
     });
-    if (!$('seam-repeat').classList.contains('shown')) $('seam-info').textContent = 'No tile: see the message on the left.';
+    if (!$('seam-repeat').classList.contains('shown')) $('seam-info').textContent = 'No tile: see the message under Make tile.';
   });
 
   // --- the tile, kept across reloads (shared/results.js) ---
