@@ -242,14 +242,15 @@ impl Pass<'_> {
         let (pw, ph) = self.parent_size;
         // The parent pixels the 3 x 3 points reach: 3 or 4 on a side.
         let (ox, oy) = (x % 2, y % 2);
+        let cols: [usize; 4] = std::array::from_fn(|i| wrap((x / 2 + i) as isize - 1, pw));
+        let rows: [usize; 4] = std::array::from_fn(|j| wrap((y / 2 + j) as isize - 1, ph));
         let mut window = [[0.0f32; 4]; 16];
         for j in 0..3 + oy {
             for i in 0..3 + ox {
-                let (px, py) = ((x / 2 + i) as isize - 1, (y / 2 + j) as isize - 1);
-                window[j * 4 + i] = colour(wrap(px, pw), wrap(py, ph));
+                window[j * 4 + i] = colour(cols[i], rows[j]);
             }
         }
-        for &(dx, dy) in &shape.parent {
+        f.extend(shape.parent.iter().map(|&(dx, dy)| {
             let (i, j) = ((dx + 1) as usize, (dy + 1) as usize);
             // Four reads, each pixel as many times as it counts (all four the same pixel
             // when x and y are even).
@@ -259,8 +260,8 @@ impl Pass<'_> {
             {
                 (0..4).for_each(|k| c[k] += q[k]);
             }
-            f.push(c.map(|v| v * 0.25));
-        }
+            c.map(|v| v * 0.25)
+        }));
     }
 
     /// Synthesizes output pixel (x, y) at this level: sets its source in every exemplar.

@@ -243,7 +243,7 @@ impl Uses {
         }
     }
 
-    #[inline]
+    #[inline(always)]
     pub(crate) fn factor(&self, e: usize, pos: usize) -> f32 {
         let reuse = 1.0 + self.scale[e] * (self.counts[e][pos] as f32 - self.free[e]).max(0.0);
         self.balance[e].as_ref().map_or(reuse, |b| reuse * b.factor(pos))
