@@ -83,6 +83,34 @@ impl Map {
         }
     }
 
+    /// The values of `plane` (one per map pixel: its colours, or an exemplar's sources)
+    /// at the points `own` around (x, y), `centre` being `inside`'s answer for (x, y)
+    /// and the points' half size.
+    #[inline(always)]
+    fn read<'s, T: Copy>(
+        &'s self,
+        plane: &'s [T],
+        centre: Option<isize>,
+        x: usize,
+        y: usize,
+        own: &'s [(isize, isize)],
+    ) -> impl Iterator<Item = T> + 's {
+        debug_assert_eq!(plane.len(), self.rows * self.lw);
+        own.iter().map(move |&(dx, dy)| match centre {
+            Some(_) => {
+                let i = self.around(centre, x, y, dx, dy);
+                debug_assert!(i < plane.len());
+                // SAFETY: `inside` answers only when every pixel within the half size
+                // of (x, y) lies in the map, the caller's points reach no further (a
+                // `Shape`'s own points lie within its half size, which `pixel` asked
+                // `inside` with), and `plane` holds one value per map pixel. The checks
+                // were a few percent of a synthesis in wasm, which cannot drop them.
+                unsafe { *plane.get_unchecked(i) }
+            }
+            None => plane[self.around(centre, x, y, dx, dy)],
+        })
+    }
+
     /// Index of pixel (x, y) of the torus, which must lie in the map's rows.
     #[inline(always)]
     fn at(&self, x: isize, y: isize) -> usize {
@@ -156,7 +184,7 @@ impl Pass<'_> {
         f.clear();
         let (lw, lh) = (self.lw, self.lh);
         match &map.colours {
-            Some(c) => f.extend(shape.own.iter().map(|&(dx, dy)| c[map.around(centre, x, y, dx, dy)])),
+            Some(c) => f.extend(map.read(c, centre, x, y, &shape.own)),
             None => f.extend(shape.own.iter().map(|&(dx, dy)| {
                 let at = || (wrap(x as isize + dx, lw), wrap(y as isize + dy, lh));
                 self.shown(self.level, &map.src, map.around(centre, x, y, dx, dy), at)
@@ -397,9 +425,7 @@ impl Pass<'_> {
         v.clear();
         let ex = &self.mix.exs[e];
         let img = &ex.levels[self.level];
-        for &(dx, dy) in &shape.own {
-            v.push(img.data[map.src[e][map.around(centre, x, y, dx, dy)] as usize]);
-        }
+        v.extend(map.read(&map.src[e], centre, x, y, &shape.own).map(|p| img.data[p as usize]));
         if self.with_parent {
             let (parent, pw) = (&ex.levels[self.level + 1], self.parent_size.0);
             self.parent_feature(shape, x, y, v, |nx, ny| parent.data[self.parent_src[e][ny * pw + nx] as usize]);
@@ -461,8 +487,8 @@ impl Pass<'_> {
                 None => {}
             }
         };
-        for &(dx, dy) in &shape.own {
-            let (sx, sy) = img.xy(map.src[e][map.around(centre, x, y, dx, dy)]);
+        for (&(dx, dy), p) in shape.own.iter().zip(map.read(&map.src[e], centre, x, y, &shape.own)) {
+            let (sx, sy) = img.xy(p);
             let (sx, sy) = (sx - dx, sy - dy);
             if sx >= 0 && sx < ew && sy >= 0 && sy < eh {
                 push((sy * ew + sx) as u32, cands);
