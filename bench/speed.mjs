@@ -36,27 +36,38 @@ for (const [kind, simd, opt] of variants) {
 }
 const median = (t) => [...t].sort((a, b) => a - b)[t.length >> 1];
 
-const native = Object.fromEntries(execFileSync('target/release/examples/speed', sizes.map(String), { encoding: 'utf8', env: { ...process.env, RUNS: String(runs) } })
-  .trim().split('\n').map((l) => JSON.parse(l)).map((r) => [r.side, r.ms]));
+// The native build runs in its own process once per round, between the wasm builds'
+// runs, so that each ratio to it is paired within a round (a change in the shared
+// machine's load falls on both); its own warm-up call comes first (examples/speed.rs).
+const nativeRun = (s) => JSON.parse(execFileSync('target/release/examples/speed', [String(s)], { encoding: 'utf8', env: { ...process.env, RUNS: '1' } }).trim()).ms;
 
 console.log(`| build | bytes (gzip) | ${sizes.map((s) => `${s}² ms | vs native`).join(' | ')} |`);
 console.log(`|---|---:|${sizes.map(() => '---:|---:').join('|')}|`);
 const times = engines.map(() => ({}));
+const ratios = engines.map(() => ({}));
+const native = {};
 for (const s of sizes) {
   const opts = { width: s, height: s, seed: 1 };
   engines.forEach((e) => e.glue.synthesizeTexture(exemplar, { ...opts, width: 64, height: 64 }, undefined));
   const t = engines.map(() => []);
-  // Run r of every build in turn: a change in the shared machine's load falls on all.
+  const n = [];
+  // Round r runs every build in turn, native first.
   for (let r = 0; r < runs; r++) {
+    n.push(nativeRun(s));
     engines.forEach((e, i) => {
       const start = performance.now();
       e.glue.synthesizeTexture(exemplar, opts, undefined);
       t[i].push(performance.now() - start);
     });
   }
-  engines.forEach((e, i) => { times[i][s] = median(t[i]); });
+  native[s] = median(n);
+  engines.forEach((e, i) => {
+    times[i][s] = median(t[i]);
+    ratios[i][s] = median(t[i].map((v, r) => v / n[r]));
+  });
 }
 console.log(`| native (x86-64, SSE) | — | ${sizes.map((s) => `${native[s].toFixed(0)} | 1.00`).join(' | ')} |`);
 engines.forEach((e, i) => {
-  console.log(`| ${e.name} | ${e.bytes} (${e.gzip}) | ${sizes.map((s) => `${times[i][s].toFixed(0)} | ${(times[i][s] / native[s]).toFixed(2)}`).join(' | ')} |`);
+  console.log(`| ${e.name} | ${e.bytes} (${e.gzip}) | ${sizes.map((s) => `${times[i][s].toFixed(0)} | ${ratios[i][s].toFixed(2)}`).join(' | ')} |`);
 });
+console.log('\n(vs native: the median of each round\'s ratio, native and wasm run in the same round.)');
