@@ -42,9 +42,9 @@ fn main() {
                 let opts =
                     TextureOptions { width: out, height: out, seed: 1, tileable, fuse_seams, ..Default::default() };
                 let t = Instant::now();
-                let out = std::hint::black_box(synthesize_texture(&ex, &opts, &mut Silent).unwrap());
+                let image = std::hint::black_box(synthesize_texture(&ex, &opts, &mut Silent).unwrap());
                 ms[k].push(t.elapsed().as_secs_f64() * 1e3);
-                hash[k] = out
+                hash[k] = image
                     .data
                     .iter()
                     .fold(0xcbf2_9ce4_8422_2325u64, |h, &b| (h ^ u64::from(b)).wrapping_mul(0x100_0000_01b3));

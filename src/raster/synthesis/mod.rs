@@ -280,7 +280,7 @@ pub enum Sources<'a> {
 /// for one exemplar and 12 for two, plus the RGBA result (4) at the end, when the
 /// parent's map is gone. A map of at most 512 x 512 pixels (every level of an output in
 /// scanline order, a band's window) also keeps its pixels' colours, and its parent's,
-/// for speed: 16 bytes a pixel, at most 5 MB (`pass::CACHED`). The job also keeps the coarsest
+/// for speed: 16 bytes a pixel, at most about 5.3 MiB (`pass::CACHED`). The job also keeps the coarsest
 /// level's starting maps (`Job::starts`: 4 bytes per pixel of that level and exemplar, a
 /// quarter of a byte per output pixel with three levels, 4 with one).
 pub fn synthesize(job: &Job, progress: &mut Throttle) -> Result<Rgba> {

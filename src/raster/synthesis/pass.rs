@@ -36,12 +36,16 @@ pub(crate) struct Map {
     lh: usize,
 }
 
-/// Pixels a map keeps as colours besides their sources (`Map::colours`): 16 bytes a
-/// pixel, so at most 4 MB, which every output in scanline order (under `BANDS_FROM`)
-/// and every band's window keep at the finest level; a fill of a larger photograph
-/// (`pinned`, one map of the whole level) reads through its sources. Read from the
-/// colours rather than through two lookups, a 256 x 256 synthesis took 0.95 of the
-/// time in wasm, and with the parent's colours kept too, 0.89 (SIMD, -O3).
+/// Pixels a map keeps as colours besides their sources (`Map::colours`), and parent
+/// pixels (`Map::parent`): 16 bytes a pixel, so at most 4 MiB each, about 5.3 MiB for
+/// the largest band window (34 rows of 4096 and their parent rows). Every level of an
+/// output in scanline order (under `BANDS_FROM`) and every band's window keep them; a
+/// fill (`pinned`, one map of the whole level) keeps them for its levels of at most
+/// 512 x 512 pixels (the parent's for photographs up to 1024 x 1024), whatever the
+/// hole's size: making them is a read of each pixel, about 1.5 ms at 512 x 512 natively,
+/// against passes over the hole that are then faster. Read from the colours rather than
+/// through two lookups, a 256 x 256 synthesis took 0.95 of the time in wasm, and with
+/// the parent's colours kept too, 0.89 (SIMD, -O3).
 const CACHED: usize = 512 * 512;
 
 /// Rows `first .. first + rows` (mod `height`) of a level's pixels, `width` wide.
@@ -64,46 +68,56 @@ impl Rows {
     }
 }
 
+/// A pixel whose neighbourhood of half size `half` lies in the map without wrapping:
+/// its index, so that a neighbour (x + dx, y + dy) is at `index + dy lw + dx`. Made only
+/// by `Map::inside`.
+#[derive(Clone, Copy)]
+struct Centre {
+    index: isize,
+    half: isize,
+}
+
 impl Map {
-    /// The index of (x, y) when every pixel within `half` of it lies in the map without
-    /// wrapping, so that a neighbour (x + dx, y + dy) is at that index + `dy lw + dx`.
+    /// (x, y) as a `Centre` when every pixel within `half` of it lies in the map without
+    /// wrapping.
     #[inline(always)]
-    fn inside(&self, x: usize, y: usize, half: isize) -> Option<isize> {
-        let (x, row, half) = (x as isize, y as isize - self.first as isize, half);
+    fn inside(&self, x: usize, y: usize, half: isize) -> Option<Centre> {
+        let (x, row) = (x as isize, y as isize - self.first as isize);
         let inside = x >= half && x + half < self.lw as isize && row >= half && row + half < self.rows as isize;
-        inside.then_some(row * self.lw as isize + x)
+        inside.then_some(Centre { index: row * self.lw as isize + x, half })
     }
 
     /// Index of neighbour (dx, dy) of (x, y), `centre` being `inside`'s answer for it.
     #[inline(always)]
-    fn around(&self, centre: Option<isize>, x: usize, y: usize, dx: isize, dy: isize) -> usize {
+    fn around(&self, centre: Option<Centre>, x: usize, y: usize, dx: isize, dy: isize) -> usize {
         match centre {
-            Some(c) => (c + dy * self.lw as isize + dx) as usize,
+            Some(c) => (c.index + dy * self.lw as isize + dx) as usize,
             None => self.at(x as isize + dx, y as isize + dy),
         }
     }
 
     /// The values of `plane` (one per map pixel: its colours, or an exemplar's sources)
     /// at the points `own` around (x, y), `centre` being `inside`'s answer for (x, y)
-    /// and the points' half size.
+    /// with the points' half size.
     #[inline(always)]
     fn read<'s, T: Copy>(
         &'s self,
         plane: &'s [T],
-        centre: Option<isize>,
+        centre: Option<Centre>,
         x: usize,
         y: usize,
         own: &'s [(isize, isize)],
     ) -> impl Iterator<Item = T> + 's {
-        debug_assert_eq!(plane.len(), self.rows * self.lw);
+        assert_eq!(plane.len(), self.rows * self.lw, "a plane of one value per map pixel");
         own.iter().map(move |&(dx, dy)| match centre {
-            Some(_) => {
+            Some(c) => {
+                debug_assert!(dx.abs() <= c.half && dy.abs() <= c.half);
                 let i = self.around(centre, x, y, dx, dy);
                 debug_assert!(i < plane.len());
-                // SAFETY: `inside` answers only when every pixel within the half size
-                // of (x, y) lies in the map, the caller's points reach no further (a
-                // `Shape`'s own points lie within its half size, which `pixel` asked
-                // `inside` with), and `plane` holds one value per map pixel. The checks
+                // SAFETY: a `Centre` is made only where every pixel within its half size
+                // lies in the map, the points reach no further (a `Shape`'s own points
+                // lie within its half size, which `pixel` asked `inside` with), and
+                // `plane` holds one value per map pixel (asserted above). The checks
                 // were a few percent of a synthesis in wasm, which cannot drop them.
                 unsafe { *plane.get_unchecked(i) }
             }
@@ -180,7 +194,7 @@ pub(crate) struct Pass<'a> {
 
 impl Pass<'_> {
     /// The output's feature at (x, y): own level read on the torus, parent level too.
-    fn feature(&self, map: &Map, centre: Option<isize>, x: usize, y: usize, shape: &Shape, f: &mut Vec<Px>) {
+    fn feature(&self, map: &Map, centre: Option<Centre>, x: usize, y: usize, shape: &Shape, f: &mut Vec<Px>) {
         f.clear();
         let (lw, lh) = (self.lw, self.lh);
         match &map.colours {
@@ -193,12 +207,7 @@ impl Pass<'_> {
         if self.with_parent {
             match &map.parent {
                 Some(p) => self.parent_feature(shape, x, y, f, |nx, ny| p.at(nx, ny)),
-                None => {
-                    let pw = self.parent_size.0;
-                    self.parent_feature(shape, x, y, f, |nx, ny| {
-                        self.shown(self.level + 1, self.parent_src, ny * pw + nx, || (nx, ny))
-                    })
-                }
+                None => self.parent_feature(shape, x, y, f, |nx, ny| self.parent_shown(nx, ny)),
             }
         }
     }
@@ -218,11 +227,17 @@ impl Pass<'_> {
         c
     }
 
+    /// The parent level's pixel (x, y), as `shown`.
+    #[inline(always)]
+    fn parent_shown(&self, x: usize, y: usize) -> Px {
+        self.shown(self.level + 1, self.parent_src, y * self.parent_size.0 + x, || (x, y))
+    }
+
     /// Rows `first .. first + rows` (mod this level's height) of every exemplar's
     /// sources, as one map (`Map`), with the colours it reads kept beside them.
     pub fn map(&self, src: Vec<Vec<u32>>, uses: Option<Uses>, first: usize, rows: usize) -> Map {
         let (lw, lh) = (self.lw, self.lh);
-        debug_assert!(rows <= lh && src.iter().all(|s| s.len() == rows * lw));
+        assert!(rows <= lh && src.iter().all(|s| s.len() == rows * lw), "one source per map pixel");
         let colours = (rows * lw <= CACHED).then(|| {
             (0..rows * lw).map(|i| self.shown(self.level, &src, i, || (i % lw, (first + i / lw) % lh))).collect()
         });
@@ -235,12 +250,7 @@ impl Pass<'_> {
             (wrap((first / 2) as isize - 1, ph), ph.min((first + rows - 1) / 2 - first / 2 + 5))
         };
         let parent = (self.with_parent && parent_rows * pw <= CACHED).then(|| Rows {
-            data: (0..parent_rows * pw)
-                .map(|k| {
-                    let (x, y) = (k % pw, (parent_first + k / pw) % ph);
-                    self.shown(self.level + 1, self.parent_src, y * pw + x, || (x, y))
-                })
-                .collect(),
+            data: (0..parent_rows * pw).map(|k| self.parent_shown(k % pw, (parent_first + k / pw) % ph)).collect(),
             first: parent_first,
             rows: parent_rows,
             width: pw,
@@ -311,6 +321,7 @@ impl Pass<'_> {
         // Where the neighbourhood lies inside the map, neighbours are read by index delta.
         let centre = map.inside(x, y, shape.half);
         self.feature(map, centre, x, y, shape, f);
+        let i = map.at(x as isize, y as isize);
         for (e, ex) in self.mix.exs.iter().enumerate() {
             let weight = self.mix.weight(e, level, x, y);
             let img = &ex.levels[level];
@@ -362,14 +373,12 @@ impl Pass<'_> {
                 }
                 best.1
             };
-            let i = map.at(x as isize, y as isize);
             let old = std::mem::replace(&mut map.src[e][i], best);
             if let Some(u) = &mut map.uses {
                 u.moved(e, old, best);
             }
         }
         if map.colours.is_some() {
-            let i = map.at(x as isize, y as isize);
             let c = self.shown(level, &map.src, i, || (x, y));
             if let Some(colours) = &mut map.colours {
                 colours[i] = c;
@@ -415,7 +424,7 @@ impl Pass<'_> {
     fn own_feature(
         &self,
         map: &Map,
-        centre: Option<isize>,
+        centre: Option<Centre>,
         e: usize,
         shape: &Shape,
         x: usize,
@@ -452,7 +461,7 @@ impl Pass<'_> {
     fn coherent_candidates(
         &self,
         map: &Map,
-        centre: Option<isize>,
+        centre: Option<Centre>,
         e: usize,
         shape: &Shape,
         x: usize,
