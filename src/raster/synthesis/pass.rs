@@ -378,11 +378,8 @@ impl Pass<'_> {
                 u.moved(e, old, best);
             }
         }
-        if map.colours.is_some() {
-            let c = self.shown(level, &map.src, i, || (x, y));
-            if let Some(colours) = &mut map.colours {
-                colours[i] = c;
-            }
+        if let Some(colours) = &mut map.colours {
+            colours[i] = self.shown(level, &map.src, i, || (x, y));
         }
     }
 
