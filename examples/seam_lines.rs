@@ -3,7 +3,8 @@
 //! that the boundary becomes the wrap, averaged over seeds 1-8 (`SEEDS`) and grouped by the
 //! boundary's position modulo 8 (the finest pixels of one coarsest-level pixel of a
 //! 256 synthesis tile). A wrap that scores like the lines of its own group is no seam;
-//! the group's excess is the block structure of the synthesis.
+//! the group's excess is the block structure of the synthesis. The photograph's own
+//! lines are scored alike by phase: a grid of its own shows there too.
 //! `cargo run --release --example seam_lines <exemplar|all> <etfmcm|tfmcm|synthesis> [size]`
 #[path = "support/textures.rs"]
 mod textures;
@@ -36,7 +37,21 @@ fn main() {
                 }
             }
         }
-        let g: Vec<String> = groups.iter().enumerate().map(|(r, (s, k))| format!("{r}:{:.3}", s / *k as f64)).collect();
-        println!("{name}: wrap {:.3}; inner boundaries by position mod 8: {}", wrap / seeds as f64, g.join(" "));
+        let show = |groups: &[(f64, usize); 8]| -> String {
+            let g: Vec<String> = groups.iter().enumerate().map(|(r, (s, k))| format!("{r}:{:.3}", s / *k as f64)).collect();
+            g.join(" ")
+        };
+        println!("{name}: wrap {:.3}; inner boundaries by position mod 8: {}", wrap / seeds as f64, show(&groups));
+        // The photograph's own lines scored alike, as if each were the wrap (those at
+        // least 5 from its edges, whose cut is then 5 lines away): what a faithful copy
+        // of it would read at each phase.
+        let (w, h, rgb) = (img.width, img.height, img.rgb());
+        let mut own = [(0.0, 0usize); 8];
+        for s in 6..w.min(h).saturating_sub(5) {
+            let rolled: Vec<[u8; 3]> = (0..w * h).map(|i| rgb[((i / w + s) % h) * w + (i % w + s) % w]).collect();
+            let g = &mut own[(s - 1) % 8];
+            *g = (g.0 + seam_score(&rolled, w, h), g.1 + 1);
+        }
+        println!("{name}: the photograph's own lines by position mod 8: {}", show(&own));
     }
 }

@@ -41,10 +41,11 @@ pub enum Method {
     /// the sixteen held-out photographs of `bench/heldout-data.sh` (128, seeds 1-8,
     /// `examples/tile_quality` with texture-synthesis 0.8.3 `--tiling` beside it) its
     /// tiles' patch energy is at or below the peer's on 16 (refined E-TFMCM: 15, and
-    /// within 1.1x on 16), a median 0.87 of it (0.87); colours at most the peer's
-    /// distance on 15 (15; plaster over by both); repetition within 0.05 of the
-    /// photograph's own on 16 (16); seams within 0.8-1.2 on 15 (16), brick's wrap 0.73
-    /// on the photograph's own 8-pixel grid (`examples/seam_lines`).
+    /// within 1.1x on 16), a median 0.88 of it (0.88); colours at most the peer's
+    /// distance on 16 (16); repetition within 0.05 of the photograph's own on 16 (16);
+    /// seams within 0.8-1.2 on 15 (16), brick's wrap 0.75 on the photograph's own
+    /// 8-pixel grid, whose lines at that phase read 0.72 in the photograph itself
+    /// (`examples/seam_lines`).
     Synthesis,
     /// The image kept, a band around its wrap re-made (`mend`).
     Mend,

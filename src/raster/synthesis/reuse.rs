@@ -23,15 +23,18 @@ const TILE_REUSE: f32 = 0.1;
 /// override through the environment variable `PATTERNSYNTH_REUSE` to measure other
 /// weights.
 fn reuse_weight(tileable: bool) -> f32 {
+    probed("PATTERNSYNTH_REUSE", if tileable { TILE_REUSE } else { REUSE })
+}
+
+/// `value`, or in the probes (built with `test-support`) the environment variable
+/// `name`'s, to measure other weights.
+#[cfg_attr(not(feature = "test-support"), allow(unused_variables))]
+fn probed(name: &str, value: f32) -> f32 {
     #[cfg(feature = "test-support")]
-    if let Some(w) = std::env::var("PATTERNSYNTH_REUSE").ok().and_then(|s| s.parse().ok()) {
-        return w;
+    if let Some(v) = std::env::var(name).ok().and_then(|s| s.parse().ok()) {
+        return v;
     }
-    if tileable {
-        TILE_REUSE
-    } else {
-        REUSE
-    }
+    value
 }
 
 /// Whether the colour balance applies (probes may turn it off with
@@ -113,7 +116,7 @@ const BALANCE_BINS: usize = 8;
 /// own, every seam within 0.8-1.2 (coins 1.24 / 1.07, brick 1.05 / 1.20).
 ///
 /// A floor as well, under-used colours made cheaper down to 0.95 / 0.9 / 0.8 of their
-/// distance, was measured and not kept: plaster's colour, the one over the peer's (its
+/// distance, was measured and not kept (before `FINE_BALANCE`): plaster's colour, the one over the peer's (its
 /// tiles lack the photograph's brightest and darkest specks, 0.5% against 1.6% in the
 /// top bin, a standard deviation 25.0 against 26.5), went 0.039 -> 0.032 / 0.029 /
 /// 0.029, still over the peer's 0.025, while fire's energy rose over the peer's at 0.9
@@ -121,12 +124,39 @@ const BALANCE_BINS: usize = 8;
 /// 0.928) and sand's to 0.872 at 0.8 (0.933).
 const BALANCE_CAP: f32 = 1.2;
 
+/// The balance's weight and cap at the finest level, stronger than at the coarser
+/// ones (`BALANCE`, `BALANCE_CAP`). The coarser levels lay out the tile, where a strong
+/// balance lays rare colours as shapes (the cloud crop's blobs above); the finest level
+/// copies coherent pieces of that layout, and there the balance only chooses, among
+/// candidates that fit about equally well, the pixels of under-copied colours: plaster's
+/// bright specks, the warm and cool greys either side of a bin's edge. Its cap bounds
+/// it, as `BALANCE_CAP` does.
+///
+/// Measured on synthesis tiles at 128 from the sixteen held-out photographs, seeds 1-8,
+/// against texture-synthesis 0.8.3 `--tiling` (examples/tile_quality), from the finest
+/// level at 2 / 1.2 as the coarser levels:
+/// - 10 / 2 (kept): colour distance lower on all 16 and at most the peer's on 16
+///   (plaster 0.030 -> 0.021 against 0.025; grass 0.074 -> 0.062, stones 0.040 -> 0.032,
+///   paving 0.033 -> 0.025); patch energy at or below the peer's on 16, up by at most 4%
+///   (grass 9.50 -> 9.89, plaster 10.74 -> 11.00; the peer's 10.52, 11.81); repetition
+///   within 0.05 of the photograph's own on 16; seams as before. Refined E-TFMCM's tiles
+///   alike: colour lower on 15 and the same on fire (plaster 0.024 -> 0.017), energy at
+///   or below the peer's on 15 and within 1.1x on fire (0.75 against 0.74), as before.
+/// - 6 / 2, 8 / 2.5, 10 / 3: plaster 0.025, 0.022, 0.021; 16 / 4: plaster 0.017, but
+///   fire's energy over the peer's (0.75 against 0.74).
+/// - The two finest levels at 3 / 1.3: plaster 0.029. Every level at 3 / 1.3: plaster
+///   0.025, fire's energy 0.75, and the cloud crop's rows of dark blobs (strongest row
+///   1.87 of the mean against 1.52); the finest level alone at 6 / 2 or 3 / 1.3 over the
+///   two finest keeps 1.52.
+const FINE_BALANCE: f32 = 10.0;
+const FINE_BALANCE_CAP: f32 = 2.0;
+
 /// The colour balance of a tile from one exemplar and with no guide, at every level
 /// (after the histogram matching of Kopf et al. 2007, Solid texture synthesis from 2D
 /// exemplars): each exemplar position's colour bin, how many of the pixels being made
 /// copy a position of each bin, and how many would in the exemplar's own shares. A
 /// candidate's distance is multiplied by `1 + BALANCE max(0, copies / expected - 1)` of
-/// its bin. In the banded schedule each band balances its own rows
+/// its bin, at most `BALANCE_CAP` (at the finest level `FINE_BALANCE`, `FINE_BALANCE_CAP`). In the banded schedule each band balances its own rows
 /// (`Uses::balance_rows`): every band seeing the whole level's excess would correct it
 /// once per band.
 ///
@@ -168,14 +198,15 @@ impl Balance {
         let allowed = plane.allowed_count() as f32;
         share.iter_mut().for_each(|s| *s /= allowed);
         let pixels = counts.iter().sum::<u32>() as f32;
-        #[cfg(feature = "test-support")]
-        let weight = std::env::var("PATTERNSYNTH_BALANCE").ok().and_then(|v| v.parse().ok()).unwrap_or(BALANCE);
-        #[cfg(not(feature = "test-support"))]
-        let weight = BALANCE;
-        #[cfg(feature = "test-support")]
-        let cap = std::env::var("PATTERNSYNTH_BALANCE_CAP").ok().and_then(|v| v.parse().ok()).unwrap_or(BALANCE_CAP);
-        #[cfg(not(feature = "test-support"))]
-        let cap = BALANCE_CAP;
+        // (The finest level's own weight and cap: see `FINE_BALANCE`.)
+        let (weight, cap) = if level == 0 {
+            (
+                probed("PATTERNSYNTH_FINE_BALANCE", FINE_BALANCE),
+                probed("PATTERNSYNTH_FINE_BALANCE_CAP", FINE_BALANCE_CAP),
+            )
+        } else {
+            (probed("PATTERNSYNTH_BALANCE", BALANCE), probed("PATTERNSYNTH_BALANCE_CAP", BALANCE_CAP))
+        };
         Balance { weight: weight.max(0.0), bin, share, pixels, copies, cap: cap.max(1.0) }
     }
 
