@@ -38,7 +38,8 @@ fn main() {
             }
         }
         let show = |groups: &[(f64, usize); 8]| -> String {
-            let g: Vec<String> = groups.iter().enumerate().map(|(r, (s, k))| format!("{r}:{:.3}", s / *k as f64)).collect();
+            let g: Vec<String> =
+                groups.iter().enumerate().map(|(r, (s, k))| format!("{r}:{:.3}", s / *k as f64)).collect();
             g.join(" ")
         };
         println!("{name}: wrap {:.3}; inner boundaries by position mod 8: {}", wrap / seeds as f64, show(&groups));
