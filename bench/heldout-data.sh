@@ -11,7 +11,8 @@
 #    central 85%, scales it (separable tent filter, antialiased when shrinking) so the longer side
 #    is 224 px, and writes /tmp/peer30/data/NAME.png; the central square of the same crop scaled
 #    to 128x128 goes to /tmp/peer25/data/NAME.png. The soft stochastic exemplars of SOFT
-#    (clouds, mist, wisps, fire-smoke) get only that square, in /tmp/peer25/soft/NAME.png.
+#    (clouds, mist, wisps, fire-smoke) get only that square, in /tmp/peer25/soft/NAME.png, and
+#    the fresh ones of FRESH (helper-73's trial of issue 25) in /tmp/peer25/fresh/NAME.png.
 # 3. Writes /tmp/peer30/data/NAME.hole.png, the same size: opaque white in the hole, opaque black
 #    elsewhere. The hole is the union of 3-4 overlapping ellipses drawn from a PRNG seeded by the
 #    name (FNV-1a -> mulberry32), scaled to cover 8.5-10.5% (checked: 8-11%) of the pixels and
@@ -76,6 +77,32 @@ SOFT=(
   "fire     $COLOBOT/cloud05.png"
 )
 
+# Nineteen more, picked by helper-73 (issue 25's trial, 2026-12-03) from the same packages
+# and never tuned on: ten game textures that already tile and nine photographs that do
+# not. Like SOFT, only the 128x128 central square, to $OUT25F.
+OUT25F=/tmp/peer25/fresh
+FRESH=(
+  "earth     $STK/cracked-earth-texture.jpg"
+  "rust      $STK/stkt_rustedMetal_a.png"
+  "rock      $STK/hd_rock_01_d.png"
+  "stonewall $STK/HortonRockWall.jpg"
+  "concrete  $STK/concrete2.png"
+  "sky       $STK/sky.jpg"
+  "paper     $STK/stk_generic_cardboard_a.png"
+  "moss      $STK/grass_dark.jpg"
+  "carpet    $STK/stktex_pupleCarpet_a.png"
+  "sea       $STK/sea.jpg"
+  "boards    $STK/city_concrete.png"
+  "plates    $STK/metal_plates.png"
+  "dirt      $ETR/dirt01.png"
+  "snow      $ETR/snow01.png"
+  "ice       $ETR/ice01.png"
+  "tiles     $SH3D/stoneTiles.jpg"
+  "drystone  $SH3D/stone2Wall.jpg"
+  "overcast  $SH3D/veryCloudy.jpg"
+  "water     $COLOBOT/water12.png"
+)
+
 [ -f "$PKG_NODE" ] || { echo "missing $PKG_NODE: build the package first" >&2; exit 1; }
 command -v node >/dev/null || { echo "node not found" >&2; exit 1; }
 
@@ -113,13 +140,13 @@ if [ ! -f "$JAR/.extracted" ]; then
 fi
 
 # ---------------------------------------------------------------- convert, masks
-mkdir -p "$OUT30" "$OUT25" "$OUT25S"
-{ printf '%s\n' "${PICKS[@]}"; printf '%s soft\n' "${SOFT[@]}"; } |
-  PKG_NODE=$PKG_NODE OUT30=$OUT30 OUT25=$OUT25 OUT25S=$OUT25S node --input-type=module -e '
+mkdir -p "$OUT30" "$OUT25" "$OUT25S" "$OUT25F"
+{ printf '%s\n' "${PICKS[@]}"; printf '%s soft\n' "${SOFT[@]}"; printf '%s fresh\n' "${FRESH[@]}"; } |
+  PKG_NODE=$PKG_NODE OUT30=$OUT30 OUT25=$OUT25 OUT25S=$OUT25S OUT25F=$OUT25F node --input-type=module -e '
 import { readFileSync, writeFileSync } from "node:fs";
 import { createHash } from "node:crypto";
 const ps = await import(process.env.PKG_NODE);
-const { OUT30, OUT25, OUT25S } = process.env;
+const { OUT30, OUT25, OUT25S, OUT25F } = process.env;
 const LONG = 224, TILE = 128, MARGIN = 12;
 
 // Separable resampling with a tent filter, widened by the shrink factor (antialiased).
@@ -203,8 +230,8 @@ for (const line of lines) {
   const tile = cropScale(img, x0 + ((cw - s) >> 1), y0 + ((chh - s) >> 1), s, s, TILE, TILE);
   if (soft) {
     const tilePng = ps.encodePng(tile);
-    writeFileSync(`${OUT25S}/${name}.png`, tilePng);
-    console.log(`${name.padEnd(8)} ${path.replace(/^.*\/(games|data)\//, "").padEnd(49)} ${(img.width + "x" + img.height).padEnd(10)} soft: 128x128 only ${sha(tilePng)}`);
+    writeFileSync(`${soft === "fresh" ? OUT25F : OUT25S}/${name}.png`, tilePng);
+    console.log(`${name.padEnd(8)} ${path.replace(/^.*\/(games|data|resources)\//, "").padEnd(49)} ${(img.width + "x" + img.height).padEnd(10)} ${soft}: 128x128 only ${sha(tilePng)}`);
     continue;
   }
   const { m, share, n, margin } = hole(name, dw, dh);
@@ -217,6 +244,7 @@ for (const line of lines) {
   const short = path.replace(/^\/tmp\/heldout\/(pkgs\/|jar\/)/, "").replace(/usr\/share\/games\/[^/]+\/(data\/)?|com\/eteks\/sweethome3d\/io\/resources\//, "").replace(/^textures\//, "sweethome3d.jar:textures/");
   console.log(`${name.padEnd(8)} ${short.padEnd(49)} ${(img.width + "x" + img.height).padEnd(10)} ${(dw + "x" + dh).padEnd(8)} ${(100 * share).toFixed(1).padStart(4)}% ${String(n).padStart(5)} ${String(margin).padStart(8)}   ${sha(png)}/${sha(holePng)}`);
 }
-const soft = lines.filter((l) => l.trim().endsWith(" soft")).length, n = lines.length - soft;
-console.log(`wrote ${n} x (NAME.png, NAME.hole.png) to ${OUT30}, ${n} x NAME.png (128x128) to ${OUT25}, ${soft} soft ones to ${OUT25S}`);
+const soft = lines.filter((l) => l.trim().endsWith(" soft")).length, fresh = lines.filter((l) => l.trim().endsWith(" fresh")).length;
+const n = lines.length - soft - fresh;
+console.log(`wrote ${n} x (NAME.png, NAME.hole.png) to ${OUT30}, ${n} x NAME.png (128x128) to ${OUT25}, ${soft} soft ones to ${OUT25S}, ${fresh} fresh ones to ${OUT25F}`);
 '
