@@ -116,8 +116,8 @@ const BALANCE_BINS: usize = 8;
 /// own, every seam within 0.8-1.2 (coins 1.24 / 1.07, brick 1.05 / 1.20).
 ///
 /// A floor as well, under-used colours made cheaper down to 0.95 / 0.9 / 0.8 of their
-/// distance, was measured and not kept (before `FINE_BALANCE`): plaster's colour, the one over the peer's (its
-/// tiles lack the photograph's brightest and darkest specks, 0.5% against 1.6% in the
+/// distance, was measured and not kept (before `FINE_BALANCE`): plaster's colour, the
+/// one over the peer's (its tiles lack the photograph's brightest and darkest specks, 0.5% against 1.6% in the
 /// top bin, a standard deviation 25.0 against 26.5), went 0.039 -> 0.032 / 0.029 /
 /// 0.029, still over the peer's 0.025, while fire's energy rose over the peer's at 0.9
 /// and 0.8 (0.76, 0.77 against 0.74), grass's repetition fell to 0.875 at 0.95 (its own
@@ -156,7 +156,8 @@ const FINE_BALANCE_CAP: f32 = 2.0;
 /// exemplars): each exemplar position's colour bin, how many of the pixels being made
 /// copy a position of each bin, and how many would in the exemplar's own shares. A
 /// candidate's distance is multiplied by `1 + BALANCE max(0, copies / expected - 1)` of
-/// its bin, at most `BALANCE_CAP` (at the finest level `FINE_BALANCE`, `FINE_BALANCE_CAP`). In the banded schedule each band balances its own rows
+/// its bin, at most `BALANCE_CAP` (at the finest level `FINE_BALANCE`,
+/// `FINE_BALANCE_CAP`). In the banded schedule each band balances its own rows
 /// (`Uses::balance_rows`): every band seeing the whole level's excess would correct it
 /// once per band.
 ///
