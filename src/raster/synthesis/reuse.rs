@@ -116,12 +116,12 @@ const BALANCE_BINS: usize = 8;
 /// own, every seam within 0.8-1.2 (coins 1.24 / 1.07, brick 1.05 / 1.20).
 ///
 /// A floor as well, under-used colours made cheaper down to 0.95 / 0.9 / 0.8 of their
-/// distance, was measured and not kept (before `FINE_BALANCE`): plaster's colour, the
-/// one over the peer's (its tiles lack the photograph's brightest and darkest specks,
-/// 0.5% against 1.6% in the top bin, a standard deviation 25.0 against 26.5), went
-/// 0.039 -> 0.032 / 0.029 / 0.029, still over the peer's 0.025, while fire's energy rose over the peer's at 0.9
-/// and 0.8 (0.76, 0.77 against 0.74), grass's repetition fell to 0.875 at 0.95 (its own
-/// 0.928) and sand's to 0.872 at 0.8 (0.933).
+/// distance, was measured and not kept (before `FINE_BALANCE`): plaster's colour, the one
+/// over the peer's (its tiles lack the photograph's brightest and darkest specks, 0.5%
+/// against 1.6% in the top bin, a standard deviation 25.0 against 26.5), went 0.039 ->
+/// 0.032 / 0.029 / 0.029, still over the peer's 0.025, while fire's energy rose over the
+/// peer's at 0.9 and 0.8 (0.76, 0.77 against 0.74), grass's repetition fell to 0.875 at
+/// 0.95 (its own 0.928) and sand's to 0.872 at 0.8 (0.933).
 const BALANCE_CAP: f32 = 1.2;
 
 /// The balance's weight and cap at the finest level, stronger than at the coarser
