@@ -23,13 +23,13 @@ const TILE_REUSE: f32 = 0.1;
 /// override through the environment variable `PATTERNSYNTH_REUSE` to measure other
 /// weights.
 fn reuse_weight(tileable: bool) -> f32 {
-    probed("PATTERNSYNTH_REUSE", if tileable { TILE_REUSE } else { REUSE })
+    tuned("PATTERNSYNTH_REUSE", if tileable { TILE_REUSE } else { REUSE })
 }
 
 /// `value`, or in the probes (built with `test-support`) the environment variable
 /// `name`'s, to measure other weights.
 #[cfg_attr(not(feature = "test-support"), allow(unused_variables))]
-fn probed(name: &str, value: f32) -> f32 {
+fn tuned(name: &str, value: f32) -> f32 {
     #[cfg(feature = "test-support")]
     if let Some(v) = std::env::var(name).ok().and_then(|s| s.parse().ok()) {
         return v;
@@ -201,12 +201,9 @@ impl Balance {
         let pixels = counts.iter().sum::<u32>() as f32;
         // (The finest level's own weight and cap: see `FINE_BALANCE`.)
         let (weight, cap) = if level == 0 {
-            (
-                probed("PATTERNSYNTH_FINE_BALANCE", FINE_BALANCE),
-                probed("PATTERNSYNTH_FINE_BALANCE_CAP", FINE_BALANCE_CAP),
-            )
+            (tuned("PATTERNSYNTH_FINE_BALANCE", FINE_BALANCE), tuned("PATTERNSYNTH_FINE_BALANCE_CAP", FINE_BALANCE_CAP))
         } else {
-            (probed("PATTERNSYNTH_BALANCE", BALANCE), probed("PATTERNSYNTH_BALANCE_CAP", BALANCE_CAP))
+            (tuned("PATTERNSYNTH_BALANCE", BALANCE), tuned("PATTERNSYNTH_BALANCE_CAP", BALANCE_CAP))
         };
         Balance { weight: weight.max(0.0), bin, share, pixels, copies, cap: cap.max(1.0) }
     }
